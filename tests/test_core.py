@@ -1,0 +1,132 @@
+"""Motion core: quaternions, forward kinematics (numpy vs torch), joint maps, datasets."""
+
+import numpy as np
+import pandas as pd
+import pytest
+import torch
+from scipy.spatial.transform import Rotation
+
+from motionvar.core import Motion, cmu_joint_map, cmu_skeleton, fk, fk_torch
+from motionvar.core import quaternions as Q
+from motionvar.io import DatasetError, load_dataset, save_dataset
+
+
+def random_quats(rng, shape):
+    return Q.qnormalize(rng.normal(size=(*shape, 4)))
+
+
+def test_qmul_and_qrot_match_scipy():
+    rng = np.random.default_rng(0)
+    a, b = random_quats(rng, (50,)), random_quats(rng, (50,))
+    ref = (Q.quat_to_scipy(a) * Q.quat_to_scipy(b)).as_quat(scalar_first=True)
+    got = Q.qmul(a, b)
+    assert np.allclose(np.abs(np.sum(ref * got, -1)), 1.0, atol=1e-12)
+    v = rng.normal(size=(50, 3))
+    assert np.allclose(Q.qrot(a, v), Q.quat_to_scipy(a).apply(v), atol=1e-12)
+
+
+def test_log_exp_round_trip():
+    rng = np.random.default_rng(1)
+    q = random_quats(rng, (200,))
+    q[0] = [1, 0, 0, 0]
+    back = Q.qexp(Q.qlog(q))
+    assert np.allclose(np.abs(np.sum(back * q, -1)), 1.0, atol=1e-12)
+    r = rng.normal(size=(200, 3))
+    r *= rng.uniform(0, np.pi / 2 - 1e-3, size=(200, 1)) / np.linalg.norm(r, axis=-1, keepdims=True)
+    assert np.allclose(Q.qlog(Q.qexp(r)), r, atol=1e-12)
+    rv = Rotation.from_quat(q, scalar_first=True).as_rotvec()
+    assert np.allclose(Q.quat_to_rotvec(q), rv, atol=1e-10)
+
+
+def test_slerp_endpoints_and_midpoint():
+    a = Q.quat_about_axis([0, 1, 0], 0.0)
+    b = Q.quat_about_axis([0, 1, 0], 1.0)
+    assert np.allclose(Q.qslerp(a, b, 0.0), a)
+    assert np.allclose(Q.qslerp(a, b, 1.0), b)
+    assert np.allclose(Q.qslerp(a, b, 0.5), Q.quat_about_axis([0, 1, 0], 0.5))
+
+
+def test_sinusoidal_distance():
+    a = Q.quat_about_axis([1, 0, 0], 0.0)
+    b = Q.quat_about_axis([1, 0, 0], 0.6)
+    # ||log(q1^-1 q2)|| is half the angle: sin(0.3)
+    assert np.isclose(Q.qdistance_sinusoidal(a, b), np.sin(0.3))
+    assert np.isclose(Q.qdistance_sinusoidal(a, -b), np.sin(0.3))
+    assert np.isclose(Q.qdistance_sinusoidal(b, b), 0.0)
+
+
+def test_qfix_removes_sign_flips():
+    rng = np.random.default_rng(2)
+    q = Q.quat_about_axis([0, 0, 1], np.linspace(0, 3, 40))
+    flipped = q * rng.choice([-1.0, 1.0], size=(40, 1))
+    fixed = Q.qfix(flipped)
+    assert np.all(np.sum(fixed[1:] * fixed[:-1], -1) > 0)
+
+
+def test_fk_numpy_matches_torch_to_1e5_cm():
+    rng = np.random.default_rng(3)
+    sk = cmu_skeleton()
+    rot = random_quats(rng, (4, 30, sk.n_joints))
+    root = rng.normal(scale=50, size=(4, 30, 3))
+    ref = fk(rot, root, sk.offsets, sk.parents)
+    got = fk_torch(torch.tensor(rot), torch.tensor(root), sk.offsets, sk.parents).numpy()
+    assert np.max(np.abs(ref - got)) < 1e-5
+
+
+def test_fk_torch_is_differentiable():
+    sk = cmu_skeleton()
+    rot = torch.tensor(Q.qidentity((2, sk.n_joints)), requires_grad=True)
+    pos = fk_torch(rot, torch.zeros(2, 3, dtype=torch.float64), sk.offsets, sk.parents)
+    pos[..., sk.index("LeftHand"), 1].sum().backward()
+    assert torch.isfinite(rot.grad).all() and rot.grad.abs().sum() > 0
+
+
+def test_fk_rest_pose_stands_upright():
+    sk = cmu_skeleton()
+    pos = fk(Q.qidentity((1, sk.n_joints)), np.zeros((1, 3)), sk.offsets, sk.parents)[0]
+    jm = cmu_joint_map()
+    head, toe = pos[jm.index(sk, "head"), 1], pos[jm.index(sk, "left_toe"), 1]
+    assert 120 < head - toe < 160  # toe to the base of the skull of an adult, in cm
+
+
+def test_joint_map_groups_partition_the_skeleton():
+    sk = cmu_skeleton()
+    jm = cmu_joint_map()
+    jm.validate(sk)
+    groups = jm.group_indices(sk)
+    allj = np.sort(np.concatenate(list(groups.values())))
+    assert np.array_equal(allj, np.arange(sk.n_joints))
+
+
+def test_joint_map_names_missing_joints():
+    from motionvar.core import JointMap
+
+    jm = JointMap(joints={"hips": "Pelvis"})
+    with pytest.raises(ValueError, match="missing semantic joints.*joints not in the skeleton"):
+        jm.validate(cmu_skeleton(), source="config key datasets.x.joint_map")
+
+
+def _motion(rng, T=12, scale=1.0):
+    sk = cmu_skeleton().scaled(scale)
+    return Motion(sk, rng.normal(size=(T, 3)), random_quats(rng, (T, sk.n_joints)), 120.0)
+
+
+def test_dataset_round_trip(tmp_path):
+    rng = np.random.default_rng(4)
+    ms = [_motion(rng, 10, 1.0), _motion(rng, 7, 1.1)]
+    meta = pd.DataFrame({"clip_id": ["a", "b"], "subject": ["01", "02"]})
+    save_dataset(tmp_path, ms, meta)
+    ds = load_dataset(tmp_path)
+    assert len(ds) == 2 and list(ds.metadata["n_frames"]) == [10, 7]
+    b = ds.by_id("b")
+    assert np.allclose(b.positions(), ms[1].positions(), atol=1e-4)
+    assert ds.metadata["subject"].iloc[0] == "01"
+
+
+def test_dataset_rejects_bad_input_and_leaves_nothing(tmp_path):
+    rng = np.random.default_rng(5)
+    with pytest.raises(DatasetError, match="unique clip_id"):
+        save_dataset(tmp_path, [_motion(rng), _motion(rng)], pd.DataFrame({"clip_id": ["a", "a"]}))
+    assert list(tmp_path.iterdir()) == []
+    with pytest.raises(DatasetError, match="missing"):
+        load_dataset(tmp_path)
