@@ -137,10 +137,21 @@ class Skeleton:
         return self.names == other.names and np.array_equal(self.parents, other.parents)
 
 
-def cmu_skeleton() -> Skeleton:
-    """The CMU 31-joint skeleton (subject 02 proportions) in cm, channel order ZYX."""
+def cmu_skeleton(straight_legs: bool = True) -> Skeleton:
+    """The CMU 31-joint skeleton (subject 02 proportions) in cm, channel order ZYX.
+
+    The body faces +z, its left side is +x, y is up. The cgspeed conversion's rest pose
+    splays thigh and shin 20 degrees outwards; with ``straight_legs`` (the default, used
+    by the synthetic generator) those two bones point straight down with the same
+    lengths, so that zero rotations are an anatomically neutral standing pose.
+    ``straight_legs=False`` gives the offsets exactly as in the CMU BVH files.
+    """
     names = tuple(j[0] for j in _CMU_JOINTS)
     parents = np.array([-1 if p is None else names.index(p) for _, p, _ in _CMU_JOINTS])
     offsets = np.array([o for _, _, o in _CMU_JOINTS]) * CMU_UNIT_CM
+    if straight_legs:
+        for name in ("LeftLeg", "LeftFoot", "RightLeg", "RightFoot"):
+            j = names.index(name)
+            offsets[j] = [0.0, -np.linalg.norm(offsets[j]), 0.0]
     end_sites = {names.index(k): np.array(v) * CMU_UNIT_CM for k, v in _CMU_END_SITES.items()}
     return Skeleton(names=names, parents=parents, offsets=offsets, end_sites=end_sites)
