@@ -1,0 +1,282 @@
+"""Idle standing: balance shifts between resting postures plus small posture variations
+(Egges et al. 2004, Sec. 5 and 6), with the feet planted.
+
+Structure (Egges 2004 Sec. 5.1, 5.4): the body rests in one of three categories —
+weight on the left foot, on the right foot, or on both — for a dwell time, then shifts its
+balance to another category in a transition of about 0.5–1.5 s. The next category is drawn
+with probabilities proportional to the subject's ``idle_foot_preference`` (the category
+transition graph of Sec. 5.3, Fig. 3); each rest is a slightly different posture of its
+category (the posture sets Q_c). On top run continuous small variations (Sec. 6): postural
+sway, breathing, small head and arm movements.
+
+Biomechanics (GAIT.md, "Quiet standing"; sources in each constant's comment):
+- Loaded leg straight (knee ``lock_knee_deg`` of 1–5°), the root height follows from it;
+  the pelvis drops towards the unloaded side by ``pelvis_drop_deg`` (2–5°, "a few
+  degrees"), which bends the unloaded knee; the trunk bends back over the pelvis so the
+  head stays above it.
+- The centre of mass moves over the loaded foot by ``com_shift_frac`` (35–75 %) of half
+  the stance width (Duarte & Zatsiorsky 1999: prolonged standing is a sequence of such
+  shifts of the centre of pressure between the feet).
+- Postural sway: centre-of-mass displacement with RMS ``subject.sway_cm`` (resultant of
+  antero-posterior and medio-lateral; 0.3–1 cm, Winter 2009), low-pass noise with a corner
+  of 0.15–0.5 Hz, so its power lies below 1 Hz; applied as an inverted pendulum about the
+  ankles (the body tilts by displacement / root height).
+- Breathing at ``subject.breath_rate_hz`` (12–20 /min), shoulders rising by 0.3–0.9 cm
+  and the chest extending by about a degree per breath.
+- Stance: heels about 17 cm apart and feet turned out by about 7° each in self-selected
+  quiet stance (McIlroy & Maki 1997); here ankle spacing 15–28 cm, toe-out 3–12° per foot.
+
+Personal traits beyond :class:`Subject` (:class:`IdleStyle`) come from
+:func:`~motionvar.synth.signals.subject_rng`: they persist across the subject's clips, so
+that subjects can be told apart (Egges 2004 Sec. 5.6, 8). Within a subject, clips differ by
+the random sequence of rests, small per-rest posture changes and ±1 cm / ±1.5° of stance.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..core.kinematics import fk
+from ..core.motion import Motion
+from ..core.quaternions import qmul, qrot
+from .intervals import format_intervals, format_ranges
+from .signals import colored_noise, minimum_jerk, subject_rng
+from .stance import (
+    Rig, SIDES, elbow_pole, euler_q, hanging_hand_offsets, heading_quat, identity_rotations,
+    plant_feet, root_height, solve_arm, solve_legs, to_world,
+)
+from .subjects import Subject
+
+CATEGORIES = ("left", "right", "both")
+_WEIGHT = {"left": 1.0, "right": -1.0, "both": 0.0}  # COM shift towards the left foot, in units
+
+
+@dataclass(frozen=True)
+class IdleParams:
+    """Per-clip settings of :func:`generate_idle`.
+
+    Attributes:
+        duration_s: clip length in seconds (the clip has round(duration * fps) + 1 frames).
+        fps: frames per second.
+        start_xz: floor position (x, z) of the body-frame origin (between the ankles);
+            None draws it uniformly in ±300 cm.
+        heading_deg: facing direction, degrees about +y from +z; None draws it in ±180.
+        start_category: resting category at frame 0 (left | right | both); None draws it
+            from the subject's ``idle_foot_preference``.
+    """
+
+    duration_s: float = 60.0
+    fps: float = 120.0
+    start_xz: tuple[float, float] | None = None
+    heading_deg: float | None = None
+    start_category: str | None = None
+
+    def validate(self) -> None:
+        if not (np.isfinite(self.duration_s) and 0.5 <= self.duration_s <= 3600.0):
+            raise ValueError(f"IdleParams.duration_s must be in [0.5, 3600] s; got {self.duration_s}")
+        if not (np.isfinite(self.fps) and 10.0 <= self.fps <= 1000.0):
+            raise ValueError(f"IdleParams.fps must be in [10, 1000]; got {self.fps}")
+        if self.start_xz is not None and (len(self.start_xz) != 2 or not np.all(np.isfinite(self.start_xz))):
+            raise ValueError(f"IdleParams.start_xz must be two finite numbers; got {self.start_xz}")
+        if self.heading_deg is not None and not np.isfinite(self.heading_deg):
+            raise ValueError(f"IdleParams.heading_deg must be finite; got {self.heading_deg}")
+        if self.start_category is not None and self.start_category not in CATEGORIES:
+            raise ValueError(f"IdleParams.start_category must be one of {CATEGORIES}; got {self.start_category!r}")
+
+
+@dataclass(frozen=True)
+class IdleStyle:
+    """A subject's personal way of standing (ranges and sources in the module docstring)."""
+
+    stance_width_cm: float  # ankle spacing
+    toe_out_deg: float  # per foot
+    com_shift_frac: float  # COM shift over the loaded foot, fraction of half the stance width
+    pelvis_drop_deg: float  # pelvic obliquity towards the unloaded side
+    lock_knee_deg: float  # flexion of the straight (loaded) knee
+    pelvis_yaw_deg: float  # pelvis turns this much towards the loaded side (sign personal)
+    trunk_compensation: float  # fraction of the pelvic obliquity the trunk bends back
+    com_ahead_cm: float  # root ahead of the ankle line (COM ahead of the ankles, Winter 2009)
+    transition_s: float  # mean duration of a balance shift
+    sway_corner_hz: float
+    sway_ml_ratio: float  # medio-lateral / antero-posterior sway RMS
+    head_rms_deg: float
+    arm_rms_deg: float  # small arm movements: RMS of elbow and shoulder angle noise
+    breath_rise_cm: float
+    arm_abduction_deg: float
+
+
+def idle_style(subject: Subject) -> IdleStyle:
+    """The subject's :class:`IdleStyle`: same subject, same style."""
+    r = subject_rng(subject, "idle")
+    h = subject.height_scale
+    return IdleStyle(
+        stance_width_cm=float(r.uniform(15.0, 28.0) * h),
+        toe_out_deg=float(r.uniform(3.0, 12.0)),
+        com_shift_frac=float(r.uniform(0.35, 0.75)),
+        pelvis_drop_deg=float(r.uniform(2.0, 5.0)),
+        lock_knee_deg=float(r.uniform(1.0, 5.0)),
+        pelvis_yaw_deg=float(r.choice([-1.0, 1.0]) * r.uniform(1.0, 5.0)),
+        trunk_compensation=float(r.uniform(0.5, 1.0)),
+        com_ahead_cm=float(r.uniform(2.0, 5.0) * h),
+        transition_s=float(r.uniform(0.6, 1.3)),
+        sway_corner_hz=float(r.uniform(0.15, 0.5)),
+        sway_ml_ratio=float(r.uniform(0.5, 0.9)),
+        head_rms_deg=float(r.uniform(1.0, 4.0)),
+        arm_rms_deg=float(r.uniform(0.5, 2.5)),
+        breath_rise_cm=float(r.uniform(0.3, 0.9)),
+        arm_abduction_deg=float(r.uniform(4.0, 12.0)),
+    )
+
+
+@dataclass(frozen=True)
+class _Rest:
+    category: str
+    start: float  # seconds
+    stop: float  # end of the rest = start of the following shift
+    shift_stop: float  # end of the following shift (= stop for the last rest)
+    values: np.ndarray  # posture parameters of this rest, see _rest_values
+
+
+def _rest_values(category: str, rng: np.random.Generator) -> np.ndarray:
+    """One posture of a category (Egges' Q_c): weight, pelvis yaw offset (deg), elbow
+    offset (deg), head pitch offset (deg), head yaw offset (deg)."""
+    w = _WEIGHT[category] * rng.uniform(0.85, 1.1) if category != "both" else rng.normal(0.0, 0.08)
+    return np.array([w, rng.normal(0.0, 1.5), rng.normal(0.0, 4.0), rng.normal(0.0, 2.0), rng.normal(0.0, 4.0)])
+
+
+def _timeline(subject: Subject, style: IdleStyle, duration: float, first: str, rng: np.random.Generator) -> list[_Rest]:
+    """Rests and shifts until ``duration``: dwell ~ Gamma(shape 4, mean weight_shift_s),
+    at least 1 s (the first one starts at a random point of its dwell); shifts last
+    transition_s × U(0.8, 1.25), kept in [0.5, 1.5] s."""
+    pref = np.asarray(subject.idle_foot_preference, dtype=float)
+    rests, t, cat, first_rest = [], 0.0, first, True
+    while t < duration:
+        dwell = max(rng.gamma(4.0, subject.weight_shift_s / 4.0), 1.0)
+        if first_rest:
+            dwell *= rng.uniform(0.3, 1.0)
+            first_rest = False
+        shift = float(np.clip(style.transition_s * rng.uniform(0.8, 1.25), 0.5, 1.5))
+        rests.append(_Rest(cat, t, t + dwell, t + dwell + shift, _rest_values(cat, rng)))
+        t += dwell + shift
+        others = [c for c in CATEGORIES if c != cat]
+        p = np.array([pref[CATEGORIES.index(c)] for c in others])
+        cat = others[rng.choice(2, p=p / p.sum())]
+    return rests
+
+
+def _posture_tracks(rests: list[_Rest], t: np.ndarray) -> np.ndarray:
+    """(T, P) posture parameters over time: constant in each rest, minimum-jerk shifts."""
+    out = np.broadcast_to(rests[0].values, (t.size, rests[0].values.size)).copy()
+    for a, b in zip(rests[:-1], rests[1:]):
+        s = minimum_jerk((t - a.stop) / (a.shift_stop - a.stop))
+        out += s[:, None] * (b.values - a.values)
+    return out
+
+
+def _truth_intervals(rests: list[_Rest], fps: float, n: int) -> tuple[str, str]:
+    """(idle_postures, segments): categories split at the middle of each shift; segments
+    name each rest ``rest`` and each transition ``shift``."""
+    frame = lambda s: int(np.clip(round(s * fps), 0, n))  # noqa: E731
+    postures, segments = [], []
+    for i, r in enumerate(rests):
+        a = 0 if i == 0 else frame(0.5 * (rests[i - 1].stop + rests[i - 1].shift_stop))
+        b = frame(0.5 * (r.stop + r.shift_stop)) if i + 1 < len(rests) else n
+        if b > a:
+            postures.append((r.category, a, b))
+        for name, lo, hi in (("rest", r.start, r.stop), ("shift", r.stop, r.shift_stop)):
+            if frame(hi) > frame(lo):
+                segments.append((name, frame(lo), frame(hi)))
+    return format_intervals(postures), format_intervals(segments)
+
+
+def generate_idle(subject: Subject, params: IdleParams, rng: np.random.Generator) -> tuple[Motion, dict]:
+    """Idle standing of ``params.duration_s`` seconds with balance shifts and small variations.
+
+    Returns the Motion (at ``params.fps``) and its truth: variant ``"standing"``, NaN target,
+    ``segments`` (rest / shift), foot contacts (both feet all the time), ``idle_postures``
+    (left | right | both, split at the middle of each shift) and the stance used.
+    """
+    params.validate()
+    sk = subject.skeleton
+    style = idle_style(subject)
+    fps = float(params.fps)
+    n = int(round(params.duration_s * fps)) + 1
+    t = np.arange(n) / fps
+    heading = np.radians(params.heading_deg if params.heading_deg is not None else rng.uniform(-180.0, 180.0))
+    start_xz = params.start_xz if params.start_xz is not None else tuple(rng.uniform(-300.0, 300.0, 2))
+    pref = np.asarray(subject.idle_foot_preference, dtype=float)
+    first = params.start_category or CATEGORIES[rng.choice(3, p=pref / pref.sum())]
+
+    width = style.stance_width_cm + rng.normal(0.0, 1.0)
+    toe_out = style.toe_out_deg + rng.normal(0.0, 1.5)
+    feet = plant_feet(sk, width, toe_out)
+    rests = _timeline(subject, style, params.duration_s, first, rng)
+    post = _posture_tracks(rests, t)
+    w, yaw_off, elbow_off, head_pitch_off, head_yaw_off = post.T
+
+    # Small variations (Egges Sec. 6): sway, breathing, head and arm noise.
+    sway = colored_noise(n, fps, style.sway_corner_hz, rng, channels=2)
+    ap_rms = subject.sway_cm / np.hypot(1.0, style.sway_ml_ratio)
+    sway_ml, sway_ap = sway[:, 0] * style.sway_ml_ratio * ap_rms, sway[:, 1] * ap_rms
+    rate = subject.breath_rate_hz * (1.0 + 0.08 * colored_noise(n, fps, 0.05, rng)[:, 0])
+    phase = 2.0 * np.pi * np.cumsum(rate) / fps + rng.uniform(0.0, 2.0 * np.pi)
+    breath = 0.5 * (1.0 - np.cos(phase)) * (1.0 + 0.15 * colored_noise(n, fps, 0.05, rng)[:, 0])
+    head_noise = np.radians(style.head_rms_deg) * colored_noise(n, fps, 0.3, rng, channels=2)
+    arm_noise = np.radians(style.arm_rms_deg) * colored_noise(n, fps, 0.4, rng, channels=6).reshape(n, 2, 3)
+
+    rig = Rig(sk)
+    rot = identity_rotations(n, sk)
+    # Pelvis: shift over the loaded foot, drop towards the unloaded side, turn, pendulum sway.
+    root_x = w * style.com_shift_frac * width / 2.0 + sway_ml
+    root_z = style.com_ahead_cm + sway_ap
+    root_y0 = root_height(sk, np.zeros((1, 2)), rot[:1, 0], feet, style.lock_knee_deg)[0]
+    drop = np.radians(style.pelvis_drop_deg) * w
+    yaw = np.radians(style.pelvis_yaw_deg * w + yaw_off)
+    rot[:, 0] = euler_q(flex=sway_ap / root_y0, axial=yaw, lateral=drop - sway_ml / root_y0)
+    root_xz = np.stack([root_x, root_z], axis=-1)
+    root_pos = np.stack([root_x, root_height(sk, root_xz, rot[:, 0], feet, style.lock_knee_deg), root_z], axis=-1)
+    solve_legs(sk, rot, root_pos, feet)
+
+    # Trunk: habitual lean, lateral bend back over the pelvis, turn back towards the front,
+    # breathing (chest extension) ; head: habitual pitch plus small movements.
+    lean = np.radians(subject.torso_lean_deg)
+    comp = -style.trunk_compensation * drop
+    for name, share in (("LowerBack", 0.45), ("Spine", 0.35), ("Spine1", 0.2)):
+        extend = np.radians(1.0) * breath if name == "Spine1" else 0.0
+        rot[:, rig[name]] = euler_q(flex=share * lean - extend, axial=-0.6 * share * yaw, lateral=share * comp)
+    pitch = np.radians(subject.head_pitch_deg + head_pitch_off) + head_noise[:, 0]
+    head_yaw = np.radians(head_yaw_off) + head_noise[:, 1]
+    rot[:, rig["Neck1"]] = euler_q(flex=0.5 * pitch, axial=0.5 * head_yaw)
+    rot[:, rig["Head"]] = euler_q(flex=0.5 * pitch, axial=0.5 * head_yaw)
+    for sign, side in ((1.0, "left"), (-1.0, "right")):
+        clav = sk.offsets[rig.side(side, "Arm")]
+        lift = np.radians(subject.shoulder_lift_deg) + style.breath_rise_cm * breath / np.linalg.norm(clav)
+        rot[:, rig.side(side, "Shoulder")] = euler_q(lateral=sign * lift)
+
+    # Arms hang from the shoulders (gravity frame turned with the pelvis), elbows at the habit.
+    pos = fk(rot, root_pos, sk.offsets, sk.parents)
+    turn = heading_quat(yaw)
+    for i, (sign, side) in enumerate(((1.0, "left"), (-1.0, "right"))):
+        elbow = subject.elbow_flex_deg + elbow_off + np.degrees(arm_noise[:, i, 0])
+        hang = hanging_hand_offsets(sk, elbow, style.arm_abduction_deg)[:, i]
+        swing = euler_q(flex=-arm_noise[:, i, 1], lateral=-sign * arm_noise[:, i, 2])
+        target = pos[:, rig.side(side, "Arm")] + qrot(qmul(turn, swing), hang)
+        solve_arm(sk, rot, root_pos, side, target, elbow_pole(turn, side))
+
+    root_w, rot_w = to_world(root_pos, rot, heading, start_xz)
+    postures, segments = _truth_intervals(rests, fps, n)
+    truth = {
+        "variant": "standing",
+        "target_x": float("nan"), "target_y": float("nan"), "target_z": float("nan"),
+        "segments": segments,
+        "left_contacts": format_ranges([(0, n)]),
+        "right_contacts": format_ranges([(0, n)]),
+        "idle_postures": postures,
+        "heading_deg": float(np.degrees(heading)),
+        "start_x": float(start_xz[0]), "start_z": float(start_xz[1]),
+        "stance_width_cm": float(width),
+        "toe_out_deg": float(toe_out),
+    }
+    return Motion(skeleton=sk, root_pos=root_w, rotations=rot_w, fps=fps), truth
