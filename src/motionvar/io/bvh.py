@@ -105,6 +105,10 @@ class _Tokens:
         return arr
 
 
+def _is_channel(tok: str | None) -> bool:
+    return tok is not None and (tok.lower() in _ROT_CHANNELS or tok.lower() in _POS_CHANNELS)
+
+
 def _parse_channels(t: _Tokens, h: _Hierarchy, joint: str, line: int) -> tuple[str, list[int], list[int] | None]:
     """Read ``CHANNELS n name...``; return (rotation order, rotation columns, xyz position columns)."""
     tok, ln = t.next()
@@ -115,13 +119,13 @@ def _parse_channels(t: _Tokens, h: _Hierarchy, joint: str, line: int) -> tuple[s
     names = []
     for _ in range(n):
         tok, ln2 = t.peek()
-        if tok is None or (tok.lower() not in _ROT_CHANNELS and tok.lower() not in _POS_CHANNELS):
+        if not _is_channel(tok):
             raise t.error(ln2, f"joint {joint}: bad CHANNELS count: CHANNELS {n} at line {ln} lists {len(names)} "
                                f"channel names, then {tok!r}")
         names.append(tok)
         t.pos += 1
     tok, ln2 = t.peek()
-    if tok is not None and (tok.lower() in _ROT_CHANNELS or tok.lower() in _POS_CHANNELS):
+    if _is_channel(tok):
         raise t.error(ln2, f"joint {joint}: bad CHANNELS count: CHANNELS {n} at line {ln} is followed by "
                            f"more channel names ({tok!r})")
     lower = [c.lower() for c in names]
