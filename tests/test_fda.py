@@ -1,0 +1,365 @@
+"""Functional data analysis (Du 2022, ch. 3): B-splines, FPCA, normalised FPCA, SFPCA, GPLVM."""
+
+import math
+
+import numpy as np
+import pytest
+import torch
+from scipy.integrate import simpson
+
+from motionvar.core import Motion, Skeleton
+from motionvar.core.quaternions import qmul, quat_about_axis
+from motionvar.fda import (
+    FPCA,
+    SFPCA,
+    BayesianGPLVM,
+    BSplineBasis,
+    FunctionalGPLVM,
+    FunctionalMotions,
+    NormalizedFPCA,
+    ObservationObjective,
+    TopEigenvectors,
+    align_quaternion_signs,
+    bspline_fit_rmse,
+    choose_n_basis,
+    feature_error,
+    functional_std,
+    knn_accuracy,
+    latent_separation,
+    observation_error,
+)
+
+
+def chain_skeleton(n_joints=5, scale=1.0):
+    """A small branching rig: root, spine, head, and two arms of one joint each."""
+    names = tuple(f"j{i}" for i in range(n_joints))
+    parents = np.array([-1, 0, 1, 1, 1][:n_joints])
+    offsets = np.array([[0, 0, 0], [0, 20, 0], [0, 25, 0], [15, 20, 0], [-15, 20, 0]][:n_joints], float) * scale
+    return Skeleton(names=names, parents=parents, offsets=offsets)
+
+
+def make_clips(n=60, seed=0, n_joints=5, classes=3, lengths=(30, 45)):
+    """Smooth clips whose joint angles depend on a class (pose offset) and random phases."""
+    rng = np.random.default_rng(seed)
+    axes = rng.normal(size=(n_joints, 3))
+    clips, labels = [], []
+    for i in range(n):
+        c = i % classes
+        T = int(rng.integers(*lengths))
+        t = np.linspace(0, 1, T)
+        phase = rng.uniform(0, 2 * np.pi)
+        angles = 0.5 * np.sin(2 * np.pi * t[:, None] + phase + np.arange(n_joints)) * rng.uniform(0.5, 1.0)
+        angles += 0.6 * c * (np.arange(n_joints) % 2)[None] + 0.05 * rng.normal(size=(1, n_joints))
+        q = np.stack([quat_about_axis(axes[j], angles[:, j]) for j in range(n_joints)], axis=1)
+        root = np.stack([t * rng.uniform(80, 120), 90 + 2 * np.sin(4 * np.pi * t), t * 10 * rng.normal()], -1)
+        sk = chain_skeleton(n_joints, rng.uniform(0.9, 1.1))
+        clips.append(Motion(skeleton=sk, root_pos=root, rotations=q, fps=120.0))
+        labels.append(c)
+    return clips, np.array(labels)
+
+
+@pytest.fixture(scope="module")
+def data():
+    clips, labels = make_clips()
+    return FunctionalMotions.from_motions(clips, n_basis=8), labels, clips
+
+
+# ---- B-splines (Eq. 3.1) ------------------------------------------------------------
+
+def test_bspline_fit_reproduces_splines_and_gram_is_exact():
+    basis = BSplineBasis(7)
+    rng = np.random.default_rng(0)
+    coefs = rng.normal(size=(3, 7, 2))
+    values = basis.evaluate(coefs, 40)
+    assert np.allclose(basis.fit(values), coefs, atol=1e-10)
+    t = np.linspace(0, 1, 20001)
+    B = basis.design(t)
+    dense = simpson(B[:, :, None] * B[:, None, :], x=t, axis=0)
+    assert np.allclose(basis.gram(), dense, atol=1e-9)
+    assert math.isclose(basis.gram().sum(), 1.0, abs_tol=1e-12)  # partition of unity
+    root, iroot = basis.gram_sqrt()
+    assert np.allclose(root @ root, basis.gram(), atol=1e-12) and np.allclose(root @ iroot, np.eye(7), atol=1e-9)
+
+
+def test_bspline_bad_input():
+    with pytest.raises(ValueError, match="n_basis"):
+        BSplineBasis(3)
+    with pytest.raises(ValueError, match="frames cannot determine"):
+        BSplineBasis(10).fit(np.zeros((8, 2)))
+    with pytest.raises(ValueError, match=r"\[0, 1\]"):
+        BSplineBasis(5).design(np.array([0.5, 1.2]))
+
+
+def test_choose_n_basis_cut_off_rule():
+    ks = np.array([5, 10, 15, 20, 25])
+    rmse = np.array([4.0, 1.0, 0.5, 0.48, 0.47])
+    assert choose_n_basis(ks, rmse, 0.1) == 15  # 15 -> 20 drops only 4 %
+    assert choose_n_basis(ks, rmse, 0.6) == 10  # 10 -> 15 drops 50 %
+    assert choose_n_basis(ks, rmse, 0.0) == 25
+    with pytest.raises(ValueError, match="ascending"):
+        choose_n_basis(ks[::-1], rmse, 0.1)
+
+
+def test_bspline_rmse_decreases_with_k(data):
+    _, _, clips = data
+    rmse = [bspline_fit_rmse(clips, k) for k in (4, 6, 10, 14)]
+    assert all(a > b for a, b in zip(rmse, rmse[1:]))
+    assert rmse[-1] < 0.1  # cm: smooth clips are represented almost exactly
+
+
+# ---- motion parameterisation (Eq. 3.2, Sec. 3.2.1) -----------------------------------
+
+def test_quaternion_signs_continuous_within_and_across_clips():
+    rng = np.random.default_rng(1)
+    T, J = 20, 3
+    base = quat_about_axis([0, 1, 0], np.linspace(0, 1, T))[:, None].repeat(J, 1)
+    clips = []
+    for _ in range(4):
+        flips = np.where(rng.random((T, J, 1)) < 0.4, -1.0, 1.0)
+        clips.append(base * flips)
+    fixed = align_quaternion_signs(clips)
+    for q in fixed:
+        assert np.allclose(q, fixed[0])
+        assert np.all(np.sum(q[1:] * q[:-1], -1) > 0)
+
+
+def test_functional_motions_positions_and_motions(data):
+    fd, _, clips = data
+    assert fd.coefs.shape == (60, 8, 3 + 4 * 5)
+    pos = fd.positions()
+    assert pos.shape == (60, fd.n_frames, 5, 3)
+    # the first clip's functional positions at its own frames match its frames closely
+    first = fd.subset(np.array([0])).positions(n_frames=clips[0].n_frames)[0]
+    assert np.max(np.abs(first - clips[0].positions())) < 0.5
+    motions = fd.to_motions(clips[0].skeleton, fps=120.0)
+    assert len(motions) == 60 and motions[0].n_frames == fd.n_frames
+    assert np.allclose(np.linalg.norm(motions[3].rotations, axis=-1), 1.0)
+
+
+def test_functional_motions_bad_input():
+    clips, _ = make_clips(4)
+    with pytest.raises(ValueError, match="clip 1 has 5 frames"):
+        FunctionalMotions.from_motions([clips[0], clips[1].slice(0, 5)], n_basis=8)
+    other = Motion(skeleton=chain_skeleton(4), root_pos=np.zeros((30, 3)), rotations=np.tile([1.0, 0, 0, 0], (30, 4, 1)), fps=120)
+    with pytest.raises(ValueError, match="clip 1 has another skeleton topology"):
+        FunctionalMotions.from_motions([clips[0], other], n_basis=8)
+    bad = clips[2].copy()
+    bad.root_pos[3, 0] = np.nan
+    with pytest.raises(ValueError, match="clip 1 has non-finite"):
+        FunctionalMotions.from_motions([clips[0], bad], n_basis=8)
+    with pytest.raises(ValueError, match="no clips"):
+        FunctionalMotions.from_motions([], n_basis=8)
+
+
+# ---- FPCA (Eq. 3.3-3.5) ----------------------------------------------------------------
+
+def reference_explained_variance_ratio(fd, n, points_per_span=40):
+    """Independent FPCA: PCA of densely sampled curves with Simpson quadrature weights."""
+    breaks = np.unique(fd.basis.knots)
+    t = np.unique(np.concatenate([np.linspace(a, b, points_per_span + 1) for a, b in zip(breaks[:-1], breaks[1:])]))
+    h = np.diff(breaks)[0] / points_per_span
+    w = np.ones_like(t)
+    w[1:-1:2], w[2:-1:2] = 4, 2
+    w *= h / 3
+    curves = np.einsum("tk,nkd->ntd", fd.basis.design(t), fd.coefs)
+    x = (curves * np.sqrt(w)[None, :, None]).reshape(fd.n_clips, -1)
+    x -= x.mean(0)
+    s = np.linalg.svd(x, compute_uv=False) ** 2
+    return s[:n] / s.sum()
+
+
+def test_fpca_matches_dense_quadrature_reference(data):
+    fd, _, _ = data
+    model = FPCA(10).fit(fd)
+    assert np.allclose(model.explained_variance_ratio_, reference_explained_variance_ratio(fd, 10), atol=1e-6)
+
+
+def test_fpca_eigenfunctions_orthonormal_and_full_rank_round_trip(data):
+    fd, _, _ = data
+    model = FPCA(6).fit(fd)
+    G = fd.basis.gram()
+    inner = np.einsum("ikd,kl,jld->ij", model.eigenfunctions_, G, model.eigenfunctions_)  # Eq. 3.5
+    assert np.allclose(inner, np.eye(6), atol=1e-10)
+    full = FPCA(59).fit(fd)  # N - 1 components span the centred data
+    assert np.allclose(full.reconstruct(fd), fd.coefs, atol=1e-8)
+    z = full.transform(fd)
+    assert np.allclose(full.transform(full.inverse_transform(z)), z, atol=1e-8)
+
+
+def test_fpca_is_optimal_in_feature_space(data):
+    """Eq. 3.3: FPCA minimises the mean squared functional error; scaled variants cannot beat it."""
+    fd, _, _ = data
+    G = fd.basis.gram()
+
+    def mse(c):
+        d = fd.coefs - c
+        return np.einsum("nkd,kl,nld->", d, G, d) / fd.n_clips
+
+    for n in (1, 3, 6):
+        assert mse(FPCA(n).fit(fd).reconstruct(fd)) <= mse(NormalizedFPCA(n).fit(fd).reconstruct(fd)) + 1e-12
+
+
+def test_normalized_fpca_weights(data):
+    fd, _, _ = data
+    std = functional_std(fd)
+    model = NormalizedFPCA(3).fit(fd)
+    assert np.allclose(model.function_weights_, 1.0 / std)
+    # a constant function (zero variance) keeps weight 1 instead of dividing by zero
+    const = fd.with_coefs(fd.coefs.copy())
+    const.coefs[:, :, 5] = 0.3
+    w = NormalizedFPCA(3).fit(const).function_weights_
+    assert w[5] == 1.0 and np.all(np.isfinite(w))
+
+
+def test_fpca_bad_input(data):
+    fd, _, _ = data
+    with pytest.raises(ValueError, match="n_components must be an integer in"):
+        FPCA(61).fit(fd)
+    with pytest.raises(RuntimeError, match="not fitted"):
+        FPCA(3).transform(fd)
+    with pytest.raises(TypeError, match="FunctionalMotions"):
+        FPCA(3).fit(np.zeros((5, 8, 23)))
+    model = FPCA(3).fit(fd)
+    with pytest.raises(ValueError, match="expected coefficients"):
+        model.transform(np.zeros((5, 7, 23)))
+
+
+def test_save_load_round_trip(tmp_path, data):
+    fd, _, clips = data
+    for model in (FPCA(4).fit(fd), SFPCA(4, max_iter=3).fit(fd)):
+        path = tmp_path / f"{type(model).__name__}.npz"
+        model.save(path)
+        back = FPCA.load(path)
+        assert type(back) is type(model)
+        assert np.allclose(back.transform(fd), model.transform(fd))
+        assert np.allclose(back.inverse_transform(model.transform(fd)), model.reconstruct(fd))
+        motions = back.to_motions(model.transform(fd)[:2], fps=120.0, skeleton=clips[0].skeleton)
+        assert len(motions) == 2 and motions[0].n_frames == fd.n_frames
+    (tmp_path / "bad.npz").write_bytes(b"not a zip")
+    with pytest.raises(ValueError, match="bad.npz"):
+        FPCA.load(tmp_path / "bad.npz")
+
+
+# ---- SFPCA (Eq. 3.6-3.8) ------------------------------------------------------------
+
+def test_top_eigenvectors_gradient():
+    rng = np.random.default_rng(2)
+    X = torch.as_tensor(rng.normal(size=(6, 3)), dtype=torch.float64)  # rank 3: repeated zero eigenvalues
+    Y = torch.as_tensor(rng.normal(size=(6, 4)), dtype=torch.float64)
+
+    def loss(x):
+        u = TopEigenvectors.apply(x @ x.T, 2)
+        return ((u @ (u.T @ Y)) ** 2).sum()
+
+    x = X.clone().requires_grad_(True)
+    (g,) = torch.autograd.grad(loss(x), x)
+    assert torch.all(torch.isfinite(g))
+    eps = 1e-6
+    num = np.zeros(X.shape)
+    for idx in np.ndindex(*X.shape):
+        e = torch.zeros_like(X)
+        e[idx] = eps
+        num[idx] = (loss(X + e) - loss(X - e)).item() / (2 * eps)
+    assert np.allclose(g.numpy(), num, atol=1e-6)
+
+
+def test_observation_objective_value_and_gradient(data):
+    fd, _, _ = data
+    obj = ObservationObjective(fd, 3, dtype=torch.float64)
+    # at w = 1 the objective is the FPCA reconstruction's mean squared joint error
+    coefs = FPCA(3).fit(fd).reconstruct(fd)
+    ref = np.mean(np.sum((fd.positions() - fd.positions(coefs)) ** 2, -1))
+    w = np.ones(fd.layout.n_functions)
+    value, grad = obj.value_and_grad(w)
+    assert math.isclose(value, ref, rel_tol=1e-8)
+    for d in (0, 4, 9, 17):
+        e = np.zeros_like(w)
+        e[d] = 1e-5
+        num = (obj.value(w + e) - obj.value(w - e)) / 2e-5
+        assert math.isclose(grad[d], num, rel_tol=1e-4, abs_tol=1e-6)
+    assert abs(obj.value(3.7 * w) - value) < 1e-8 * value  # invariant to a global scale
+
+
+def test_sfpca_improves_observation_error(data):
+    fd, _, _ = data
+    n = 3
+    model = SFPCA(n, max_iter=10).fit(fd)
+    assert model.init_ in ("raw", "normalized")
+    assert model.loss_ <= min(model.loss_raw_, model.loss_normalized_) + 1e-9
+    err = observation_error(fd, model.reconstruct(fd))
+    assert err < observation_error(fd, FPCA(n).fit(fd).reconstruct(fd))
+    assert err < observation_error(fd, NormalizedFPCA(n).fit(fd).reconstruct(fd))
+    assert math.isclose(np.exp(np.mean(np.log(model.function_weights_))), 1.0)
+
+
+def test_sfpca_finite_differences_and_joint_groups(data):
+    fd, _, _ = data
+    small = fd.subset(np.arange(20))
+    fd_model = SFPCA(2, gradient="finite_difference", max_iter=2).fit(small)
+    assert fd_model.loss_ <= min(fd_model.loss_raw_, fd_model.loss_normalized_) + 1e-9
+    joint = SFPCA(2, weight_groups="joint", max_iter=5).fit(small)
+    w = joint.function_weights_[3:].reshape(-1, 4)
+    assert np.allclose(w, w[:, :1])  # one weight per joint quaternion
+
+
+def test_sfpca_bad_params(data):
+    fd, _, _ = data
+    with pytest.raises(ValueError, match="gradient must be one of"):
+        SFPCA(2, gradient="adam").fit(fd)
+    with pytest.raises(ValueError, match="bounds"):
+        SFPCA(2, bounds=(2.0, 3.0)).fit(fd)
+
+
+# ---- Bayesian GPLVM -------------------------------------------------------------------
+
+def test_gplvm_bound_matches_exact_gp_marginal_likelihood():
+    """With q(X) collapsed to points and Z = X, the Titsias bound equals the exact GP
+    log marginal likelihood minus the KL term."""
+    rng = np.random.default_rng(3)
+    N, Q, D = 12, 2, 3
+    X = rng.normal(size=(N, Q))
+    Y = rng.normal(size=(N, D))
+    model = BayesianGPLVM(Q, n_inducing=N, jitter=1e-9)
+    S = np.full((N, Q), 1e-12)
+    p = {"mu": torch.as_tensor(X), "log_S": torch.as_tensor(np.log(S)), "Z": torch.as_tensor(X),
+         "log_sf2": torch.tensor([0.3], dtype=torch.float64), "log_ell": torch.tensor([0.1, -0.2], dtype=torch.float64),
+         "log_noise": torch.tensor([math.log(0.2)], dtype=torch.float64)}
+    bound, _ = model._bound(p, torch.as_tensor(Y), float(np.sum(Y**2)), None)
+    kl = 0.5 * np.sum(S + X**2 - 1 - np.log(S))
+    sf2, ell = math.exp(0.3), np.exp([0.1, -0.2])
+    d = (X[:, None] - X[None]) / ell
+    C = sf2 * np.exp(-0.5 * np.sum(d**2, -1)) + 0.2 * np.eye(N)
+    _, logdet = np.linalg.slogdet(C)
+    exact = -0.5 * (D * N * math.log(2 * math.pi) + D * logdet + np.trace(Y.T @ np.linalg.solve(C, Y)))
+    assert math.isclose(float(bound) + kl, exact, rel_tol=1e-5)
+
+
+def test_functional_gplvm_reconstructs(data):
+    fd, labels, _ = data
+    g = FunctionalGPLVM(4, n_inducing=15, max_iter=60).fit(fd)
+    z = g.transform(fd)
+    assert z.shape == (60, 4)
+    err = feature_error(fd, g.reconstruct(fd))
+    mean_only = feature_error(fd, np.broadcast_to(fd.coefs.mean(0), fd.coefs.shape))
+    assert err < mean_only
+    with pytest.raises(NotImplementedError):
+        g.transform(fd.subset(np.arange(5)))
+    with pytest.raises(ValueError, match="one label per row"):
+        BayesianGPLVM(2, discriminative_sigma2=1.0).fit(np.zeros((10, 4)) + np.arange(4))
+    dp = FunctionalGPLVM(3, n_inducing=10, max_iter=20, discriminative_sigma2=1.0).fit(fd, labels)
+    assert np.all(np.isfinite(dp.transform(fd)))
+
+
+# ---- latent-space measures (Fig. 3.11) --------------------------------------------------
+
+def test_knn_accuracy_and_separation():
+    rng = np.random.default_rng(4)
+    labels = np.repeat([0, 1, 2], 20)
+    apart = rng.normal(size=(60, 3)) * 0.1 + np.eye(3)[labels] * 5
+    assert knn_accuracy(apart, labels) == 1.0
+    sep = latent_separation(apart, labels)
+    assert sep["silhouette"] > 0.9
+    mixed = rng.normal(size=(60, 3))
+    assert latent_separation(mixed, labels)["silhouette"] < 0.2
+    with pytest.raises(ValueError, match="two distinct labels"):
+        latent_separation(apart, np.zeros(60))
