@@ -1,7 +1,19 @@
-# Shared helpers of all rule files: dataset list, paths, and the evaluation registry.
-# Included first by the Snakefile (see workflow/README.md).
+# Shared helpers, included first by the Snakefile (see workflow/README.md): config
+# validation, datasets and their inputs, path conventions, report categories and the
+# evaluation registry. Functions live here (or in a paper's own helper .smk without
+# rules): `snakemake --lint` flags a file that mixes rules and functions.
+
+import os
+import re
+
+import jsonschema
+from snakemake.exceptions import WorkflowError
+from snakemake.utils import validate
 
 ENV = "../envs/motionvar.yaml"
+
+# Rule files of the paper stages, included by the Snakefile when present.
+PAPER_RULE_FILES = ["fda.smk", "graph.smk", "style.smk", "ma2010.smk", "idle.smk"]
 
 PAPER_CATEGORY = {
     "data": "Data",
@@ -9,14 +21,91 @@ PAPER_CATEGORY = {
     "du2022": "Du 2022",
     "egges2004": "Egges et al. 2004",
 }
+SUMMARY_CATEGORY = "Summary"
 
 # name -> {"paper": ..., "extra": [path patterns with {dataset}]}
 EVALUATIONS = {}
 
 
+def _config_error(err):
+    """One line naming the config key and what is wrong with it."""
+    key = ".".join(str(p) for p in err.absolute_path) or "(top level)"
+    if err.validator == "additionalProperties" and isinstance(err.instance, dict):
+        known = set(err.schema.get("properties", {}))
+        unknown = sorted(set(err.instance) - known)
+        where = f"{key}." if err.absolute_path else ""
+        return (
+            f"unknown config key(s) {', '.join(where + k for k in unknown)} "
+            f"(allowed here: {', '.join(sorted(known)) or 'none'})"
+        )
+    return f"config key {key}: {err.message}"
+
+
+def validate_config(schema_path):
+    """Validate ``config`` against the schema (filling defaults); stop with a message
+    naming the offending key. Also checks what a schema cannot: run_datasets names
+    configured datasets."""
+    try:
+        validate(config, schema_path)
+    except WorkflowError as exc:
+        cause = exc.__context__
+        if isinstance(cause, jsonschema.ValidationError):
+            raise WorkflowError(f"Invalid configuration: {_config_error(cause)}") from None
+        raise
+    missing = [d for d in config["run_datasets"] if d not in config["datasets"]]
+    if missing:
+        raise WorkflowError(
+            f"Invalid configuration: run_datasets names {missing}, not in datasets "
+            f"({', '.join(config['datasets'])})"
+        )
+
+
 def run_datasets():
     """The datasets the default target builds (config key run_datasets)."""
     return list(config["run_datasets"])
+
+
+def dataset_config(dataset):
+    """The config entry of one dataset (defaults filled by the schema)."""
+    return config["datasets"][dataset]
+
+
+def joint_map_path(dataset):
+    """The dataset's joint map YAML, or None for the CMU rig (motionvar.core.cmu_joint_map)."""
+    return dataset_config(dataset).get("joint_map")
+
+
+def joint_map_input(wildcards):
+    """Input function: the dataset's joint map file, if it has one (so edits rerun)."""
+    path = joint_map_path(wildcards.dataset)
+    return [path] if path else []
+
+
+def dataset_pattern():
+    """Regex of the configured dataset names (the {dataset} wildcard constraint)."""
+    return "|".join(re.escape(d) for d in config["datasets"])
+
+
+def data_input(wildcards):
+    """Input function of the data rule: a BVH dataset's files (labels, BVH files, joint map),
+    so that edits rerun the import; nothing for the synthetic generator (its config
+    entry is a param)."""
+    entry = dataset_config(wildcards.dataset)
+    if entry["source"] != "bvh":
+        return []
+    folder = entry["path"]
+    if not os.path.isdir(folder):
+        raise WorkflowError(f"datasets.{wildcards.dataset}.path: BVH folder {folder} not found")
+    labels = entry["labels"] if os.path.isabs(entry["labels"]) else os.path.join(folder, entry["labels"])
+    bvh = sorted(
+        os.path.join(root, f) for root, _, files in os.walk(folder) for f in files if f.lower().endswith(".bvh")
+    )
+    return [labels, *bvh, *joint_map_input(wildcards)]
+
+
+# Paths (workflow/README.md). Data and preprocessed clips of a dataset:
+DATA = "results/{dataset}/data"
+PREP = "results/{dataset}/prep"
 
 
 def ev_table(ev):
@@ -31,12 +120,29 @@ def ev_claims(ev):
     return f"results/{{dataset}}/claims/{ev}.json"
 
 
-def ev_log(rule_name):
+def ev_log(rule_name, extra=""):
+    """Log of a rule; ``extra`` names further wildcards, e.g. "{k}" -> logs/rule/{k}.log."""
+    if extra:
+        return f"results/{{dataset}}/logs/{rule_name}/{extra}.log"
     return f"results/{{dataset}}/logs/{rule_name}.log"
 
 
-def ev_benchmark(rule_name):
+def ev_benchmark(rule_name, extra=""):
+    """Benchmark of a rule: benchmarks/{rule}.tsv, or benchmarks/{rule}/{extra}.tsv for a
+    rule with wildcards beyond {dataset} (the end-to-end test checks one per rule)."""
+    if extra:
+        return f"results/{{dataset}}/benchmarks/{rule_name}/{extra}.tsv"
     return f"results/{{dataset}}/benchmarks/{rule_name}.tsv"
+
+
+def in_report(path, paper, caption, **labels):
+    """``path`` as a report output of ``paper`` (a key of PAPER_CATEGORY, or "summary"),
+    subcategory the dataset, with ``labels`` shown as columns of the report's table."""
+    category = SUMMARY_CATEGORY if paper == "summary" else PAPER_CATEGORY[paper]
+    return report(
+        path, caption=caption, category=category, subcategory="{dataset}",
+        labels={"dataset": "{dataset}", **labels} if labels else None,
+    )
 
 
 def register_evaluation(ev, paper, extra=()):
@@ -60,3 +166,16 @@ def evaluation_outputs(dataset):
 
 def claim_files(dataset):
     return [ev_claims(ev).format(dataset=dataset) for ev in EVALUATIONS]
+
+
+def default_outputs(dataset):
+    """What `snakemake` builds for one dataset: the data figures, the preprocessed
+    clips, every registered evaluation, the merged claims and their summary."""
+    return [
+        f"results/{dataset}/prep/metadata.csv",
+        f"results/{dataset}/figures/dataset_overview.png",
+        f"results/{dataset}/figures/dataset_animation.gif",
+        *evaluation_outputs(dataset),
+        f"results/{dataset}/claims.csv",
+        f"results/{dataset}/claims_summary.html",
+    ]

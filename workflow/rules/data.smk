@@ -1,0 +1,23 @@
+# Stage 1: the clips of a dataset, packed (results/{dataset}/data/clips.npz +
+# metadata.csv): the synthetic generator or a labelled BVH folder (config.datasets).
+
+
+rule data:
+    input:
+        data_input,
+    output:
+        clips=f"{DATA}/clips.npz",
+        metadata=f"{DATA}/metadata.csv",
+    params:
+        entry=lambda wc: dataset_config(wc.dataset),
+    log:
+        ev_log("data"),
+    benchmark:
+        ev_benchmark("data")
+    threads: 1
+    resources:
+        mem_mb=4000,
+    conda:
+        ENV
+    script:
+        "../scripts/data.py"

@@ -1,0 +1,106 @@
+# Figures of the data, the merged claims of all registered evaluations, and the claims
+# summary that opens the report. Included last (after every paper's rule file), so that
+# claim_files() sees all registered evaluations.
+
+
+rule dataset_overview:
+    input:
+        clips=f"{DATA}/clips.npz",
+        metadata=f"{DATA}/metadata.csv",
+    output:
+        in_report(
+            "results/{dataset}/figures/dataset_overview.png",
+            "data",
+            "../report/dataset_overview.rst",
+            figure="key frames per behaviour and walking style",
+        ),
+    params:
+        key_frames=config["report"]["overview_key_frames"],
+    log:
+        ev_log("dataset_overview"),
+    benchmark:
+        ev_benchmark("dataset_overview")
+    threads: 1
+    resources:
+        mem_mb=2000,
+    conda:
+        ENV
+    script:
+        "../scripts/dataset_overview.py"
+
+
+rule animation:
+    input:
+        clips=f"{DATA}/clips.npz",
+        metadata=f"{DATA}/metadata.csv",
+    output:
+        in_report(
+            "results/{dataset}/figures/dataset_animation.gif",
+            "data",
+            "../report/dataset_animation.rst",
+            figure="animation, one clip per behaviour",
+        ),
+    params:
+        clips=config["report"]["animation_clips"],
+        seconds=config["report"]["animation_seconds"],
+        fps=config["report"]["animation_fps"],
+        panel_px=config["report"]["animation_panel_px"],
+    log:
+        ev_log("animation"),
+    benchmark:
+        ev_benchmark("animation")
+    threads: 1
+    resources:
+        mem_mb=2000,
+    conda:
+        ENV
+    script:
+        "../scripts/dataset_animation.py"
+
+
+rule claims:
+    input:
+        claims=lambda wc: claim_files(wc.dataset),
+    output:
+        in_report(
+            "results/{dataset}/claims.csv",
+            "summary",
+            "../report/claims.rst",
+            figure="claims table (CSV)",
+        ),
+    log:
+        ev_log("claims"),
+    benchmark:
+        ev_benchmark("claims")
+    threads: 1
+    resources:
+        mem_mb=500,
+    conda:
+        ENV
+    script:
+        "../scripts/claims.py"
+
+
+rule claims_summary:
+    input:
+        claims="results/{dataset}/claims.csv",
+    output:
+        in_report(
+            "results/{dataset}/claims_summary.html",
+            "summary",
+            "../report/claims_summary.rst",
+            figure="claims per paper, with verdicts",
+        ),
+    params:
+        categories=PAPER_CATEGORY,
+    log:
+        ev_log("claims_summary"),
+    benchmark:
+        ev_benchmark("claims_summary")
+    threads: 1
+    resources:
+        mem_mb=500,
+    conda:
+        ENV
+    script:
+        "../scripts/claims_summary.py"

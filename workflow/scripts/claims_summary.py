@@ -1,0 +1,19 @@
+"""Rule claims_summary: the merged claims as an HTML page, one table per paper with the
+verdicts coloured (results/{dataset}/claims_summary.html)."""
+
+
+def main(snakemake) -> None:
+    from pathlib import Path
+
+    from motionvar.summary import claims_html, read_claims_table
+
+    table = read_claims_table(snakemake.input.claims)
+    html = claims_html(table, paper_titles=snakemake.params.categories,
+                       title=f"Claims checked on dataset '{snakemake.wildcards.dataset}'")
+    Path(snakemake.output[0]).write_text(html, encoding="utf-8")
+
+
+if "snakemake" in globals():
+    from _rule import run
+
+    run(snakemake, main)  # noqa: F821
