@@ -1,0 +1,90 @@
+"""PrepOptions: every threshold and choice of the preprocessing stage, in one place.
+
+Thresholds are physical (cm, cm/s, seconds), so they hold for any frame rate; a motion
+in other length units is handled through ``units_cm`` (cm per motion length unit).
+Defaults were chosen from gait facts (GAIT.md: a stance foot is still, a swing foot moves
+at 1-5 m/s and clears the floor) and checked on the synthetic generator and on CMU walks;
+they are not tuned to any claim.
+"""
+
+from __future__ import annotations
+
+from dataclasses import asdict, dataclass, fields
+
+HEADINGS = ("hips", "movement")
+
+
+@dataclass(frozen=True)
+class PrepOptions:
+    """Options of foot-contact detection, segmentation and alignment.
+
+    Foot contacts (per foot; a foot is planted when its ankle or its toe is both slow and
+    low, Du 2022 Sec. 4.3 "contact state transitions"):
+        contact_velocity_cm_s: a joint is slow below this speed (cm/s). A planted foot
+            moves < 5 cm/s plus marker noise; a swinging foot 100-500 cm/s.
+        contact_height_cm: a joint is low when it is less than this above its floor level.
+        floor_percentile: a joint's floor level is this percentile of its height over the
+            clip (robust to floor offsets and to rigs with other ankle heights).
+        velocity_window_s: speeds are central differences over this span (noise filter).
+        min_contact_s: shorter contact runs are dropped (flicker at toe-off / swing).
+        min_gap_s: shorter breaks inside a contact are filled.
+    Reach segmentation (pick/place):
+        hand_smooth_s: the hand speed is box-filtered over this span before its minimum
+            at the target is taken.
+    Alignment (Ma 2010 Sec. 4.2, space warping):
+        heading: "hips" (the facing direction from the left-hip -> right-hip vector) or
+            "movement" (Ma's overall movement direction, first to last root position).
+        heading_frames: frames at the start of a clip averaged for the "hips" heading.
+    Pipeline:
+        use_ground_truth_segments: cut at the metadata's ``segments`` column instead of
+            detecting contacts (synthetic data: the generator's ground truth).
+        skip_unsegmentable: drop clips in which no primitive is found (with a warning)
+            instead of raising.
+        units_cm: centimetres per length unit of the motions (1.0: motions in cm).
+    """
+
+    contact_velocity_cm_s: float = 30.0
+    contact_height_cm: float = 6.0
+    floor_percentile: float = 2.0
+    velocity_window_s: float = 1.0 / 60.0
+    min_contact_s: float = 0.05
+    min_gap_s: float = 0.05
+    hand_smooth_s: float = 0.1
+    heading: str = "hips"
+    heading_frames: int = 1
+    use_ground_truth_segments: bool = False
+    skip_unsegmentable: bool = False
+    units_cm: float = 1.0
+
+    def __post_init__(self) -> None:
+        positive = ("contact_velocity_cm_s", "contact_height_cm", "units_cm")
+        non_negative = ("velocity_window_s", "min_contact_s", "min_gap_s", "hand_smooth_s")
+        for name in positive:
+            if not getattr(self, name) > 0:
+                raise ValueError(f"PrepOptions.{name} must be positive; got {getattr(self, name)!r}")
+        for name in non_negative:
+            if not getattr(self, name) >= 0:
+                raise ValueError(f"PrepOptions.{name} must be >= 0; got {getattr(self, name)!r}")
+        if not 0 <= self.floor_percentile <= 50:
+            raise ValueError(f"PrepOptions.floor_percentile must be in [0, 50]; got {self.floor_percentile!r}")
+        if self.heading not in HEADINGS:
+            raise ValueError(f"PrepOptions.heading must be one of {HEADINGS}; got {self.heading!r}")
+        if not (isinstance(self.heading_frames, int) and self.heading_frames >= 1):
+            raise ValueError(f"PrepOptions.heading_frames must be an integer >= 1; got {self.heading_frames!r}")
+
+    @classmethod
+    def from_dict(cls, d: dict | None) -> "PrepOptions":
+        """Options from a config mapping; unknown keys raise ValueError naming them."""
+        d = dict(d or {})
+        known = {f.name for f in fields(cls)}
+        unknown = sorted(set(d) - known)
+        if unknown:
+            raise ValueError(f"PrepOptions: unknown options {unknown} (known: {sorted(known)})")
+        return cls(**d)
+
+    def to_dict(self) -> dict:
+        return asdict(self)
+
+    def frames(self, seconds: float, fps: float) -> int:
+        """A span in seconds as a whole number of frames at ``fps`` (at least 0)."""
+        return max(int(round(seconds * fps)), 0)

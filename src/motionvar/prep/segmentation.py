@@ -1,0 +1,146 @@
+"""Segmentation of clips into motion primitives at contact-state changes (Du 2022
+Sec. 4.3, Fig. 4.5: "keyframes ... when a contact state transition occurs"), with the
+primitive names of the synthetic data contract:
+
+- walk: ``walk_start`` (clip start to the first heel strike), ``walk_leftStance`` (a left
+  heel strike to the next heel strike, the right one), ``walk_rightStance``, ``walk_end``
+  (the last heel strike to the clip end). Heel strikes are contact onsets.
+- run: ``run_leftStance`` / ``run_rightStance`` from a landing to the next landing (flight
+  included); the partial steps before the first and after the last landing are dropped.
+- sidestep: ``sidestep``, one lateral step cycle from a landing of the trailing foot to
+  its next landing. The trailing foot is the one opposite to the direction of travel
+  along the body's left axis (from the hip joints of the map).
+- pick / place: ``{b}_reach`` from the start until the hands stop at the target (the
+  minimum of hand speed between the outward and the return movement), ``{b}_retrieve``
+  from there to the end.
+- idle: one segment ``idle`` over the whole clip.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+import numpy as np
+
+from ..core.joint_map import JointMap
+from ..core.motion import Motion
+from .contacts import SIDES, FootContacts, detect_foot_contacts, joint_speeds
+from .intervals import Segment
+from .options import PrepOptions
+
+
+def contact_onsets(contacts: FootContacts) -> tuple[np.ndarray, np.ndarray]:
+    """All contact onsets of both feet in time order: (frames, sides) with sides
+    "left"/"right" (heel strikes when walking, landings when running)."""
+    frames = [contacts.onsets(s) for s in SIDES]
+    sides = np.concatenate([np.full(len(f), s) for f, s in zip(frames, SIDES)])
+    frames = np.concatenate(frames)
+    order = np.argsort(frames, kind="stable")
+    return frames[order], sides[order]
+
+
+def step_segments(contacts: FootContacts, n_frames: int, prefix: str, start_end: bool) -> list[Segment]:
+    """Stance segments between consecutive contact onsets, named by the foot that lands:
+    ``{prefix}_leftStance`` / ``{prefix}_rightStance``; with ``start_end`` also
+    ``{prefix}_start`` (clip start to the first onset) and ``{prefix}_end`` (the last
+    onset to the clip end)."""
+    frames, sides = contact_onsets(contacts)
+    segs = [
+        Segment(f"{prefix}_{side}Stance", int(a), int(b))
+        for a, b, side in zip(frames[:-1], frames[1:], sides[:-1])
+        if b > a
+    ]
+    if start_end and len(frames):
+        segs.insert(0, Segment(f"{prefix}_start", 0, int(frames[0])))
+        segs.append(Segment(f"{prefix}_end", int(frames[-1]), n_frames))
+    return [s for s in segs if s.stop > s.start]
+
+
+def trailing_foot(motion: Motion, joint_map: JointMap, positions: np.ndarray) -> str:
+    """The trailing foot of a sidestep clip: "right" when the body travels towards its
+    left (the right-hip -> left-hip direction), "left" otherwise."""
+    hips = joint_map.indices(motion.skeleton, ["left_hip", "right_hip"])
+    left_axis = positions[:, hips[0]] - positions[:, hips[1]]
+    travel = motion.root_pos[-1] - motion.root_pos[0]
+    lateral = float(np.sum(left_axis.mean(axis=0)[[0, 2]] * travel[[0, 2]]))
+    return "right" if lateral > 0 else "left"
+
+
+def sidestep_segments(contacts: FootContacts, trailing: str) -> list[Segment]:
+    """One ``sidestep`` per pair of consecutive landings of the trailing foot."""
+    on = contacts.onsets(trailing)
+    return [Segment("sidestep", int(a), int(b)) for a, b in zip(on[:-1], on[1:])]
+
+
+def hand_speed(motion: Motion, joint_map: JointMap, positions: np.ndarray, options: PrepOptions) -> np.ndarray:
+    """(T,) summed speed of both hands in cm/s, box-filtered over ``hand_smooth_s``."""
+    hands = joint_map.indices(motion.skeleton, ["left_hand", "right_hand"])
+    speed = joint_speeds(positions[:, hands] * options.units_cm, motion.fps, options.velocity_window_s).sum(axis=1)
+    w = max(options.frames(options.hand_smooth_s, motion.fps), 1)
+    if w > 1:
+        padded = np.pad(speed, (w // 2, w - 1 - w // 2), mode="edge")
+        speed = np.convolve(padded, np.ones(w) / w, mode="valid")
+    return speed
+
+
+def reach_boundary(speed: np.ndarray) -> int:
+    """Frame where the hands stop at the target: the hand-speed minimum between the peak
+    of the outward movement and the peak of the return movement.
+
+    The outward peak is the fastest frame of the first half of the movement, the return
+    peak the fastest of the second half, where "half" splits the clip at the median of
+    the cumulative hand travel.
+    """
+    travel = np.cumsum(speed)
+    mid = int(np.searchsorted(travel, travel[-1] / 2.0))
+    p1 = int(np.argmax(speed[: mid + 1]))
+    p2 = mid + int(np.argmax(speed[mid:]))
+    return p1 + int(np.argmin(speed[p1 : p2 + 1]))
+
+
+def reach_segments(
+    motion: Motion, joint_map: JointMap, positions: np.ndarray, options: PrepOptions, prefix: str
+) -> list[Segment]:
+    """``{prefix}_reach`` [0, b) and ``{prefix}_retrieve`` [b, T) at the hand-speed minimum b."""
+    b = reach_boundary(hand_speed(motion, joint_map, positions, options))
+    segs = [Segment(f"{prefix}_reach", 0, b), Segment(f"{prefix}_retrieve", b, motion.n_frames)]
+    return [s for s in segs if s.stop > s.start]
+
+
+def _locomotion(prefix: str, start_end: bool) -> Callable:
+    def seg(motion, joint_map, positions, options):
+        contacts = detect_foot_contacts(motion, joint_map, options, positions)
+        return step_segments(contacts, motion.n_frames, prefix, start_end)
+
+    return seg
+
+
+def _sidestep(motion, joint_map, positions, options):
+    contacts = detect_foot_contacts(motion, joint_map, options, positions)
+    return sidestep_segments(contacts, trailing_foot(motion, joint_map, positions))
+
+
+def _reach(prefix: str) -> Callable:
+    return lambda motion, joint_map, positions, options: reach_segments(motion, joint_map, positions, options, prefix)
+
+
+SEGMENTERS: dict[str, Callable[[Motion, JointMap, np.ndarray, PrepOptions], list[Segment]]] = {
+    "walk": _locomotion("walk", start_end=True),
+    "run": _locomotion("run", start_end=False),
+    "sidestep": _sidestep,
+    "pick": _reach("pick"),
+    "place": _reach("place"),
+    "idle": lambda motion, joint_map, positions, options: [Segment("idle", 0, motion.n_frames)],
+}
+"""Behaviour -> segmenter(motion, joint_map, positions, options)."""
+
+
+def segment_motion(
+    motion: Motion, behaviour: str, joint_map: JointMap, options: PrepOptions | None = None
+) -> list[Segment]:
+    """Primitives (name, start, stop) of one clip of ``behaviour`` (see module docstring)."""
+    if behaviour not in SEGMENTERS:
+        raise ValueError(f"segmentation: unknown behaviour {behaviour!r} (known: {sorted(SEGMENTERS)})")
+    if motion.n_frames < 2:
+        raise ValueError(f"segmentation: the clip has {motion.n_frames} frame(s); need at least 2")
+    return SEGMENTERS[behaviour](motion, joint_map, motion.positions(), options or PrepOptions())
