@@ -31,7 +31,7 @@ def run(snakemake, main) -> None:
         )
         logging.captureWarnings(True)
         warnings.simplefilter("default")
-        logging.info("rule %s, wildcards %s", snakemake.rule, dict(snakemake.wildcards))
+        logging.info("rule %s, wildcards %s", snakemake.rule, dict(snakemake.wildcards.items()))
         try:
             main(snakemake)
         except BAD_INPUT as exc:

@@ -1,0 +1,189 @@
+"""Rule scripts run outside Snakemake with a stand-in for its ``snakemake`` object:
+bad input gives one clear error line naming the file or config key, exit status 1, and
+no output file."""
+
+import importlib.util
+import json
+import sys
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+import pytest
+
+from motionvar.claims import CLAIM_COLUMNS, Claim, write_claims
+from motionvar.core import Motion, cmu_skeleton
+from motionvar.core.quaternions import qidentity
+from motionvar.io.bvh import write_bvh
+
+SCRIPTS = Path(__file__).resolve().parents[1] / "workflow" / "scripts"
+sys.path.insert(0, str(SCRIPTS))
+from _rule import run  # noqa: E402
+
+
+class Named(list):
+    """Snakemake's named lists: a list whose entries may also be attributes."""
+
+    def __init__(self, items=(), **named):
+        super().__init__([*items, *named.values()])
+        self._named = named
+        self.__dict__.update(named)
+
+    def items(self):
+        return self._named.items()
+
+
+class FakeSnakemake:
+    def __init__(self, tmp_path, rule, input=None, output=None, params=None, wildcards=None):
+        self.rule = rule
+        self.input = input or Named()
+        self.output = output or Named()
+        self.params = params or Named()
+        self.wildcards = wildcards or Named(dataset="test")
+        self.log = Named([str(tmp_path / f"{rule}.log")])
+
+
+def script(name):
+    spec = importlib.util.spec_from_file_location(f"script_{name}", SCRIPTS / f"{name}.py")
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)  # no `snakemake` global: only defines main()
+    return module
+
+
+def claim(i, verdict="reproduced", paper="du2022"):
+    return Claim(f"{paper}.c{i}", paper, f"Fig. {i}", f"statement {i}", "< 1 cm", f"{i / 10:.1f} cm", verdict)
+
+
+def test_claims_merge_and_summary(tmp_path):
+    write_claims(tmp_path / "a.json", [claim(1), claim(2, "partial")])
+    write_claims(tmp_path / "b.json", [claim(3, "not reproduced", paper="ma2010")])
+    write_claims(tmp_path / "empty.json", [])
+    out = tmp_path / "claims.csv"
+    inputs = [str(tmp_path / n) for n in ("b.json", "a.json", "empty.json")]
+    run(FakeSnakemake(tmp_path, "claims", input=Named(claims=inputs), output=Named([str(out)])), script("claims").main)
+    table = pd.read_csv(out)
+    assert list(table.columns) == list(CLAIM_COLUMNS)
+    assert table["claim_id"].tolist() == ["du2022.c1", "du2022.c2", "ma2010.c3"]
+
+    html_out = tmp_path / "summary.html"
+    fake = FakeSnakemake(
+        tmp_path, "claims_summary", input=Named(claims=str(out)), output=Named([str(html_out)]),
+        params=Named(categories={"ma2010": "Ma et al. 2010", "du2022": "Du 2022"}),
+    )
+    run(fake, script("claims_summary").main)
+    html = html_out.read_text()
+    assert html.index("Ma et al. 2010") < html.index("Du 2022")  # paper order of the categories
+    for colour in ("#c9ecd0", "#ffe8a8", "#f6c6c6"):
+        assert colour in html
+    assert "statement 3" in html and "&lt; 1 cm" in html
+
+
+def test_claims_merge_of_no_evaluations_is_an_empty_table(tmp_path):
+    out = tmp_path / "claims.csv"
+    run(FakeSnakemake(tmp_path, "claims", input=Named(claims=[]), output=Named([str(out)])), script("claims").main)
+    assert out.read_text().strip() == ",".join(CLAIM_COLUMNS)
+    html_out = tmp_path / "summary.html"
+    fake = FakeSnakemake(tmp_path, "claims_summary", input=Named(claims=str(out)), output=Named([str(html_out)]),
+                         params=Named(categories={}))
+    run(fake, script("claims_summary").main)
+    assert "No claims yet" in html_out.read_text()
+
+
+@pytest.mark.parametrize(
+    "content, expected",
+    [
+        ("{not json", "not a valid claims file"),
+        (json.dumps([{"claim_id": "du2022.x", "paper": "du2022"}]), "not a valid claims file"),
+        (json.dumps([{**dict(zip(CLAIM_COLUMNS, ["du2022.x"] + ["du2022"] + ["s"] * 6)), "verdict": "great"}]),
+         "verdict 'great'"),
+    ],
+)
+def test_claims_merge_rejects_a_malformed_claims_file(tmp_path, capsys, content, expected):
+    write_claims(tmp_path / "good.json", [claim(1)])
+    bad = tmp_path / "du2022_fig9.json"
+    bad.write_text(content)
+    out = tmp_path / "claims.csv"
+    fake = FakeSnakemake(
+        tmp_path, "claims", input=Named(claims=[str(tmp_path / "good.json"), str(bad)]), output=Named([str(out)])
+    )
+    with pytest.raises(SystemExit) as exit_info:
+        run(fake, script("claims").main)
+    assert exit_info.value.code == 1
+    err = capsys.readouterr().err.strip()
+    assert err.startswith("ERROR rule claims: ") and str(bad) in err and expected in err
+    assert len(err.splitlines()) == 1  # one line on the console, the traceback is in the log
+    assert str(bad) in Path(fake.log[0]).read_text()
+    assert not out.exists()
+
+
+def test_claims_merge_rejects_duplicate_claim_ids(tmp_path, capsys):
+    write_claims(tmp_path / "a.json", [claim(1)])
+    write_claims(tmp_path / "b.json", [claim(1)])
+    out = tmp_path / "claims.csv"
+    fake = FakeSnakemake(tmp_path, "claims", input=Named(claims=[str(tmp_path / "a.json"), str(tmp_path / "b.json")]),
+                         output=Named([str(out)]))
+    with pytest.raises(SystemExit):
+        run(fake, script("claims").main)
+    assert "du2022.c1" in capsys.readouterr().err and not out.exists()
+
+
+def test_claims_summary_rejects_a_table_with_unknown_verdicts(tmp_path, capsys):
+    table = tmp_path / "claims.csv"
+    pd.DataFrame([dict(zip(CLAIM_COLUMNS, ["du2022.x", "du2022", "s", "s", "s", "s", "maybe", ""]))]).to_csv(
+        table, index=False)
+    out = tmp_path / "summary.html"
+    fake = FakeSnakemake(tmp_path, "claims_summary", input=Named(claims=str(table)), output=Named([str(out)]),
+                         params=Named(categories={}))
+    with pytest.raises(SystemExit):
+        run(fake, script("claims_summary").main)
+    err = capsys.readouterr().err
+    assert str(table) in err and "unknown verdicts ['maybe']" in err and not out.exists()
+
+
+def bvh_folder(tmp_path, labels):
+    folder = tmp_path / "bvh"
+    folder.mkdir()
+    sk = cmu_skeleton()
+    motion = Motion(sk, np.tile([0.0, 95.0, 0.0], (10, 1)), qidentity((10, sk.n_joints)), 30.0)
+    write_bvh(folder / "walk_01.bvh", motion)
+    (folder / "labels.csv").write_text(labels)
+    return folder
+
+
+def data_fake(tmp_path, entry):
+    out = tmp_path / "results" / "data"
+    return out, FakeSnakemake(
+        tmp_path, "data", output=Named(clips=str(out / "clips.npz"), metadata=str(out / "metadata.csv")),
+        params=Named(entry=entry), wildcards=Named(dataset="mine"),
+    )
+
+
+def bvh_entry(folder, **kw):
+    return {"source": "bvh", "path": str(folder), "labels": "labels.csv", "unit_cm": 1.0,
+            "drop_first_frame": False, "joint_map": None, **kw}
+
+
+def test_data_script_imports_a_bvh_folder(tmp_path):
+    folder = bvh_folder(tmp_path, "file,subject,behaviour,style\nwalk_01.bvh,s1,walk,neutral\n")
+    out, fake = data_fake(tmp_path, bvh_entry(folder))
+    run(fake, script("data").main)
+    meta = pd.read_csv(out / "metadata.csv")
+    assert meta["clip_id"].tolist() == ["walk_01"] and meta["n_frames"].tolist() == [10]
+
+
+@pytest.mark.parametrize(
+    "labels, entry_kw, expected",
+    [
+        ("file,subject,behaviour,style\nmissing.bvh,s1,walk,neutral\n", {}, "labels.csv:2: labelled file 'missing.bvh'"),
+        ("file,subject,style\nwalk_01.bvh,s1,neutral\n", {}, "missing required column 'behaviour'"),
+        ("file,subject,behaviour,style\nwalk_01.bvh,s1,walk,neutral\n", {"joint_map": "nope.yaml"}, "nope.yaml"),
+    ],
+)
+def test_data_script_names_the_dataset_and_the_file(tmp_path, capsys, labels, entry_kw, expected):
+    folder = bvh_folder(tmp_path, labels)
+    out, fake = data_fake(tmp_path, bvh_entry(folder, **entry_kw))
+    with pytest.raises(SystemExit):
+        run(fake, script("data").main)
+    err = capsys.readouterr().err
+    assert err.startswith("ERROR rule data: datasets.mine: ") and expected in err
+    assert not out.exists() or not any(out.iterdir())
