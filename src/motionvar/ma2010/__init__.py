@@ -1,0 +1,26 @@
+"""Ma, Xia, Hodgins et al. 2010, "Modeling Style and Variation in Human Motion".
+
+- :mod:`.keyframes` — key-frame extraction (Eq. 1-4) and cycles.
+- :mod:`.correspondence` — standard skeleton, space warping (Eq. 5-6), time warping.
+- :mod:`.examples` — example clips: cycles -> aligned :class:`ClipSet` with style parameters.
+- :mod:`.representation` — clips as feature vectors (tangent space of mean rotations).
+- :mod:`.variation` — latent variation parameters (Eq. 7-9).
+- :mod:`.network` — parameter propagation network (Eq. 10, Fig. 5).
+- :mod:`.kriging` — variogram and universal Kriging (Sec. 6.1).
+- :mod:`.svi` — style-and-variation interpolation per joint group (Eq. 11-13), the model.
+- :mod:`.postprocess` — transitions (Eq. 14-15) and footskate cleanup (Sec. 6.3).
+- :mod:`.synthesis` — predicted clips -> real-time, stitched, root-solved motions.
+"""
+
+from .examples import build_clipset, cut, extract_cycles, normalized_strides, root_solver, support_strides
+from .kriging import UniversalKriging, Variogram, fit_variogram
+from .network import PropagationNetwork, choose_structure
+from .representation import ClipCodec, ClipSet
+from .svi import ClipPrediction, StyleVariationModel
+from .synthesis import RootSolver, sequence_motion
+
+__all__ = [
+    "ClipCodec", "ClipPrediction", "ClipSet", "PropagationNetwork", "RootSolver", "StyleVariationModel",
+    "UniversalKriging", "Variogram", "build_clipset", "choose_structure", "cut", "extract_cycles",
+    "fit_variogram", "normalized_strides", "root_solver", "sequence_motion", "support_strides",
+]

@@ -1,0 +1,119 @@
+"""Long sequences from every method of Ma et al. 2010, Sec. 7.4, and the measures that
+compare them (naturalness, and variation between sequences of one method).
+
+Every method outputs local rotations; the root of every sequence is then recovered by the
+same footskate cleanup (Sec. 6.3), so that the methods differ only in their poses.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..baselines.dbn import LauDBN
+from ..baselines.gplvm import GPLVM, helix_trajectory
+from ..baselines.kriging import StyleClipInterpolation
+from ..baselines.perlin import add_rotation_noise
+from ..core.motion import Motion
+from ..metrics.discontinuities import count_discontinuities, peak_acceleration
+from ..metrics.foot_skating import foot_skating
+from ..metrics.jerk import mean_jerk
+from ..metrics.pose_distance import nearest_pose_distance, pose_features, pose_set_distance
+from .representation import ClipSet, PoseCodec
+from .svi import StyleVariationModel
+from .synthesis import RootSolver, realtime_clips, sequence_motion, stitch
+
+
+def clips_for_duration(clips: ClipSet, seconds: float) -> int:
+    """Number of cycles whose mean duration covers ``seconds`` (one extra for trimming)."""
+    mean_cycle = float(np.mean(clips.key_times[:, -1] - clips.key_times[:, 0]))
+    return int(np.ceil(seconds / mean_cycle)) + 1
+
+
+def trim(motion: Motion, seconds: float) -> Motion:
+    """The first ``seconds`` of a motion."""
+    return motion.slice(0, min(motion.n_frames, int(round(seconds * motion.fps)) + 1))
+
+
+def ours_sequence(model: StyleVariationModel, style: np.ndarray, n_clips: int, solver: RootSolver, rng: np.random.Generator) -> Motion:
+    """Ours: n_clips cycles at one style, each with its own xi sampled from the network."""
+    pred, _ = model.synthesize_clips(np.tile(np.atleast_2d(style), (n_clips, 1)), rng=rng)
+    return sequence_motion(pred.rotations, pred.key_times, model.reference_keys_, solver, model.fps_, pred.root_height)
+
+
+def interpolation_sequence(interp: StyleClipInterpolation, style: np.ndarray, n_clips: int, solver: RootSolver, fps: float) -> Motion:
+    """RBF or plain Kriging: the same clip (one style) repeated n_clips times."""
+    pred = interp.predict(np.tile(np.atleast_2d(style), (n_clips, 1)))
+    return sequence_motion(pred.rotations, pred.key_times, interp.reference_keys_, solver, fps, pred.root_height)
+
+
+def perlin_sequence(
+    clips: ClipSet, n_clips: int, solver: RootSolver, rng: np.random.Generator, amplitude: float, frequency_hz: float
+) -> Motion:
+    """Perlin noise [Per95] on the rotations of the examples concatenated in random order."""
+    order = rng.integers(0, clips.n_clips, size=n_clips)
+    rt = realtime_clips(clips.rotations[order], clips.key_times[order], clips.reference_keys, clips.fps)
+    rot, _ = stitch(rt)
+    noisy = add_rotation_noise(rot, clips.fps, amplitude, frequency_hz, seed=int(rng.integers(2**31)))
+    return solver.motion(noisy, clips.fps)
+
+
+def example_pose_sequences(clips: ClipSet) -> list[np.ndarray]:
+    """The examples in real time, as rotation sequences (T_i, J, 4)."""
+    return [r for r, _ in realtime_clips(clips.rotations, clips.key_times, clips.reference_keys, clips.fps)]
+
+
+def gplvm_sequence(
+    gplvm: GPLVM, codec: PoseCodec, n_frames: int, n_turns: float, solver: RootSolver, fps: float, phase: float = 0.0, radius_scale: float = 1.0
+) -> Motion:
+    """GPLVM [Law03]: poses along a helix in its latent space (Sec. 7.4)."""
+    path = helix_trajectory(gplvm.latent_, n_frames, n_turns, phase, radius_scale)
+    return solver.motion(codec.decode(gplvm.predict(path)), fps)
+
+
+def dbn_sequence(dbn: LauDBN, codec: PoseCodec, n_frames: int, solver: RootSolver, fps: float, rng: np.random.Generator) -> Motion:
+    """DBN [LBJK09]: the transition network unrolled for n_frames frames."""
+    return solver.motion(codec.decode(dbn.sample(n_frames, rng)), fps)
+
+
+@dataclass(frozen=True)
+class NaturalnessReference:
+    """What the naturalness measures compare with: the training poses (pose features),
+    the foot joints and contact height for skating, and the acceleration threshold above
+    which a frame counts as a discontinuity."""
+
+    poses: np.ndarray
+    foot_joints: np.ndarray
+    contact_height: float
+    acceleration_threshold: float
+
+    @classmethod
+    def from_examples(cls, motions: Sequence[Motion], foot_joints: np.ndarray, contact_height: float, threshold_factor: float = 1.5) -> "NaturalnessReference":
+        """From the (root-solved) example motions: their poses, and ``threshold_factor``
+        times the largest joint acceleration seen in them."""
+        poses = np.concatenate([pose_features(m.positions()) for m in motions])
+        peak = max(float(peak_acceleration(m.positions(), m.fps).max()) for m in motions)
+        return cls(poses, np.asarray(foot_joints), contact_height, threshold_factor * peak)
+
+
+def naturalness(motion: Motion, ref: NaturalnessReference) -> dict[str, float]:
+    """Jerk (cm/s^3), foot skating (cm/s), mean distance to the nearest training pose (cm,
+    RMS per joint) and discontinuities per minute."""
+    pos = motion.positions()
+    minutes = motion.duration / 60.0
+    return {
+        "jerk_cm_s3": mean_jerk(pos, motion.fps),
+        "foot_skating_cm_s": foot_skating(pos[:, ref.foot_joints], motion.fps, ref.contact_height),
+        "pose_distance_cm": float(nearest_pose_distance(pose_features(pos), ref.poses).mean()),
+        "discontinuities_per_min": count_discontinuities(pos, motion.fps, ref.acceleration_threshold) / max(minutes, 1e-9),
+    }
+
+
+def variation_between(motions: Sequence[Motion]) -> float:
+    """Mean pairwise pose-set distance (cm) between sequences of one method; 0 when the
+    sequences are identical."""
+    feats = [pose_features(m.positions()) for m in motions]
+    pairs = [(i, j) for i in range(len(feats)) for j in range(i + 1, len(feats))]
+    return float(np.mean([pose_set_distance(feats[i], feats[j]) for i, j in pairs])) if pairs else 0.0

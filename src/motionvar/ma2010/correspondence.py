@@ -1,0 +1,133 @@
+"""Motion correspondence (Ma et al. 2010, Sec. 4 and 4.2): a standard skeleton, space
+warping (Eq. 5-6) and incremental time warping to a common duration [PSS02].
+
+Time warping here is piecewise linear between corresponding key frames: the key frames
+of every clip are mapped onto common reference key times, so the warp is monotonically
+increasing by construction. The inverse warp of a synthesized clip runs through its
+predicted key times (see :func:`retime`), so the progression through the synthesized
+clip is monotonic too, as [PSS02]'s incremental time warping guarantees.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import replace
+
+import numpy as np
+
+from ..core.motion import Motion
+from ..core.quaternions import qfix, qmul, qnormalize, qrot, qslerp, quat_about_axis
+from ..core.skeleton import Skeleton
+
+UP = np.array([0.0, 1.0, 0.0])
+
+
+def standard_skeleton(skeletons: Sequence[Skeleton]) -> Skeleton:
+    """The standard kinematic skeleton all examples are normalized to (Sec. 1, 3): the
+    mean bone offsets (and end sites) of the given skeletons, which share one topology."""
+    if not skeletons:
+        raise ValueError("standard_skeleton: no skeletons given")
+    first = skeletons[0]
+    for i, sk in enumerate(skeletons):
+        if not sk.same_topology(first):
+            raise ValueError(f"standard_skeleton: skeleton {i} has another topology than skeleton 0")
+    offsets = np.mean([sk.offsets for sk in skeletons], axis=0)
+    ends = {j: np.mean([sk.end_sites[j] for sk in skeletons], axis=0) for j in first.end_sites}
+    return replace(first, offsets=offsets, end_sites=ends)
+
+
+def movement_direction(motion: Motion, facing_axis: np.ndarray = np.array([0.0, 0.0, 1.0])) -> np.ndarray:
+    """dir(M) of Eq. 5: the horizontal root displacement from the first to the last frame,
+    or, for a clip that does not travel (< 1 cm), the root's facing in the first frame."""
+    d = motion.root_pos[-1] - motion.root_pos[0]
+    d = np.array([d[0], 0.0, d[2]])
+    if np.linalg.norm(d) < 1.0:
+        f = qrot(motion.rotations[0, 0], np.asarray(facing_axis, dtype=float))
+        d = np.array([f[0], 0.0, f[2]])
+    n = np.linalg.norm(d)
+    if n < 1e-9:
+        raise ValueError("movement_direction: the clip neither travels nor faces a horizontal direction")
+    return d / n
+
+
+def space_warp(motion: Motion, facing_axis: np.ndarray = np.array([0.0, 0.0, 1.0])) -> Motion:
+    """Eq. 5-6: rotate the clip about the vertical axis so that its movement direction is
+    the x axis (theta* in closed form: atan2 of the direction), and move its first frame's
+    root horizontally to the origin."""
+    d = movement_direction(motion, facing_axis)
+    theta = np.arctan2(d[2], d[0])  # R_y(theta) maps (cos t, 0, sin t) onto +x
+    q = quat_about_axis(UP, theta)
+    root = motion.root_pos - motion.root_pos[0] * np.array([1.0, 0.0, 1.0])
+    rotations = motion.rotations.copy()
+    rotations[:, 0] = qmul(q, rotations[:, 0])
+    return replace(motion, root_pos=qrot(q, root), rotations=rotations)
+
+
+def sample_rotations(rotations: np.ndarray, frames: np.ndarray) -> np.ndarray:
+    """Rotations (T, J, 4) sampled at fractional frame indices (U,) by slerp."""
+    T = rotations.shape[0]
+    frames = np.clip(np.asarray(frames, dtype=float), 0.0, T - 1.0)
+    if T == 1:
+        return np.repeat(rotations, len(frames), axis=0)
+    i0 = np.minimum(np.floor(frames).astype(np.int64), T - 2)
+    alpha = np.broadcast_to((frames - i0)[:, None], (len(frames), rotations.shape[1]))
+    return qslerp(rotations[i0], rotations[i0 + 1], alpha)
+
+
+def sample_linear(values: np.ndarray, frames: np.ndarray) -> np.ndarray:
+    """Any array (T, ...) sampled at fractional frame indices (U,) by linear interpolation."""
+    values = np.asarray(values, dtype=float)
+    frames = np.clip(np.asarray(frames, dtype=float), 0.0, values.shape[0] - 1.0)
+    i0 = np.minimum(np.floor(frames).astype(np.int64), max(values.shape[0] - 2, 0))
+    i1 = np.minimum(i0 + 1, values.shape[0] - 1)
+    a = (frames - i0).reshape((-1,) + (1,) * (values.ndim - 1))
+    return values[i0] * (1 - a) + values[i1] * a
+
+
+def reference_key_positions(key_frames: Sequence[np.ndarray], lengths: Sequence[int], n_frames: int) -> np.ndarray:
+    """Common key-frame positions (K,) on a timeline of ``n_frames`` frames: the mean of
+    every clip's key frames as a fraction of its length. Starts at 0, ends at n_frames-1."""
+    keys = np.array([np.asarray(k, dtype=float) / (n - 1) for k, n in zip(key_frames, lengths)])
+    if keys.ndim != 2:
+        raise ValueError("reference_key_positions: every clip needs the same number of key frames")
+    ref = keys.mean(axis=0) * (n_frames - 1)
+    ref[0], ref[-1] = 0.0, n_frames - 1.0
+    if np.any(np.diff(ref) <= 0):
+        raise ValueError(f"reference_key_positions: key frames out of order {ref.tolist()}")
+    return ref
+
+
+def time_warp(motion: Motion, key_frames: np.ndarray, reference: np.ndarray) -> Motion:
+    """Warp a clip onto the common timeline: its key frames land on ``reference`` (K,)
+    and the frames between them are spaced linearly (a monotonic warp). The result has
+    ``round(reference[-1]) + 1`` frames; its fps is kept (frames are then "normalized
+    time", and the clip's real key times travel separately)."""
+    key_frames = np.asarray(key_frames, dtype=float)
+    if len(key_frames) != len(reference) or np.any(np.diff(key_frames) <= 0):
+        raise ValueError(f"time_warp: key frames {key_frames.tolist()} must increase and match the reference")
+    n = int(round(reference[-1])) + 1
+    src = np.interp(np.arange(n, dtype=float), reference, key_frames)
+    rot = qfix(qnormalize(sample_rotations(motion.rotations, src)), axis=0)
+    return replace(motion, root_pos=sample_linear(motion.root_pos, src), rotations=rot, translations=None)
+
+
+def retime(
+    rotations: np.ndarray,
+    reference: np.ndarray,
+    key_times: np.ndarray,
+    fps: float,
+    extra: np.ndarray | None = None,
+) -> tuple[np.ndarray, np.ndarray | None]:
+    """Inverse time warp of a synthesized clip: from the normalized timeline (key frames
+    at ``reference``) to real time, where its key frames fall at ``key_times`` (seconds
+    from the clip's start). Key times are made strictly increasing first (monotonic
+    progression, [PSS02]).
+
+    Returns rotations (U, J, 4) at ``fps`` and ``extra`` (T, ...) resampled alike.
+    """
+    kt = np.asarray(key_times, dtype=float) - float(key_times[0])
+    kt = np.maximum.accumulate(np.maximum(kt, 0.0) + np.arange(len(kt)) * 1e-6)
+    n_out = int(np.floor(kt[-1] * fps + 1e-9)) + 1
+    src = np.interp(np.arange(n_out) / fps, kt, reference)
+    rot = qnormalize(sample_rotations(rotations, src))
+    return rot, None if extra is None else sample_linear(extra, src)

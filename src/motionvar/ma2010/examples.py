@@ -1,0 +1,126 @@
+"""Example clips for the model (Ma et al. 2010, Sec. 4): cut locomotion into cycles at
+the key frames, space- and time-warp them, normalize them to the standard skeleton and
+measure their style parameters (stride length per support phase, Sec. 7.2).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..core.joint_map import JointMap
+from ..core.motion import Motion
+from ..core.skeleton import Skeleton
+from ..metrics.stride import stride_lengths
+from .correspondence import movement_direction, reference_key_positions, space_warp, time_warp
+from .keyframes import Cycle, KeyframeSignal, find_extrema, keyframe_signal, segment_cycles
+from .representation import ClipSet, rest_hip_height
+from .synthesis import RootSolver, rest_foot_height
+
+
+@dataclass(frozen=True)
+class CycleExtraction:
+    """Key frames of one motion and the cycles cut at them."""
+
+    signal: KeyframeSignal
+    frames: np.ndarray
+    kinds: np.ndarray
+    cycles: list[Cycle]
+
+
+def lower_upper(joint_map: JointMap, skeleton: Skeleton) -> tuple[np.ndarray, np.ndarray]:
+    """Lower body = the legs group, upper body = every other joint (Sec. 4.1)."""
+    groups = joint_map.group_indices(skeleton)
+    lower = groups["legs"]
+    upper = np.setdiff1d(np.arange(skeleton.n_joints), lower)
+    return lower, upper
+
+
+def extract_cycles(
+    motion: Motion,
+    joint_map: JointMap,
+    min_prominence: float = 0.1,
+    min_separation_s: float = 0.1,
+    n_components: int | None = None,
+) -> CycleExtraction:
+    """Key frames (Eq. 1-4) of one motion and its gait cycles (:func:`segment_cycles`)."""
+    sk = motion.skeleton
+    pos = motion.positions()
+    lower, upper = lower_upper(joint_map, sk)
+    sig = keyframe_signal(pos, lower, upper, n_components)
+    frames, kinds = find_extrema(sig.signal, min_prominence, int(round(min_separation_s * motion.fps)))
+    la, ra = joint_map.index(sk, "left_ankle"), joint_map.index(sk, "right_ankle")
+    cycles = segment_cycles(frames, kinds, pos[:, la], pos[:, ra], movement_direction(motion))
+    return CycleExtraction(sig, frames, kinds, cycles)
+
+
+def root_solver(skeleton: Skeleton, joint_map: JointMap, flight_threshold: float | None = None) -> RootSolver:
+    """Footskate cleanup settings on ``skeleton``: the ankles are compared, planted at
+    their rest height above the sole."""
+    la, ra = joint_map.index(skeleton, "left_ankle"), joint_map.index(skeleton, "right_ankle")
+    lt = joint_map.index(skeleton, "left_toe")
+    return RootSolver(skeleton, la, ra, rest_foot_height(skeleton, la, lt), flight_threshold)
+
+
+def support_strides(motion: Motion, key_frames: np.ndarray, solver: RootSolver) -> np.ndarray:
+    """Stride length (cm) of the left and the right support phase of one cycle: the
+    horizontal displacement of the swing ankle between key frames 0-2 and 2-4."""
+    pos = motion.positions()
+    feet = pos[:, [solver.left_foot, solver.right_foot]]
+    return stride_lengths(feet, np.asarray(key_frames)[[0, 2, 4]])
+
+
+def normalized_strides(rotations: np.ndarray, key_frames: np.ndarray, solver: RootSolver, fps: float) -> np.ndarray:
+    """Strides of a cycle's rotations on the solver's (standard) skeleton, with the root
+    recovered by footskate cleanup (Sec. 1: normalizing to one skeleton "unifies the style
+    parameter spaces")."""
+    return support_strides(solver.motion(rotations, fps), key_frames, solver)
+
+
+def build_clipset(
+    cycles: Sequence[Motion],
+    key_frames: Sequence[np.ndarray],
+    skeleton: Skeleton,
+    joint_map: JointMap,
+    n_frames: int,
+    style: np.ndarray | None = None,
+    clip_ids: Sequence[str] | None = None,
+) -> ClipSet:
+    """Aligned examples on the standard ``skeleton`` (Sec. 4.2).
+
+    Every cycle is space-warped (Eq. 5-6) and time-warped to ``n_frames`` frames with its
+    key frames on the common reference positions. Its rotations are used as they are on
+    the standard skeleton; its root height is scaled by the ratio of rest hip heights.
+    Without ``style`` the style parameters are the cycle's two support-phase strides
+    measured on the standard skeleton (:func:`normalized_strides`).
+    """
+    if len(cycles) != len(key_frames) or not cycles:
+        raise ValueError(f"build_clipset: {len(cycles)} cycles and {len(key_frames)} key-frame sets")
+    ref = reference_key_positions(key_frames, [m.n_frames for m in cycles], n_frames)
+    foot_joints = joint_map.indices(skeleton, ["left_ankle", "left_toe", "right_ankle", "right_toe"])
+    std_hip = rest_hip_height(skeleton, foot_joints)
+    rots, heights, keys = [], [], []
+    for m, k in zip(cycles, key_frames):  # loop over clips
+        w = time_warp(space_warp(m), k, ref)
+        scale = std_hip / rest_hip_height(m.skeleton, foot_joints)
+        rots.append(w.rotations)
+        heights.append(w.root_pos[:, 1] * scale)
+        keys.append(np.asarray(k, dtype=float) / m.fps)
+    rotations = np.stack(rots)
+    fps = float(cycles[0].fps)
+    if style is None:
+        solver = root_solver(skeleton, joint_map)
+        style = np.stack([normalized_strides(space_warp(m).rotations, k, solver, fps) for m, k in zip(cycles, key_frames)])
+    ids = list(clip_ids) if clip_ids is not None else []
+    return ClipSet(
+        rotations=rotations, key_times=np.stack(keys), root_height=np.stack(heights), style=np.asarray(style, dtype=float),
+        reference_keys=ref, skeleton=skeleton, fps=fps, clip_ids=ids,
+    )
+
+
+def cut(motion: Motion, cycle: Cycle) -> Motion:
+    """The frames of one cycle as a motion."""
+    return motion.slice(cycle.start, cycle.stop + 1)
+

@@ -1,0 +1,48 @@
+"""A tiny procedural walker for the Ma 2010 unit tests (not the project's generator):
+sinusoidal hip swing (amplitude sets the stride), knee flexion in swing, arms hanging and
+swinging (amplitude is the per-subject "variation"), root from footskate cleanup."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from motionvar.core import Motion, cmu_joint_map, cmu_skeleton
+from motionvar.core.quaternions import qmul, quat_about_axis
+from motionvar.ma2010.postprocess import reconstruct_root
+from motionvar.ma2010.synthesis import rest_foot_height
+
+
+def toy_walk(
+    hip_amp: float = 0.35,
+    arm_amp: float = 0.3,
+    period_s: float = 1.1,
+    n_cycles: float = 4.0,
+    height: float = 1.0,
+    fps: float = 120.0,
+    knee_amp: float = 1.2,
+    twist: float = 0.05,
+) -> Motion:
+    """A straight walk along +z (the rest pose faces +z)."""
+    sk = cmu_skeleton().scaled(height)
+    n = int(round(n_cycles * period_s * fps)) + 1
+    phi = 2 * np.pi * np.arange(n) / (period_s * fps)
+    rot = np.zeros((n, sk.n_joints, 4))
+    rot[..., 0] = 1.0
+    x = [1.0, 0.0, 0.0]
+    ix = sk.index
+    swing_l, swing_r = np.maximum(np.cos(phi), 0), np.maximum(-np.cos(phi), 0)
+    rot[:, ix("LeftUpLeg")] = quat_about_axis(x, -hip_amp * np.sin(phi) - 0.5 * knee_amp * swing_l)
+    rot[:, ix("RightUpLeg")] = quat_about_axis(x, hip_amp * np.sin(phi) - 0.5 * knee_amp * swing_r)
+    rot[:, ix("LeftLeg")] = quat_about_axis(x, knee_amp * swing_l)
+    rot[:, ix("RightLeg")] = quat_about_axis(x, knee_amp * swing_r)
+    down_l = quat_about_axis([0, 0, 1], np.full(n, -1.3))
+    down_r = quat_about_axis([0, 0, 1], np.full(n, 1.3))
+    rot[:, ix("LeftArm")] = qmul(quat_about_axis(x, arm_amp * np.sin(phi)), down_l)
+    rot[:, ix("RightArm")] = qmul(quat_about_axis(x, -arm_amp * np.sin(phi)), down_r)
+    rot[:, ix("LeftForeArm")] = quat_about_axis([0, 1, 0], np.full(n, 0.3 + 0.5 * arm_amp))
+    rot[:, ix("RightForeArm")] = quat_about_axis([0, 1, 0], np.full(n, -0.3 - 0.5 * arm_amp))
+    rot[:, ix("Spine")] = quat_about_axis([0, 1, 0], twist * np.sin(phi))
+    jm = cmu_joint_map()
+    la, ra, lt = (jm.index(sk, s) for s in ("left_ankle", "right_ankle", "left_toe"))
+    root = reconstruct_root(rot, sk, la, ra, rest_foot_height(sk, la, lt))
+    return Motion(skeleton=sk, root_pos=root, rotations=rot, fps=fps)

@@ -1,0 +1,292 @@
+"""Ma et al. 2010: key frames, correspondence, variation, network, Kriging, SVI, post-processing."""
+
+import numpy as np
+import pytest
+from ma2010_toywalk import toy_walk
+
+from motionvar.core import Motion, cmu_joint_map
+from motionvar.core.quaternions import qdistance_sinusoidal, qmul, qnormalize, quat_about_axis
+from motionvar.ma2010 import (
+    PropagationNetwork, StyleVariationModel, UniversalKriging, build_clipset, choose_structure, cut, extract_cycles,
+    fit_variogram, normalized_strides, root_solver,
+)
+from motionvar.ma2010.correspondence import (
+    reference_key_positions, retime, space_warp, standard_skeleton, time_warp,
+)
+from motionvar.ma2010.keyframes import find_extrema, keyframe_signal
+from motionvar.ma2010.network import LOWER_FIRST, UPPER_FIRST
+from motionvar.ma2010.postprocess import blend_weights, landing_frame, reconstruct_root, transition
+from motionvar.ma2010.variation import determinative_joints, joint_importance, joint_variation
+
+JM = cmu_joint_map()
+
+
+@pytest.fixture(scope="module")
+def toy_clips():
+    """Cycles of 8 toy walkers with different stride (hip amplitude) and arm swing."""
+    rng = np.random.default_rng(0)
+    cycles, keys, ids = [], [], []
+    for s in range(8):
+        m = toy_walk(hip_amp=rng.uniform(0.28, 0.42), arm_amp=rng.uniform(0.1, 0.5), period_s=rng.uniform(1.0, 1.2),
+                     height=rng.uniform(0.92, 1.08), twist=rng.uniform(0, 0.1), n_cycles=3)
+        for k, c in enumerate(extract_cycles(m, JM).cycles):
+            cycles.append(cut(m, c))
+            keys.append(c.key_frames)
+            ids.append(f"s{s}_c{k}")
+    sk = standard_skeleton([c.skeleton for c in cycles])
+    return build_clipset(cycles, keys, sk, JM, n_frames=48, clip_ids=ids)
+
+
+# --- key frames (Eq. 1-4) ---------------------------------------------------------------
+
+def test_keyframes_of_a_walk_are_the_double_supports_and_passings():
+    m = toy_walk(n_cycles=4)
+    ex = extract_cycles(m, JM)
+    assert ex.signal.part == "lower" and ex.signal.d_lower > ex.signal.d_upper  # walking: legs move most
+    assert np.all(np.diff(ex.kinds) != 0)  # alternating maxima and minima
+    period = 1.1 * m.fps
+    maxima = ex.frames[ex.kinds == 1]
+    assert np.allclose(np.diff(maxima), period / 2, atol=2)  # two double supports per cycle
+    la, ra = JM.index(m.skeleton, "left_ankle"), JM.index(m.skeleton, "right_ankle")
+    pos = m.positions()
+    spread = np.abs(pos[:, la, 2] - pos[:, ra, 2])
+    assert np.all(spread[maxima] > 0.9 * spread.max())  # maxima: feet farthest apart
+    assert len(ex.cycles) >= 2
+    for c in ex.cycles:
+        assert pos[c.start, la, 2] > pos[c.start, ra, 2]  # starts with the left foot ahead
+        assert len(c.key_frames) == 5 and c.key_frames[0] == 0
+
+
+def test_keyframe_signal_picks_the_upper_body_when_it_moves_more():
+    rng = np.random.default_rng(1)
+    pos = np.zeros((100, 4, 3))
+    pos[:, 1] = [0, -1, 0]
+    pos[:, 2] = [0, -1, 0] + 0.01 * rng.normal(size=(100, 3))  # lower body nearly still
+    pos[:, 3] = np.stack([np.sin(np.arange(100) / 5), np.ones(100), np.zeros(100)], 1)  # waving arm
+    sig = keyframe_signal(pos, np.array([1, 2]), np.array([3]))
+    assert sig.part == "upper"
+    frames, kinds = find_extrema(sig.signal, 0.2)
+    assert len(frames) >= 4 and np.all(np.diff(kinds) != 0)
+
+
+def test_keyframe_signal_rejects_bad_shapes():
+    with pytest.raises(ValueError, match="positions must be"):
+        keyframe_signal(np.zeros((2, 3, 3)), np.array([0]), np.array([1]))
+
+
+# --- correspondence (Eq. 5-6, time warping) ----------------------------------------------
+
+def test_space_warp_turns_the_walk_onto_x_and_starts_at_origin():
+    m = toy_walk(n_cycles=2)
+    rot = quat_about_axis([0, 1, 0], 0.7)
+    turned = Motion(m.skeleton, m.root_pos @ np.array([[np.cos(.7), 0, -np.sin(.7)], [0, 1, 0], [np.sin(.7), 0, np.cos(.7)]]) + [50, 0, -20],
+                    m.rotations.copy(), m.fps)
+    turned.rotations[:, 0] = qmul(rot, turned.rotations[:, 0])
+    w = space_warp(turned)
+    d = w.root_pos[-1] - w.root_pos[0]
+    assert abs(d[2]) < 1e-6 * abs(d[0]) + 1e-9 and d[0] > 0
+    assert np.allclose(w.root_pos[0, [0, 2]], 0)
+    # body geometry is preserved: joint distances to the root are unchanged
+    a, b = turned.positions(), w.positions()
+    assert np.allclose(np.linalg.norm(a - a[:, :1], axis=-1), np.linalg.norm(b - b[:, :1], axis=-1))
+
+
+def test_time_warp_maps_key_frames_to_reference_and_is_monotonic():
+    m = toy_walk(n_cycles=1.2)
+    m.root_pos[:, 0] = np.arange(m.n_frames)  # the warp's source frame, to check monotonicity
+    keys = np.array([0, 30, 70, 100, 140])
+    ref = reference_key_positions([keys], [m.n_frames], 60)
+    w = time_warp(m.slice(0, 141), keys, ref)
+    assert w.n_frames == 60
+    src_root = m.root_pos[keys]
+    assert np.allclose(w.root_pos[np.round(ref).astype(int)][[0, -1]], src_root[[0, -1]])
+    assert np.all(np.diff(w.root_pos[:, 0]) > 0)  # monotonic warp
+    assert np.allclose(w.root_pos[np.round(ref).astype(int), 0], keys, atol=3)
+    rot, extra = retime(w.rotations, ref, keys / m.fps, m.fps, w.root_pos)
+    assert len(rot) == 141 and np.allclose(extra[[0, -1]], src_root[[0, -1]], atol=1e-6)
+
+
+def test_standard_skeleton_is_the_mean_and_checks_topology():
+    a, b = toy_walk(height=0.9, n_cycles=0.2).skeleton, toy_walk(height=1.1, n_cycles=0.2).skeleton
+    assert np.allclose(standard_skeleton([a, b]).offsets, (a.offsets + b.offsets) / 2)
+    with pytest.raises(ValueError, match="no skeletons"):
+        standard_skeleton([])
+
+
+# --- latent variation (Eq. 7-9) ------------------------------------------------------------
+
+def test_joint_variation_sums_sinusoidal_distances():
+    T, step = 11, 0.1
+    rot = np.zeros((1, T, 3, 4))
+    rot[..., 0] = 1
+    rot[0, :, 1] = quat_about_axis([0, 0, 1], step * np.arange(T))
+    delta = joint_variation(rot)
+    assert delta[0, 0] == pytest.approx(0)
+    assert delta[0, 1] == pytest.approx((T - 1) * np.sin(step / 2))  # ||.||_s = sin(||log||), log = half angle
+    eta = joint_importance(np.array([[0.0, 1.0, 5.0], [0.0, 3.0, 5.0]]))
+    assert determinative_joints(eta, {"a": np.array([0, 1]), "b": np.array([2])}) == {"a": 1, "b": 2}
+
+
+# --- parameter propagation network (Eq. 10) -------------------------------------------------
+
+def test_network_recovers_linear_gaussian_weights_and_samples():
+    rng = np.random.default_rng(2)
+    n = 4000
+    c = rng.uniform(100, 150, size=(n, 2))
+    legs = 0.02 * c[:, 0] - 0.01 * c[:, 1] + rng.normal(0.5, 0.1, n)
+    upper = 0.5 * legs + rng.normal(0.1, 0.05, n)
+    arms = -1.0 * upper + rng.normal(0.3, 0.2, n)
+    xi = {"legs": legs, "upper_body": upper, "left_arm": arms, "right_arm": arms + rng.normal(0, 0.01, n)}
+    net = PropagationNetwork(LOWER_FIRST).fit(c, xi)
+    assert np.allclose(net.nodes_["legs"].weights, [0.02, -0.01], atol=2e-3)
+    assert net.nodes_["legs"].mu == pytest.approx(0.5, abs=0.1)
+    assert net.nodes_["upper_body"].sigma2 == pytest.approx(0.05**2, rel=0.1)
+    s = net.sample(np.tile([120.0, 120.0], (3000, 1)), rng=rng)
+    assert s["legs"].mean() == pytest.approx(0.02 * 120 - 0.01 * 120 + 0.5, abs=0.01)
+    assert s["legs"].std() == pytest.approx(0.1, rel=0.1)
+    fixed = net.sample([120.0, 120.0], rng=rng, fixed={"upper_body": 2.0})
+    assert fixed["upper_body"][0] == 2.0
+    mean = net.sample([120.0, 120.0], noise=False)
+    assert mean["left_arm"][0] == pytest.approx(net.nodes_["left_arm"].weights[0] * mean["upper_body"][0] + net.nodes_["left_arm"].mu)
+    with pytest.raises(ValueError, match="unknown groups"):
+        net.sample([120.0, 120.0], rng=rng, fixed={"tail": 1.0})
+
+
+def test_network_structures_follow_fig5():
+    assert choose_structure(2.0, 1.0) == LOWER_FIRST and choose_structure(1.0, 2.0) == UPPER_FIRST
+    with pytest.raises(ValueError, match="not defined before"):
+        PropagationNetwork({"upper_body": ("legs",), "legs": ("c",)})
+
+
+# --- universal Kriging (Sec. 6.1) -------------------------------------------------------------
+
+def test_kriging_interpolates_examples_and_weights_sum_to_one():
+    rng = np.random.default_rng(3)
+    x = rng.uniform(0, 10, size=(30, 2))
+    y = np.stack([np.sin(x[:, 0]) + x[:, 1], np.cos(x[:, 1]) * x[:, 0]], 1)
+    for model in ("linear", "power", "exponential", "gaussian", "spherical"):
+        k = UniversalKriging(model).fit(x, y)
+        assert np.allclose(k.predict(x), y, atol=1e-6), model
+        lam, _ = k.weights(rng.uniform(0, 10, size=(5, 2)))
+        assert np.allclose(lam.sum(axis=1), 1.0)
+    assert np.all(k.kriging_variance(x) < 1e-6)
+
+
+def test_kriging_reproduces_a_hyperplane_and_handles_duplicates():
+    rng = np.random.default_rng(4)
+    x = rng.uniform(0, 1, size=(12, 3))
+    x[5] = x[4]  # two examples at the same parameters
+    y = 2.0 + x @ np.array([[1.0], [-2.0], [0.5]])
+    k = UniversalKriging().fit(x, y)
+    q = rng.uniform(0, 1, size=(4, 3))
+    assert np.allclose(k.predict(q), 2.0 + q @ np.array([[1.0], [-2.0], [0.5]]), atol=1e-8)
+
+
+def test_variogram_fit_recovers_a_linear_variogram():
+    rng = np.random.default_rng(5)
+    x = np.sort(rng.uniform(0, 100, 400))[:, None]
+    r = np.cumsum(rng.normal(0, 1, (400, 300)) * np.sqrt(np.diff(x[:, 0], prepend=0))[:, None], axis=0)  # Brownian: gamma = h/2
+    v = fit_variogram(x, r - r.mean(axis=0), "linear", n_bins=10)
+    assert v.params[0] == pytest.approx(0.5, rel=0.2) and v.nugget < 2.0
+    with pytest.raises(ValueError, match="unknown variogram model"):
+        fit_variogram(x, r, "cubic")
+
+
+def test_kriging_rejects_bad_input():
+    with pytest.raises(ValueError, match="need x"):
+        UniversalKriging().fit(np.zeros((3, 1)), np.zeros((4, 2)))
+    with pytest.raises(ValueError, match="finite"):
+        UniversalKriging().fit(np.array([[0.0], [np.nan]]), np.zeros((2, 2)))
+
+
+# --- post-processing (Sec. 6.3) ------------------------------------------------------------------
+
+def test_blend_weights_eq15():
+    rho = blend_weights(5)
+    assert rho[0] == 1 and rho[-1] == 0 and np.all(np.diff(rho) <= 0)
+
+
+def test_transition_is_continuous_and_keeps_the_tail_of_m2():
+    m = toy_walk(n_cycles=1.5)
+    first, second = m.rotations[:80], m.rotations[100:]
+    rot, extra = transition(first, second, m.root_pos[:80, 1], m.root_pos[100:, 1], align_heading=False)
+    t = landing_frame(first[-1], second)
+    assert len(rot) == 79 + len(second)
+    assert np.allclose(qdistance_sinusoidal(rot[79], first[-1]), 0, atol=1e-9)  # q_1 = p^1_T
+    assert np.allclose(rot[79 + t :], second[t:])  # after the landing frame M2 is unchanged
+    assert np.allclose(extra[79], m.root_pos[79, 1]) and np.allclose(extra[79 + t :], m.root_pos[100 + t :, 1])
+    steps = qdistance_sinusoidal(rot[1:], rot[:-1]).sum(-1)
+    assert steps.max() < 3 * qdistance_sinusoidal(m.rotations[1:], m.rotations[:-1]).sum(-1).max()
+
+
+def test_landing_frame_is_the_first_local_maximum():
+    T = 40
+    rot = np.zeros((T, 2, 4))
+    rot[..., 0] = 1
+    angle = np.concatenate([np.linspace(0, 1, 15), np.linspace(1, 0.2, 11)[1:], np.linspace(0.2, 2, 15)])
+    rot[:, 1] = quat_about_axis([1, 0, 0], angle)
+    assert landing_frame(rot[0], rot) == 15
+
+
+def test_footskate_cleanup_plants_the_lower_foot():
+    m = toy_walk(n_cycles=2)
+    sk = m.skeleton
+    la, ra = JM.index(sk, "left_ankle"), JM.index(sk, "right_ankle")
+    pos = m.positions()
+    lower = np.argmin(pos[:, [la, ra], 1], axis=1)
+    feet = pos[:, [la, ra]]
+    same = lower[1:] == lower[:-1]
+    slide = np.linalg.norm(feet[1:, :, [0, 2]][np.arange(len(same)), lower[1:]] - feet[:-1, :, [0, 2]][np.arange(len(same)), lower[1:]], axis=-1)
+    assert slide[same].max() < 1e-6
+    assert np.allclose(feet[np.arange(len(feet)), lower, 1], feet[0, lower[0], 1])
+
+
+def test_flight_phases_follow_the_predicted_root_height():
+    m = toy_walk(n_cycles=1)
+    la, ra = JM.index(m.skeleton, "left_ankle"), JM.index(m.skeleton, "right_ankle")
+    high = np.full(m.n_frames, 500.0)  # predicted curve far above the ground: every frame is in flight
+    high[:3] = m.root_pos[:3, 1]
+    root = reconstruct_root(m.rotations, m.skeleton, la, ra, 3.0, root_height=high, flight_threshold=5.0)
+    assert np.allclose(root[5:, 1], 500.0)
+    v = np.diff(root[5:, [0, 2]], axis=0)
+    assert np.allclose(v, v[0])  # constant horizontal speed in flight
+
+
+# --- the whole model (Sec. 5-6) ---------------------------------------------------------------------
+
+def test_clipset_style_is_the_stride_on_the_standard_skeleton(toy_clips):
+    assert toy_clips.style.shape == (toy_clips.n_clips, 2)
+    assert np.all((toy_clips.style > 60) & (toy_clips.style < 200))
+    assert toy_clips.rotations.shape[1] == 48 and np.all(np.diff(toy_clips.key_times, axis=1) > 0)
+
+
+def test_model_predicts_held_out_strides_and_varies_at_fixed_style(toy_clips):
+    groups = JM.group_indices(toy_clips.skeleton)
+    solver = root_solver(toy_clips.skeleton, JM)
+    rng = np.random.default_rng(6)
+    errors = []
+    for i in (0, 7, 13):
+        model = StyleVariationModel(groups).fit(toy_clips.subset(np.arange(toy_clips.n_clips) != i), d_lower=1, d_upper=0)
+        pred, _ = model.synthesize_clips(toy_clips.style[i], rng=rng)
+        rot, _ = retime(pred.rotations[0], model.reference_keys_, pred.key_times[0], toy_clips.fps)
+        kf = np.minimum(np.round((pred.key_times[0] - pred.key_times[0, 0]) * toy_clips.fps).astype(int), len(rot) - 1)
+        errors.append(normalized_strides(rot, kf, solver, toy_clips.fps) - toy_clips.style[i])
+    assert np.abs(errors).max() < 3.0  # cm
+    model = StyleVariationModel(groups, structure="lower_first").fit(toy_clips)
+    c = np.tile(toy_clips.style.mean(0), (5, 1))
+    pred, xi = model.synthesize_clips(c, rng=rng)
+    spread = pred.rotations[:, :, groups["left_arm"]].std(axis=0).mean()
+    assert spread > 1e-3 and np.ptp(xi["left_arm"]) > 0
+    again, _ = model.synthesize_clips(c, fixed={g: v for g, v in xi.items()}, noise=False)
+    assert np.allclose(again.rotations, pred.rotations)  # xi set by hand reproduces the clips
+    assert np.allclose(np.linalg.norm(pred.rotations, axis=-1), 1.0)
+
+
+def test_model_rejects_bad_groups_and_structure(toy_clips):
+    groups = JM.group_indices(toy_clips.skeleton)
+    with pytest.raises(ValueError, match="missing"):
+        StyleVariationModel({k: v for k, v in groups.items() if k != "legs"}).fit(toy_clips, 1, 0)
+    with pytest.raises(ValueError, match="needs d_lower"):
+        StyleVariationModel(groups).fit(toy_clips)
+    with pytest.raises(ValueError, match="unknown structure"):
+        StyleVariationModel(groups, structure="sideways").fit(toy_clips)
