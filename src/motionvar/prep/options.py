@@ -31,6 +31,8 @@ class PrepOptions:
     Reach segmentation (pick/place):
         hand_smooth_s: the hand speed is box-filtered over this span before its minimum
             at the target is taken.
+        hand_stop_fraction: the hands have stopped at the first frame of the speed valley
+            within this fraction of the outward speed peak above the valley's minimum.
     Alignment (Ma 2010 Sec. 4.2, space warping):
         heading: "hips" (the facing direction from the left-hip -> right-hip vector) or
             "movement" (Ma's overall movement direction, first to last root position).
@@ -50,6 +52,7 @@ class PrepOptions:
     min_contact_s: float = 0.05
     min_gap_s: float = 0.05
     hand_smooth_s: float = 0.1
+    hand_stop_fraction: float = 0.02
     heading: str = "hips"
     heading_frames: int = 1
     use_ground_truth_segments: bool = False
@@ -65,6 +68,8 @@ class PrepOptions:
         for name in non_negative:
             if not getattr(self, name) >= 0:
                 raise ValueError(f"PrepOptions.{name} must be >= 0; got {getattr(self, name)!r}")
+        if not 0 <= self.hand_stop_fraction < 1:
+            raise ValueError(f"PrepOptions.hand_stop_fraction must be in [0, 1); got {self.hand_stop_fraction!r}")
         if not 0 <= self.floor_percentile <= 50:
             raise ValueError(f"PrepOptions.floor_percentile must be in [0, 50]; got {self.floor_percentile!r}")
         if self.heading not in HEADINGS:

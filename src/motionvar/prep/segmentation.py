@@ -83,26 +83,33 @@ def hand_speed(motion: Motion, joint_map: JointMap, positions: np.ndarray, optio
     return speed
 
 
-def reach_boundary(speed: np.ndarray) -> int:
-    """Frame where the hands stop at the target: the hand-speed minimum between the peak
-    of the outward movement and the peak of the return movement.
+def reach_boundary(speed: np.ndarray, stop_fraction: float = 0.02) -> int:
+    """Frame where the hands stop at the target, from the (T,) hand speed.
 
-    The outward peak is the fastest frame of the first half of the movement, the return
-    peak the fastest of the second half, where "half" splits the clip at the median of
-    the cumulative hand travel.
+    The reach is the first major hand movement: it starts where the speed first exceeds
+    a quarter of the clip's peak speed, and its peak p1 is the fastest frame before the
+    speed falls under half of it. The valley after p1 ends where the speed rises again
+    by a tenth of the peak above its running minimum (the next movement: a release or
+    the retrieve). The hands have stopped at the first valley frame within
+    ``stop_fraction`` of the peak's height above the valley's minimum: the minimum
+    itself when they turn back at once, the start of the rest when they hold.
     """
-    travel = np.cumsum(speed)
-    mid = int(np.searchsorted(travel, travel[-1] / 2.0))
-    p1 = int(np.argmax(speed[: mid + 1]))
-    p2 = mid + int(np.argmax(speed[mid:]))
-    return p1 + int(np.argmin(speed[p1 : p2 + 1]))
+    s0 = int(np.argmax(speed >= 0.25 * speed.max()))
+    run_max = np.maximum.accumulate(speed[s0:])
+    t1 = s0 + int(np.argmax(speed[s0:] < 0.5 * run_max)) if np.any(speed[s0:] < 0.5 * run_max) else len(speed) - 1
+    p1 = s0 + int(np.argmax(speed[s0 : t1 + 1]))
+    rising = speed[t1:] > np.minimum.accumulate(speed[t1:]) + 0.1 * speed[p1]
+    t2 = t1 + int(np.argmax(rising)) if rising.any() else len(speed)
+    valley = speed[p1:t2]
+    low = valley.min()
+    return p1 + int(np.argmax(valley <= low + stop_fraction * (speed[p1] - low)))
 
 
 def reach_segments(
     motion: Motion, joint_map: JointMap, positions: np.ndarray, options: PrepOptions, prefix: str
 ) -> list[Segment]:
     """``{prefix}_reach`` [0, b) and ``{prefix}_retrieve`` [b, T) at the hand-speed minimum b."""
-    b = reach_boundary(hand_speed(motion, joint_map, positions, options))
+    b = reach_boundary(hand_speed(motion, joint_map, positions, options), options.hand_stop_fraction)
     segs = [Segment(f"{prefix}_reach", 0, b), Segment(f"{prefix}_retrieve", b, motion.n_frames)]
     return [s for s in segs if s.stop > s.start]
 

@@ -67,13 +67,16 @@ def dtw_warp(source: Motion | np.ndarray, reference: Motion | np.ndarray, window
         reference: the canonical clip (Du: the median-length clip of the primitive), same kind.
         window: optional Sakoe-Chiba band in frames (at least the length difference + 1).
     Returns:
-        warp[j] = mean source frame matched to reference frame j; warp[0] = 0,
-        warp[-1] = T_source - 1, non-decreasing.
+        warp[j] = mean source frame matched to reference frame j, except that the ends
+        are pinned (warp[0] = 0, warp[-1] = T_source - 1: the clips start and end
+        together); non-decreasing.
     """
     path = dtw_path(source, reference, window)
     n_ref = int(path[:, 1].max()) + 1
     counts = np.bincount(path[:, 1], minlength=n_ref)
-    return np.bincount(path[:, 1], weights=path[:, 0].astype(float), minlength=n_ref) / counts
+    warp = np.bincount(path[:, 1], weights=path[:, 0].astype(float), minlength=n_ref) / counts
+    warp[0], warp[-1] = 0.0, float(path[-1, 0])
+    return warp
 
 
 def check_warp(warp: np.ndarray, n_source: int) -> np.ndarray:
