@@ -1,0 +1,55 @@
+"""Losses and the style measure of Du 2022 Sec. 5.3-5.4.3.
+
+- :func:`vae_loss`: Eq. 5.6 = content (Eq. 5.7, L samples per input) + KL (Eq. 5.8).
+- :func:`gram`: Eq. 5.9, the Gram matrix of a feature map over its time axis. The thesis
+  says style frames "will be averaged by the calculation of gram matrix", so the sum over
+  frames is divided by their number (examples of any length compare).
+- :func:`gram_distance`: the distance of Eq. 5.10 and 5.12. The thesis writes a norm and
+  describes it as "the mean squared distance"; we take the mean over the 256 x 256 entries
+  of the squared difference.
+- :func:`style_loss`: Eq. 5.10, alpha times the Gram distance of decoded samples to the
+  style example's Gram matrix.
+"""
+
+from __future__ import annotations
+
+import torch
+
+
+def content_loss(recon: torch.Tensor, y: torch.Tensor) -> torch.Tensor:
+    """Eq. 5.7: 1 / (2 N L) sum_i sum_l ||decoder(z_il) - y_i||^2; recon (L, N, D), y (N, D)."""
+    L, N = recon.shape[0], recon.shape[1]
+    return ((recon - y) ** 2).sum() / (2.0 * N * L)
+
+
+def kl_loss(mu: torch.Tensor, logvar: torch.Tensor) -> torch.Tensor:
+    """Eq. 5.8, averaged over the N inputs: 1/2 (mu'mu + tr(Sigma) - k - log det Sigma)."""
+    return 0.5 * (mu.pow(2) + logvar.exp() - 1.0 - logvar).sum(dim=-1).mean()
+
+
+def vae_loss(recon: torch.Tensor, y: torch.Tensor, mu: torch.Tensor, logvar: torch.Tensor) -> tuple[torch.Tensor, torch.Tensor]:
+    """Eq. 5.6 as (content, KL); the loss is their sum."""
+    return content_loss(recon, y), kl_loss(mu, logvar)
+
+
+def gram(features: torch.Tensor) -> torch.Tensor:
+    """Eq. 5.9: (..., K, T) feature maps -> (..., K, K) Gram matrices, sum_i y_i y_i^T / T."""
+    return features @ features.transpose(-1, -2) / features.shape[-1]
+
+
+def gram_distance(g: torch.Tensor, g_ref: torch.Tensor) -> torch.Tensor:
+    """(...) mean squared difference of Gram matrices (..., K, K) to ``g_ref`` (K, K)."""
+    return ((g - g_ref) ** 2).mean(dim=(-2, -1))
+
+
+def style_loss(recon_maps: torch.Tensor, style_gram: torch.Tensor, alpha: float) -> torch.Tensor:
+    """Eq. 5.10: alpha ||Gram(decoder(z)) - Gram(y_s)||, averaged over samples;
+    recon_maps (..., K, T) decoded feature maps, style_gram (K, K)."""
+    return alpha * gram_distance(gram(recon_maps), style_gram).mean()
+
+
+def style_distance(sample_maps: torch.Tensor, style_maps: torch.Tensor) -> torch.Tensor:
+    """Eq. 5.12: D(m, s) = 1/N sum_i ||Gram(encoder(x_i)) - Gram(encoder(s))||, with
+    sample_maps (N, K, T) the encoded samples x_i of model m and style_maps (K, T') the
+    encoded style example s."""
+    return gram_distance(gram(sample_maps), gram(style_maps)).mean()

@@ -1,0 +1,133 @@
+"""Training of Du 2022 ch. 5's networks (Sec. 5.4.1), deterministic on the CPU.
+
+- :func:`train_autoencoder`: the convolutional autoencoder on sliding windows of all
+  motion, mean squared reconstruction error.
+- :func:`train_vae`: a primitive's VAE on its clips' feature maps (loss Eq. 5.6), or,
+  given a style example, its CVAE (loss Eq. 5.11 = Eq. 5.6 + the style term Eq. 5.10).
+  A CVAE may start from the neutral VAE's weights (``init``): the thesis' stylistic
+  primitives are "deformed from" the neutral ones.
+
+The thesis trains with "stochastic gradient descent" at learning rates 1e-4 (autoencoder,
+300 epochs) and 1e-5 (VAE/CVAE, 1000 epochs) and names no optimiser or batch size; we use
+Adam with the epochs, learning rate and batch size given by the caller (the config).
+Every run draws its shuffles and noise from one ``torch.Generator`` seeded by ``seed``,
+so the same inputs give the same weights. Histories are DataFrames, one row per epoch.
+"""
+
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass
+
+import numpy as np
+import pandas as pd
+import torch
+
+from .losses import content_loss, gram, kl_loss, style_loss
+from .networks import ConvAutoencoder, MotionVAE
+
+
+@dataclass(frozen=True)
+class TrainConfig:
+    """Epochs, learning rate (Adam), minibatch size and the seed of one training run."""
+
+    epochs: int
+    lr: float
+    batch_size: int
+    seed: int = 0
+
+    def __post_init__(self) -> None:
+        if self.epochs < 1 or self.batch_size < 1 or not self.lr > 0:
+            raise ValueError(f"TrainConfig: epochs and batch_size must be >= 1 and lr > 0; got {self}")
+
+
+def _batches(n: int, batch_size: int, gen: torch.Generator) -> list[torch.Tensor]:
+    return list(torch.randperm(n, generator=gen).split(batch_size))
+
+
+def train_autoencoder(
+    windows: np.ndarray, cfg: TrainConfig, decoder_order: str = "conv_depool", n_kernels: int = 256,
+    kernel_width: int = 15,
+) -> tuple[ConvAutoencoder, pd.DataFrame]:
+    """Train Eq. 5.1-5.2 on scaled windows (W, T, C); history columns epoch, loss (MSE
+    per element), seconds."""
+    if windows.ndim != 3 or len(windows) == 0:
+        raise ValueError(f"train_autoencoder: windows must be a non-empty (W, T, C) array; got {windows.shape}")
+    torch.manual_seed(cfg.seed)
+    gen = torch.Generator().manual_seed(cfg.seed)
+    x = torch.as_tensor(windows, dtype=torch.float32).permute(0, 2, 1).contiguous()
+    model = ConvAutoencoder(x.shape[1], n_kernels=n_kernels, kernel_width=kernel_width, decoder_order=decoder_order)
+    opt = torch.optim.Adam(model.parameters(), lr=cfg.lr)
+    rows, t0 = [], time.perf_counter()
+    for epoch in range(1, cfg.epochs + 1):
+        total = 0.0
+        for idx in _batches(len(x), cfg.batch_size, gen):
+            xb = x[idx]
+            loss = torch.mean((model(xb) - xb) ** 2)
+            opt.zero_grad()
+            loss.backward()
+            opt.step()
+            total += float(loss.detach()) * len(idx)
+        rows.append({"epoch": epoch, "loss": total / len(x), "seconds": time.perf_counter() - t0})
+    model.eval()
+    return model, pd.DataFrame(rows)
+
+
+def train_vae(
+    maps: torch.Tensor | np.ndarray,
+    cfg: TrainConfig,
+    n_samples: int = 10,
+    style_maps: torch.Tensor | np.ndarray | None = None,
+    alpha: float = 200.0,
+    init: MotionVAE | None = None,
+    hidden: tuple[int, ...] = (512, 256, 128),
+    latent: int = 32,
+) -> tuple[MotionVAE, pd.DataFrame]:
+    """Train a primitive's VAE on its clips' feature maps (N, K, T') (Eq. 5.6, L =
+    ``n_samples`` draws of z per input, Eq. 5.7); with ``style_maps`` (K, T_s), the
+    encoded style example, a CVAE with the loss of Eq. 5.11 and style weight ``alpha``.
+    ``init`` copies a trained VAE's weights first. History columns: epoch, loss, content,
+    kl, style, seconds (per-epoch means over the inputs)."""
+    maps = torch.as_tensor(maps, dtype=torch.float32)
+    if maps.ndim != 3 or len(maps) == 0:
+        raise ValueError(f"train_vae: maps must be a non-empty (N, K, T) array; got {tuple(maps.shape)}")
+    if n_samples < 1:
+        raise ValueError(f"train_vae: n_samples (L) must be >= 1; got {n_samples}")
+    N, K, Tf = maps.shape
+    y = maps.reshape(N, K * Tf)
+    torch.manual_seed(cfg.seed)
+    gen = torch.Generator().manual_seed(cfg.seed)
+    model = MotionVAE(K * Tf, hidden=hidden, latent=latent)
+    if init is not None:
+        if init.hparams != model.hparams:
+            raise ValueError(f"train_vae: init VAE has {init.hparams}, expected {model.hparams}")
+        model.load_state_dict(init.state_dict())
+    style_g = None
+    if style_maps is not None:
+        style_maps = torch.as_tensor(style_maps, dtype=torch.float32)
+        if style_maps.ndim != 2 or style_maps.shape[0] != K:
+            raise ValueError(f"train_vae: style_maps must be ({K}, T_s); got {tuple(style_maps.shape)}")
+        style_g = gram(style_maps)
+    opt = torch.optim.Adam(model.parameters(), lr=cfg.lr)
+    rows, t0 = [], time.perf_counter()
+    for epoch in range(1, cfg.epochs + 1):
+        sums = np.zeros(4)
+        for idx in _batches(N, cfg.batch_size, gen):
+            yb = y[idx]
+            mu, logvar = model.encode(yb)
+            eps = torch.randn((n_samples, len(idx), model.latent), generator=gen)
+            recon = model.decode(model.reparameterize(mu, logvar, eps))
+            c, k = content_loss(recon, yb), kl_loss(mu, logvar)
+            s = style_loss(recon.reshape(n_samples, len(idx), K, Tf), style_g, alpha) if style_g is not None else torch.zeros(())
+            loss = c + k + s
+            opt.zero_grad()
+            loss.backward()
+            opt.step()
+            sums += len(idx) * np.array([float(v.detach()) for v in (loss, c, k, s)])
+        sums /= N
+        rows.append({
+            "epoch": epoch, "loss": sums[0], "content": sums[1], "kl": sums[2], "style": sums[3],
+            "seconds": time.perf_counter() - t0,
+        })
+    model.eval()
+    return model, pd.DataFrame(rows)

@@ -1,0 +1,295 @@
+"""Du 2022 ch. 5 (motionvar.style): features, networks, losses, training, diversity."""
+
+import numpy as np
+import pandas as pd
+import pytest
+import torch
+
+from motionvar.core import JointMap, Motion, cmu_joint_map, cmu_skeleton
+from motionvar.core import quaternions as Q
+from motionvar.style import (
+    ConvAutoencoder, FeatureScaler, FeatureSpace, MotionVAE, TrainConfig, content_loss, diagonal_minima,
+    diversity, features_to_positions, gram, gram_distance, heading_angles, kl_loss, load_vae, motion_features,
+    motions_features, positions_to_features, sample_features, save_vae, sliding_windows, step_lengths,
+    style_distance, style_distance_matrix, style_joints, train_autoencoder, train_vae,
+)
+
+CMU_21 = (
+    "Hips", "Spine", "Spine1", "Neck1", "Head", "LeftShoulder", "LeftArm", "LeftForeArm", "LeftHand",
+    "RightShoulder", "RightArm", "RightForeArm", "RightHand", "LeftUpLeg", "LeftLeg", "LeftFoot",
+    "LeftToeBase", "RightUpLeg", "RightLeg", "RightFoot", "RightToeBase",
+)
+
+
+def toy_walk(n_frames=60, seed=0, turn=0.4, speed=2.0, swing=0.5, arm=0.3):
+    """A clip on the CMU rig: the root moves along a curving path while turning to
+    face along it, legs and arms swing sinusoidally."""
+    rng = np.random.default_rng(seed)
+    sk = cmu_skeleton()
+    t = np.linspace(0, 1, n_frames)
+    heading = turn * t + rng.normal(0, 0.05)  # world yaw of the +z facing body
+    step = speed * np.stack([np.sin(heading), np.zeros_like(t), np.cos(heading)], -1)
+    root = np.cumsum(step, axis=0) + np.array([3.0, 95.0, -2.0])
+    rot = np.tile(np.array([1.0, 0, 0, 0]), (n_frames, sk.n_joints, 1))
+    rot[:, 0] = Q.quat_about_axis([0, 1, 0], heading)
+    phase = 2 * np.pi * t + rng.uniform(0, 0.3)
+    for name, amp in [("LeftUpLeg", swing), ("RightUpLeg", -swing), ("LeftArm", -arm), ("RightArm", arm)]:
+        rot[:, sk.index(name)] = Q.quat_about_axis([1, 0, 0], amp * np.sin(phase))
+    rot[:, sk.index("LeftLeg")] = Q.quat_about_axis([1, 0, 0], 0.3 + 0.3 * np.sin(phase))
+    return Motion(skeleton=sk, root_pos=root, rotations=rot, fps=120.0)
+
+
+@pytest.fixture(scope="module", autouse=True)
+def one_torch_thread():
+    """Tiny networks: one thread avoids oversubscribing a shared machine (10x faster here)."""
+    n = torch.get_num_threads()
+    torch.set_num_threads(1)
+    yield
+    torch.set_num_threads(n)
+
+
+@pytest.fixture(scope="module")
+def layout():
+    return style_joints(cmu_skeleton(), cmu_joint_map())
+
+
+# ---------------------------------------------------------------- features (Sec. 5.2)
+
+def test_style_joints_are_the_21_of_the_thesis(layout):
+    assert layout.names == CMU_21
+    assert layout.n_channels == 66  # "each frame is represented as a vector of length 66"
+    assert layout.parents[0] == -1
+    assert all(layout.parents[k] < k for k in range(1, 21))
+    # clavicle parent of the shoulder, neck parent of the head
+    assert layout.names[layout.parents[layout.names.index("LeftArm")]] == "LeftShoulder"
+    assert layout.names[layout.parents[layout.names.index("Head")]] == "Neck1"
+
+
+def test_style_joints_missing_semantic_joint_is_named():
+    jm = cmu_joint_map()
+    joints = dict(jm.joints)
+    del joints["left_toe"]
+    with pytest.raises(ValueError, match="left_toe"):
+        style_joints(cmu_skeleton(), JointMap(joints=joints, groups=jm.groups))
+
+
+def test_features_round_trip_to_positions(layout):
+    m = toy_walk()
+    pos = m.positions()[:, layout.joints]
+    f = positions_to_features(pos, layout)
+    assert f.shape == (60, 66)
+    theta0 = heading_angles(pos, layout)[0]
+    back = features_to_positions(f, layout, start_heading=theta0)
+    ground0 = pos[0, 0] * np.array([1, 0, 1])
+    # the last frame's velocity repeats the one before, so all but the last frame's root
+    # are exact, and poses are exact everywhere
+    assert np.allclose(back[:-1] + ground0, pos[:-1], atol=1e-9)
+    assert np.allclose(back - back[:, :1], pos - pos[:, :1], atol=1e-9)
+
+
+def test_features_are_invariant_to_place_and_heading(layout):
+    m = toy_walk(seed=3)
+    pos = m.positions()[:, layout.joints]
+    a = 1.1
+    c, s = np.cos(a), np.sin(a)
+    turned = pos @ np.array([[c, 0, -s], [0, 1, 0], [s, 0, c]]).T + np.array([40.0, 0.0, -7.0])
+    assert np.allclose(positions_to_features(turned, layout), positions_to_features(pos, layout), atol=1e-9)
+
+
+def test_features_face_plus_x_and_measure_speed(layout):
+    # a body walking straight along +z (its facing on the CMU rig) at 2 cm a frame
+    m = toy_walk(turn=0.0, speed=2.0, swing=0.0, arm=0.0)
+    m.rotations[:, 0] = [1, 0, 0, 0]
+    m.root_pos[:] = np.array([0, 95.0, 0]) + np.arange(60)[:, None] * np.array([0, 0, 2.0])
+    f = motion_features(m, layout)
+    local = f[:, :63].reshape(60, 21, 3)
+    left = layout.names.index("LeftUpLeg")
+    assert np.all(local[:, left, 2] < 0)  # facing +x: the left side is at -z
+    assert np.allclose(np.hypot(f[:, 63], f[:, 64]), 2.0) and np.allclose(f[:, 63], 2.0, atol=1e-2)
+    assert np.allclose(f[:, 65], 0.0)
+    assert np.allclose(step_lengths(f[None], 21), 2.0 * 59)
+
+
+def test_features_bad_input(layout):
+    with pytest.raises(ValueError, match="positions must be"):
+        positions_to_features(np.zeros((10, 20, 3)), layout)
+    with pytest.raises(ValueError, match="at least 2 frames"):
+        positions_to_features(np.zeros((1, 21, 3)), layout)
+    with pytest.raises(ValueError, match="clip 1 has 50 frames"):
+        motions_features([toy_walk(), toy_walk(n_frames=50)], layout)
+    with pytest.raises(ValueError, match="facing direction undefined"):
+        positions_to_features(np.zeros((5, 21, 3)), layout)
+    with pytest.raises(ValueError, match="expected 66 channels"):
+        features_to_positions(np.zeros((5, 60)), layout)
+
+
+def test_sliding_windows_of_60_overlapping_by_half():
+    clips = [np.arange(150 * 2).reshape(150, 2), np.zeros((40, 2)), np.ones((60, 2))]
+    w = sliding_windows(clips, 60, 30)
+    assert w.shape == (4 + 0 + 1, 60, 2)
+    assert np.array_equal(w[1], clips[0][30:90])
+    with pytest.raises(ValueError, match="no clip has"):
+        sliding_windows([np.zeros((10, 2))], 60, 30)
+
+
+def test_scaler_pools_positions_and_inverts(layout):
+    f = motions_features([toy_walk(seed=s) for s in range(4)], layout)
+    sc = FeatureScaler.fit(f, 21)
+    assert len(np.unique(sc.std[:63])) == 1 and sc.std[63] == sc.std[64]
+    assert np.allclose(sc.inverse(sc.transform(f)), f, atol=1e-4)
+
+
+# ---------------------------------------------------------------- networks (Eq. 5.1-5.2, Fig. 5.3)
+
+def test_conv_autoencoder_shapes_and_eq_5_2_depooling():
+    torch.manual_seed(0)
+    ae = ConvAutoencoder(66)
+    assert ae.conv.weight.shape == ae.deconv.weight.shape == (256, 66, 15)  # W' has W's shape
+    x = torch.randn(3, 66, 60)
+    y = ae.encode(x)
+    assert y.shape == (3, 256, 30) and torch.all(y >= 0)  # ReLU then average pooling
+    out = ae.decode(y)
+    assert out.shape == x.shape
+    assert torch.equal(out[..., 0::2], out[..., 1::2])  # Eq. 5.2 depools after the convolution
+    smooth = ConvAutoencoder(66, decoder_order="depool_conv")
+    assert not torch.equal(smooth(x)[..., 0::2], smooth(x)[..., 1::2])
+    with pytest.raises(ValueError, match="multiple of the pooling"):
+        ae.encode(torch.randn(1, 66, 59))
+    with pytest.raises(ValueError, match="decoder_order"):
+        ConvAutoencoder(66, decoder_order="max")
+
+
+def test_vae_architecture_of_fig_5_3():
+    vae = MotionVAE(7680)
+    lin = [m for m in vae.encoder if isinstance(m, torch.nn.Linear)]
+    assert [m.out_features for m in lin] == [512, 256, 128]
+    assert vae.mu.out_features == vae.logvar.out_features == 32
+    dec = [m.out_features for m in vae.decoder if isinstance(m, torch.nn.Linear)]
+    assert dec == [128, 256, 512, 7680]
+    assert isinstance(vae.decoder[-1], torch.nn.Linear)  # no tanh on the output
+    assert vae.sample(5, torch.Generator().manual_seed(0)).shape == (5, 7680)
+
+
+# ---------------------------------------------------------------- losses (Eq. 5.6-5.12)
+
+def test_content_and_kl_losses():
+    y = torch.tensor([[1.0, 2.0], [0.0, 0.0]])
+    recon = torch.stack([y + 1.0, y])  # L = 2 samples
+    # (2 inputs x 2 dims x 1^2 in sample 1 + 0) / (2 N L) = 4 / 8
+    assert float(content_loss(recon, y)) == pytest.approx(0.5)
+    assert float(kl_loss(torch.zeros(4, 32), torch.zeros(4, 32))) == pytest.approx(0.0)
+    mu = torch.full((1, 2), 1.0)
+    logvar = torch.log(torch.tensor([[2.0, 2.0]]))
+    expected = 0.5 * (2.0 + 4.0 - 2.0 - 2 * np.log(2.0))
+    assert float(kl_loss(mu, logvar)) == pytest.approx(expected)
+
+
+def test_gram_is_an_average_over_frames_independent_of_their_order():
+    y = torch.randn(4, 10)
+    g = gram(y)
+    assert torch.allclose(g, sum(torch.outer(y[:, i], y[:, i]) for i in range(10)) / 10, atol=1e-6)
+    assert torch.allclose(gram(y[:, torch.randperm(10)]), g, atol=1e-6)
+    assert torch.allclose(gram(torch.cat([y, y], dim=1)), g, atol=1e-6)  # examples of any length
+    assert float(style_distance(y[None].repeat(3, 1, 1), y)) == pytest.approx(0.0, abs=1e-9)
+    assert float(gram_distance(g + 1.0, g)) == pytest.approx(1.0)
+
+
+# ---------------------------------------------------------------- training
+
+@pytest.fixture(scope="module")
+def tiny(layout):
+    """A trained tiny feature space and a clip set (a few seconds)."""
+    clips = [toy_walk(n_frames=120, seed=s, turn=0.2 * s) for s in range(6)]
+    windows = sliding_windows([motion_features(m, layout) for m in clips], 60, 30)
+    scaler = FeatureScaler.fit(windows, 21)
+    ae, hist = train_autoencoder(scaler.transform(windows), TrainConfig(epochs=30, lr=3e-3, batch_size=8, seed=0),
+                                 n_kernels=16)
+    prims = motions_features([toy_walk(seed=10 + s, swing=0.4 + 0.02 * s) for s in range(12)], layout)
+    return FeatureSpace(ae, scaler), hist, prims
+
+
+def test_autoencoder_learns_and_is_deterministic(tiny, layout):
+    space, hist, prims = tiny
+    assert list(hist.columns) == ["epoch", "loss", "seconds"] and len(hist) == 30
+    assert hist["loss"].iloc[-1] < 0.5 * hist["loss"].iloc[0]
+    clips = [toy_walk(n_frames=120, seed=s, turn=0.2 * s) for s in range(6)]
+    windows = space.scaler.transform(sliding_windows([motion_features(m, layout) for m in clips]))
+    cfg = TrainConfig(epochs=2, lr=1e-3, batch_size=4, seed=5)
+    a, _ = train_autoencoder(windows, cfg, n_kernels=8)
+    b, _ = train_autoencoder(windows, cfg, n_kernels=8)
+    assert all(torch.equal(p, q) for p, q in zip(a.state_dict().values(), b.state_dict().values()))
+
+
+def test_vae_and_cvae_training(tiny):
+    space, _, prims = tiny
+    maps = space.encode(prims)
+    assert maps.shape == (12, 16, 30)
+    cfg = TrainConfig(epochs=40, lr=1e-3, batch_size=6, seed=0)
+    vae, hist = train_vae(maps, cfg, n_samples=3, hidden=(64, 32, 16), latent=4)
+    assert list(hist.columns) == ["epoch", "loss", "content", "kl", "style", "seconds"]
+    assert hist["loss"].iloc[-1] < hist["loss"].iloc[0] and (hist["style"] == 0).all()
+    # a style example far from the content: the CVAE's samples move toward its Gram matrix
+    example = space.encode(motions_features([toy_walk(seed=99, swing=1.2, arm=1.0, speed=4.0)], space_layout()))[0]
+    cvae, chist = train_vae(maps, cfg, n_samples=3, style_maps=example, alpha=200.0, init=vae,
+                            hidden=(64, 32, 16), latent=4)
+    assert chist["style"].iloc[-1] < chist["style"].iloc[0]
+    d_vae = float(style_distance(space.reencode(vae.sample(200, torch.Generator().manual_seed(1)).reshape(200, 16, 30)), example))
+    d_cvae = float(style_distance(space.reencode(cvae.sample(200, torch.Generator().manual_seed(1)).reshape(200, 16, 30)), example))
+    assert d_cvae < d_vae
+    with pytest.raises(ValueError, match="style_maps must be"):
+        train_vae(maps, cfg, style_maps=example[:3], hidden=(64, 32, 16), latent=4)
+    with pytest.raises(ValueError, match="init VAE has"):
+        train_vae(maps, cfg, init=MotionVAE(10), hidden=(64, 32, 16), latent=4)
+    with pytest.raises(ValueError, match="TrainConfig"):
+        TrainConfig(epochs=0, lr=1e-3, batch_size=4)
+
+
+def space_layout():
+    return style_joints(cmu_skeleton(), cmu_joint_map())
+
+
+def test_save_load_sample_and_distance_matrix(tiny, tmp_path, layout):
+    space, _, prims = tiny
+    maps = space.encode(prims)
+    cfg = TrainConfig(epochs=3, lr=1e-3, batch_size=6, seed=0)
+    vae, _ = train_vae(maps, cfg, n_samples=2, hidden=(32, 16, 8), latent=4)
+    space.save(tmp_path / "ae.pt")
+    save_vae(tmp_path / "vae.pt", vae, tuple(maps.shape[1:]), {"primitive": "walk_leftStance", "style": "neutral"})
+    space2 = FeatureSpace.load(tmp_path / "ae.pt")
+    vae2, shape, info = load_vae(tmp_path / "vae.pt")
+    assert shape == (16, 30) and info["style"] == "neutral"
+    a = sample_features(vae, shape, space, 5, seed=3)
+    b = sample_features(vae2, shape, space2, 5, seed=3)
+    assert a.shape == (5, 60, 66) and np.allclose(a, b)
+    assert space2.reconstruction_rmse(prims) == pytest.approx(space.reconstruction_rmse(prims))
+    table = style_distance_matrix({"neutral": (vae, shape), "other": (vae2, shape)},
+                                  {"neutral": prims.mean(axis=0), "other": prims[0]}, space, 10, seed=0)
+    assert table.shape == (2, 2) and np.isfinite(table.to_numpy()).all()
+    assert set(diagonal_minima(table)) <= {"neutral", "other"}
+    with pytest.raises(FileNotFoundError, match="missing"):
+        load_vae(tmp_path / "nope.pt")
+    with pytest.raises(ValueError, match="not a saved du2022_vae"):
+        load_vae(tmp_path / "ae.pt")
+
+
+def test_diagonal_minima():
+    t = pd.DataFrame([[0.1, 0.2], [0.05, 0.3]], index=["a", "b"], columns=["a", "b"])
+    assert diagonal_minima(t) == ["a"]
+
+
+# ---------------------------------------------------------------- diversity (Eq. 5.13-5.15)
+
+def test_diversity_by_hand():
+    rng = np.random.default_rng(0)
+    J = 21
+    f = np.zeros((3, 4, 3 * J + 3))
+    f[..., : 3 * J] = rng.normal(size=(3, 4, 3 * J))
+    f[..., 3 * J] = np.array([1.0, 2.0, 3.0])[:, None]  # per-clip constant speed along x
+    d = diversity(f, J)
+    poses = f[..., : 3 * J].reshape(12, -1)
+    assert d["pose_sd"] == pytest.approx(np.sqrt(((poses - poses.mean(0)) ** 2).sum() / 11))
+    speeds = np.repeat([1.0, 2.0, 3.0], 4)
+    assert d["v_sd"] == pytest.approx(np.sqrt(((speeds - 2.0) ** 2).sum() / 11))
+    assert d["step_sd"] == pytest.approx(np.std([3.0, 6.0, 9.0], ddof=1))  # 3 real steps a clip
+    with pytest.raises(ValueError, match="features must be"):
+        diversity(np.zeros((3, 4, 10)), J)
