@@ -151,6 +151,9 @@ def write_gif(path: str | Path, frames: np.ndarray, fps: float = 20.0, max_bytes
                 f"{path}: GIF would be {size / 1e6:.1f} MB, over the {max_bytes / 1e6:.1f} MB limit "
                 "(show fewer clips, fewer seconds or smaller panels)"
             )
+        umask = os.umask(0)
+        os.umask(umask)
+        os.chmod(tmp, 0o666 & ~umask)  # mkstemp made it private; give it a normal file's mode
         os.replace(tmp, path)
     except BaseException:
         Path(tmp).unlink(missing_ok=True)
