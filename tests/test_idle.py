@@ -279,3 +279,78 @@ def test_blend_with_masks_and_add_variations(toy):
         joint_mask(sk, jm, ["tail"])
     with pytest.raises(ValueError, match="same skeleton and length"):
         blend_motions(idle, other.slice(0, 10), 1.0, mask)
+
+
+# --- evaluation measures, baselines, figures ------------------------------------------------
+
+
+def test_window_features_sets():
+    from motionvar.idle.evaluation import window_features
+
+    rng = np.random.default_rng(0)
+    pcs, lam = rng.normal(size=(1200, 12)), rng.uniform(0.3, 0.7, 1200)
+    full = window_features(pcs, lam, 30.0, 10.0, n_pcs=5)
+    dyn = window_features(pcs, lam, 30.0, 10.0, n_pcs=5, feature_set="dynamics")
+    assert full.shape == (4, 5 + 5 + 1 + 3 + 1 + 9) and dyn.shape == (4, 5 + 1 + 9)
+    assert np.all(np.isfinite(full))
+    with pytest.raises(ValueError, match="feature_set"):
+        window_features(pcs, lam, 30.0, 10.0, 5, feature_set="mean")
+    with pytest.raises(ValueError, match="window"):
+        window_features(pcs[:100], lam[:100], 30.0, 10.0, 5)
+
+
+def test_window_best_match_sees_a_loop():
+    from motionvar.idle.baselines import loop_frames
+    from motionvar.idle.evaluation import window_best_match
+
+    rng = np.random.default_rng(0)
+    clip = np.cumsum(rng.normal(size=(130, 3)), axis=0)
+    looped = window_best_match(loop_frames(clip, 1000), window=50, stride=1)
+    fresh = window_best_match(np.cumsum(rng.normal(size=(1000, 3)), axis=0), window=50, stride=1)
+    assert np.all(looped > 0.999) and np.median(fresh) < 0.9
+    with pytest.raises(ValueError, match="two windows"):
+        window_best_match(clip[:60], 50, 1)
+
+
+def test_junction_steps():
+    from motionvar.idle.evaluation import all_steps, junction_steps
+
+    x = np.concatenate([np.zeros(5), np.arange(1, 6) * 2.0])[:, None]
+    step, accel = junction_steps(x, np.array([4, 0, 9]), np.ones(1))
+    assert step.tolist() == [2.0] and accel.tolist() == [2.0]
+    assert all_steps(x, np.ones(1))[0].shape == (8,)
+
+
+def test_idle_baselines():
+    from motionvar.idle.baselines import loop_frames, perlin_pcs
+
+    assert loop_frames(np.arange(3), 7).tolist() == [0, 1, 2, 0, 1, 2, 0]
+    base, sds = np.arange(6.0), np.array([0.5, 0.1])
+    a = perlin_pcs(base, sds, 0.5, 3000, 30.0, seed=1)
+    assert np.allclose(a.std(axis=0)[:2], sds) and np.allclose(a[:, 2:], base[2:])
+    assert np.allclose(a.mean(axis=0), base)
+    assert np.array_equal(a, perlin_pcs(base, sds, 0.5, 3000, 30.0, seed=1))
+    with pytest.raises(ValueError, match="loop_frames"):
+        loop_frames(np.zeros(0), 3)
+    with pytest.raises(ValueError, match="SDs"):
+        perlin_pcs(base, np.ones(7), 0.5, 10, 30.0, 0)
+
+
+def test_figures_draw(toy):
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from motionvar.idle.figures import plot_category_graph, plot_fitted_animation, plot_pc_extrema
+
+    _, _, _, db = toy
+    fig, axes = plt.subplots(1, 3)
+    plot_category_graph(axes[0], db.graph, "toy")
+    x = np.sin(np.linspace(0, 12, 300))
+    idx, is_max = find_extrema(x, 0.5)
+    plot_pc_extrema(axes[1], x, 30.0, idx, is_max, 0)
+    a = db.animations[0]
+    plot_fitted_animation(axes[2], a[:, 0], {"linear": a[:, 0] + 1}, a[0, 0] + 1, a[-1, 0] + 1, 30.0)
+    assert len(axes[0].patches) >= 3 + 6
+    plt.close(fig)
