@@ -23,7 +23,7 @@ from motionvar.prep import (
     mask_to_intervals, median_length_index, parse_intervals, parse_segments, preprocess_dataset,
     resample_motion, sample_motion, segment_motion, warp_to_median,
 )
-from motionvar.prep.segmentation import reach_boundary, sidestep_segments, step_segments, trailing_foot
+from motionvar.prep.segmentation import reach_boundary, sidestep_segments, standing_ends, step_segments, trailing_foot
 from motionvar.prep.timewarp import check_warp
 
 FPS = 120.0
@@ -137,6 +137,16 @@ def test_options_validate_and_name_the_bad_option():
         PrepOptions(min_gap_s=-1)
 
 
+def test_config_schema_defaults_match_prep_options():
+    import yaml
+
+    schema = yaml.safe_load((Path(__file__).parents[1] / "config" / "schema.yaml").read_text())
+    props = schema["properties"]["prep"]["properties"]
+    defaults = PrepOptions().to_dict()
+    assert set(props) == set(defaults)
+    assert {k: v["default"] for k, v in props.items()} == defaults
+
+
 # ----------------------------------------------------------------------------- contacts
 
 
@@ -221,8 +231,21 @@ def test_step_segments_from_contact_masks():
     T = 100
     left = intervals_to_mask(np.array([[0, 10], [40, 70]]), T)
     right = intervals_to_mask(np.array([[0, 30], [60, 100]]), T)
-    segs = step_segments(FootContacts(left, right, FPS), T, "walk", start_end=True)
+    c = FootContacts(left, right, FPS)
+    segs = step_segments(c, T, "walk", start=True, end=True)
     assert segs == [Segment("walk_start", 0, 40), Segment("walk_leftStance", 40, 60), Segment("walk_end", 60, 100)]
+    assert step_segments(c, T, "walk") == [Segment("walk_leftStance", 40, 60)]
+
+
+def test_walk_cut_mid_gait_has_no_start_or_end():
+    m = stepping(WALK_STEPS, 2.5)
+    m.root_pos[:, 0] += np.arange(m.n_frames) * 0.01  # 1.2 cm/s drift: still standing
+    assert [s.name for s in segment_motion(m, "walk", JM)][::4] == ["walk_start", "walk_end"]
+    mid = m.slice(100, 230)  # starts and ends with a foot in the air
+    assert segment_motion(mid, "walk", JM) == [Segment("walk_leftStance", 32, 92)]
+    moving = m.copy()  # planted feet but a root gliding at 1 m/s: not a standing start
+    moving.root_pos[:30, 0] -= np.linspace(30.0, 0.0, 30) * 100.0 / FPS
+    assert segment_motion(moving, "walk", JM)[0].name != "walk_start"
 
 
 def test_sidestep_cycles_follow_the_trailing_foot():
@@ -486,3 +509,120 @@ def test_preprocess_dataset_errors(tmp_path):
     with pytest.warns(UserWarning, match="clip i1: no run primitives found; skipped"):
         _, meta = preprocess_dataset(one_step, JM, PrepOptions(skip_unsegmentable=True))
     assert meta["clip_id"].tolist() == ["w1_00"]
+
+
+# ----------------------------------------------------------------------------- synthetic data (end to end)
+
+# The generators are written by others at the same time; these tests run once they import.
+try:
+    from motionvar.synth import locomotion, reach
+    from motionvar.synth.gait_params import RunParams, SidestepParams, WalkParams
+    from motionvar.synth.subjects import make_subjects
+except ImportError:  # pragma: no cover - only while the generator is missing
+    locomotion = None
+
+needs_synth = pytest.mark.skipif(locomotion is None, reason="synthetic generator (motionvar.synth) not available")
+SUBJECTS = make_subjects(3, seed=7) if locomotion is not None else []
+
+
+def synthetic_clips():
+    """(behaviour, Motion, truth) of walks (styles, turns, first feet, slow and fast), runs
+    and side-steps of three subjects, from anywhere on the floor with any heading."""
+    rng = np.random.default_rng(11)
+    out = []
+    for k, subject in enumerate(SUBJECTS):
+        where = dict(start_xz=tuple(rng.uniform(-300, 300, 2)), heading_deg=float(rng.uniform(-180, 180)))
+        walks = [
+            WalkParams(style=("neutral", "old", "angry")[k], first_foot=("left", "right")[k % 2], **where),
+            WalkParams(style="depressed", turn_deg=(-50.0, 40.0, 70.0)[k], speed_cm_s=90.0, stride_length_cm=110.0,
+                       stand_start_s=0.1, stand_end_s=0.1, **where),
+        ]
+        out += [("walk", *locomotion.generate_walk(subject, p)) for p in walks]
+        out.append(("run", *locomotion.generate_run(subject, RunParams(first_foot=("right", "left")[k % 2], **where))))
+        side = SidestepParams(direction=("left", "right")[k % 2], n_cycles=3 + k, **where)
+        out.append(("sidestep", *locomotion.generate_sidestep(subject, side)))
+    return out
+
+
+@pytest.fixture(scope="module")
+def synthetic():
+    if locomotion is None:
+        pytest.skip("synthetic generator (motionvar.synth) not available")
+    return synthetic_clips()
+
+
+@needs_synth
+def test_synthetic_contacts_agree_with_the_generator(synthetic):
+    for behaviour, m, truth in synthetic:
+        c = detect_foot_contacts(m, JM)
+        for side in ("left", "right"):
+            gt = intervals_to_mask(parse_intervals(truth[f"{side}_contacts"]), m.n_frames)
+            agreement = np.mean(c.mask(side) == gt)
+            assert agreement > 0.95, (behaviour, side, agreement)
+
+
+@needs_synth
+def test_synthetic_segmentation_finds_every_step(synthetic):
+    for behaviour, m, truth in synthetic:
+        gt = parse_segments(truth["segments"])
+        got = segment_motion(m, behaviour, JM)
+        assert [s.name for s in got] == [s.name for s in gt], (behaviour, got, gt)
+        err = np.abs(np.array([s[1:] for s in got]) - np.array([s[1:] for s in gt]))
+        assert err.max() <= 3, (behaviour, got, gt)
+
+
+@needs_synth
+def test_synthetic_aligned_primitives_start_at_origin_heading_x(synthetic, tmp_path):
+    motions = [m for _, m, _ in synthetic]
+    meta = pd.DataFrame({
+        "clip_id": [f"c{k}" for k in range(len(motions))], "subject": "s", "style": "neutral",
+        "behaviour": [b for b, _, _ in synthetic], "segments": [t["segments"] for _, _, t in synthetic],
+    })
+    save_dataset(tmp_path, motions, meta)
+    ds = load_dataset(tmp_path)
+    for truth in (False, True):
+        prims, pmeta = preprocess_dataset(ds, JM, PrepOptions(use_ground_truth_segments=truth))
+        assert len(prims) == sum(len(parse_segments(t["segments"])) for _, _, t in synthetic)
+        for m in prims:
+            assert np.allclose(m.root_pos[0, [0, 2]], 0.0, atol=1e-6)
+            assert np.allclose(_heading(m), [1.0, 0.0, 0.0], atol=1e-6)
+        walks = pmeta["primitive"].str.endswith("Stance") & pmeta["primitive"].str.startswith("walk")
+        # a stance primitive of a straight walk travels forward, along +x
+        fwd = [prims[i].root_pos[-1, 0] for i in np.flatnonzero(walks)]
+        assert np.min(fwd) > 20.0
+
+
+@needs_synth
+def test_synthetic_reach_boundary_within_a_tenth_of_a_second():
+    rng = np.random.default_rng(2)
+    errors = []
+    for k in range(12):
+        subject = SUBJECTS[k % 3]
+        kind = ("pick", "place")[k % 2]
+        gen = reach.generate_pick if kind == "pick" else reach.generate_place
+        m, truth = gen(subject, reach.ReachParams(region=("forward", "high")[k // 2 % 2]), rng)
+        gt = parse_segments(truth["segments"])
+        got = segment_motion(m, kind, JM)
+        assert [s.name for s in got] == [s.name for s in gt]
+        errors.append(got[0].stop - gt[0].stop)
+    errors = np.abs(errors)
+    # the hands approach the target with a minimum-jerk profile: "stopped" (2 % of the
+    # peak speed) comes a few frames before the generator's first frame at the target
+    assert errors.max() <= 12 and errors.mean() <= 6, errors
+
+
+# ----------------------------------------------------------------------------- real CMU data
+
+CMU = Path("/work/shared/data/bvh/cmu")
+
+
+@pytest.mark.skipif(not (CMU / "02_01.bvh").is_file(), reason="CMU BVH files not present")
+def test_real_cmu_walk_has_steps():
+    from motionvar.core import CMU_UNIT_CM
+    from motionvar.io import read_bvh
+
+    m = read_bvh(CMU / "02_01.bvh", scale=CMU_UNIT_CM)
+    m = m.slice(1, m.n_frames)  # frame 0 is the cgspeed T-pose
+    segs = segment_motion(m, "walk", JM)
+    stances = [s for s in segs if s.name.endswith("Stance")]
+    assert len(stances) >= 2

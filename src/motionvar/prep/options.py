@@ -20,8 +20,12 @@ class PrepOptions:
 
     Foot contacts (per foot; a foot is planted when its ankle or its toe is both slow and
     low, Du 2022 Sec. 4.3 "contact state transitions"):
-        contact_velocity_cm_s: a joint is slow below this speed (cm/s). A planted foot
-            moves < 5 cm/s plus marker noise; a swinging foot 100-500 cm/s.
+        contact_velocity_cm_s: a joint is slow below this speed (cm/s). A swinging foot
+            moves at 100-500 cm/s. The synthetic generator pins the ankle from heel strike
+            (0 cm/s), but on real walks (CMU 02_01) the ankle still moves at 40-60 cm/s
+            in the heel rocker of the first ~0.1 s after heel contact: at 30 cm/s heel
+            strikes came ~8 frames late with one frame of double support; at 50 cm/s
+            double support is ~13 frames, about 10 % of the gait cycle (GAIT.md).
         contact_height_cm: a joint is low when it is less than this above its floor level.
         floor_percentile: a joint's floor level is this percentile of its height over the
             clip (robust to floor offsets and to rigs with other ankle heights).
@@ -45,7 +49,7 @@ class PrepOptions:
         units_cm: centimetres per length unit of the motions (1.0: motions in cm).
     """
 
-    contact_velocity_cm_s: float = 30.0
+    contact_velocity_cm_s: float = 50.0
     contact_height_cm: float = 6.0
     floor_percentile: float = 2.0
     velocity_window_s: float = 1.0 / 60.0

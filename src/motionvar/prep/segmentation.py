@@ -4,7 +4,10 @@ primitive names of the synthetic data contract:
 
 - walk: ``walk_start`` (clip start to the first heel strike), ``walk_leftStance`` (a left
   heel strike to the next heel strike, the right one), ``walk_rightStance``, ``walk_end``
-  (the last heel strike to the clip end). Heel strikes are contact onsets.
+  (the last heel strike to the clip end). Heel strikes are contact onsets. ``walk_start``
+  and ``walk_end`` need the clip to start / end standing (both feet planted and the root
+  slower than ``contact_velocity_cm_s``); a clip cut mid-gait (real data) loses the
+  partial step there instead.
 - run: ``run_leftStance`` / ``run_rightStance`` from a landing to the next landing (flight
   included); the partial steps before the first and after the last landing are dropped.
 - sidestep: ``sidestep``, one lateral step cycle from a landing of the trailing foot to
@@ -39,21 +42,33 @@ def contact_onsets(contacts: FootContacts) -> tuple[np.ndarray, np.ndarray]:
     return frames[order], sides[order]
 
 
-def step_segments(contacts: FootContacts, n_frames: int, prefix: str, start_end: bool) -> list[Segment]:
+def step_segments(
+    contacts: FootContacts, n_frames: int, prefix: str, start: bool = False, end: bool = False
+) -> list[Segment]:
     """Stance segments between consecutive contact onsets, named by the foot that lands:
-    ``{prefix}_leftStance`` / ``{prefix}_rightStance``; with ``start_end`` also
-    ``{prefix}_start`` (clip start to the first onset) and ``{prefix}_end`` (the last
-    onset to the clip end)."""
+    ``{prefix}_leftStance`` / ``{prefix}_rightStance``; with ``start`` also
+    ``{prefix}_start`` (clip start to the first onset), with ``end`` ``{prefix}_end``
+    (the last onset to the clip end)."""
     frames, sides = contact_onsets(contacts)
     segs = [
         Segment(f"{prefix}_{side}Stance", int(a), int(b))
         for a, b, side in zip(frames[:-1], frames[1:], sides[:-1])
         if b > a
     ]
-    if start_end and len(frames):
+    if start and len(frames):
         segs.insert(0, Segment(f"{prefix}_start", 0, int(frames[0])))
+    if end and len(frames):
         segs.append(Segment(f"{prefix}_end", int(frames[-1]), n_frames))
     return [s for s in segs if s.stop > s.start]
+
+
+def standing_ends(motion: Motion, contacts: FootContacts, options: PrepOptions) -> tuple[bool, bool]:
+    """Whether the clip starts and ends standing: both feet planted and the root's floor
+    speed below ``contact_velocity_cm_s`` on its first / last frame."""
+    root = motion.root_pos * np.array([1.0, 0.0, 1.0]) * options.units_cm
+    speed = joint_speeds(root, motion.fps, options.velocity_window_s)
+    still = (speed < options.contact_velocity_cm_s) & contacts.left & contacts.right
+    return bool(still[0]), bool(still[-1])
 
 
 def trailing_foot(motion: Motion, joint_map: JointMap, positions: np.ndarray) -> str:
@@ -117,7 +132,8 @@ def reach_segments(
 def _locomotion(prefix: str, start_end: bool) -> Callable:
     def seg(motion, joint_map, positions, options):
         contacts = detect_foot_contacts(motion, joint_map, options, positions)
-        return step_segments(contacts, motion.n_frames, prefix, start_end)
+        start, end = standing_ends(motion, contacts, options) if start_end else (False, False)
+        return step_segments(contacts, motion.n_frames, prefix, start, end)
 
     return seg
 
