@@ -235,6 +235,9 @@ def test_step_segments_from_contact_masks():
     segs = step_segments(c, T, "walk", start=True, end=True)
     assert segs == [Segment("walk_start", 0, 40), Segment("walk_leftStance", 40, 60), Segment("walk_end", 60, 100)]
     assert step_segments(c, T, "walk") == [Segment("walk_leftStance", 40, 60)]
+    # a shuffle (two left onsets in a row) is no stance; the second left onset starts one
+    shuffle = FootContacts(intervals_to_mask(np.array([[0, 10], [20, 30], [40, 70]]), T), right, FPS)
+    assert step_segments(shuffle, T, "walk") == [Segment("walk_leftStance", 40, 60)]
 
 
 def test_walk_cut_mid_gait_has_no_start_or_end():

@@ -3,7 +3,7 @@ Sec. 4.3, Fig. 4.5: "keyframes ... when a contact state transition occurs"), wit
 primitive names of the synthetic data contract:
 
 - walk: ``walk_start`` (clip start to the first heel strike), ``walk_leftStance`` (a left
-  heel strike to the next heel strike, the right one), ``walk_rightStance``, ``walk_end``
+  heel strike to the next heel strike, when that is a right one), ``walk_rightStance``, ``walk_end``
   (the last heel strike to the clip end). Heel strikes are contact onsets. ``walk_start``
   and ``walk_end`` need the clip to start / end standing (both feet planted and the root
   slower than ``contact_velocity_cm_s``); a clip cut mid-gait (real data) loses the
@@ -45,15 +45,16 @@ def contact_onsets(contacts: FootContacts) -> tuple[np.ndarray, np.ndarray]:
 def step_segments(
     contacts: FootContacts, n_frames: int, prefix: str, start: bool = False, end: bool = False
 ) -> list[Segment]:
-    """Stance segments between consecutive contact onsets, named by the foot that lands:
-    ``{prefix}_leftStance`` / ``{prefix}_rightStance``; with ``start`` also
-    ``{prefix}_start`` (clip start to the first onset), with ``end`` ``{prefix}_end``
-    (the last onset to the clip end)."""
+    """Stance segments from an onset of one foot to the next onset, which must be of the
+    other foot, named by the foot that lands first: ``{prefix}_leftStance`` /
+    ``{prefix}_rightStance`` (two onsets of the same foot in a row, a shuffle, make no
+    stance); with ``start`` also ``{prefix}_start`` (clip start to the first onset), with
+    ``end`` ``{prefix}_end`` (the last onset to the clip end)."""
     frames, sides = contact_onsets(contacts)
     segs = [
         Segment(f"{prefix}_{side}Stance", int(a), int(b))
-        for a, b, side in zip(frames[:-1], frames[1:], sides[:-1])
-        if b > a
+        for a, b, side, other in zip(frames[:-1], frames[1:], sides[:-1], sides[1:])
+        if b > a and side != other
     ]
     if start and len(frames):
         segs.insert(0, Segment(f"{prefix}_start", 0, int(frames[0])))
