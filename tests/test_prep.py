@@ -343,6 +343,18 @@ def test_alignment_movement_heading():
     assert np.allclose(_heading(align_motion(still, JM, PrepOptions(heading="movement"))), [1, 0, 0], atol=1e-9)
 
 
+def test_alignment_and_resampling_keep_translation_channels():
+    m = turned(stepping([("left", 0.2, 0.5)], 1.0), 0.7, (10.0, 20.0))
+    tr = np.full(m.rotations.shape[:2] + (3,), np.nan)
+    knee = JM.index(m.skeleton, "left_knee")
+    tr[:, knee] = m.skeleton.offsets[knee] * 1.1  # a BVH joint with position channels
+    mt = replace(m, translations=tr)
+    a, at = align_motions([m, mt], JM, PrepOptions(heading_frames=3))
+    assert np.allclose(a.root_pos, at.root_pos) and np.array_equal(at.translations, tr, equal_nan=True)
+    r = resample_motion(mt, 50)
+    assert r.translations.shape == (50, m.skeleton.n_joints, 3) and np.allclose(r.translations[:, knee], tr[0, knee])
+
+
 def test_alignment_errors():
     m = standing(10)
     with pytest.raises(ValueError, match="no motions"):
