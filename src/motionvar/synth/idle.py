@@ -3,14 +3,15 @@
 
 Structure (Egges 2004 Sec. 5.1, 5.4): the body rests in one of three categories —
 weight on the left foot, on the right foot, or on both — for a dwell time, then shifts its
-balance to another category in a transition of about 0.5–1.5 s. The next category is drawn
-with probabilities proportional to the subject's ``idle_foot_preference`` (the category
-transition graph of Sec. 5.3, Fig. 3); each rest is a slightly different posture of its
-category (the posture sets Q_c). On top run continuous small variations (Sec. 6): postural
+balance to another posture in a transition of about 0.5–1.5 s. The next category is drawn
+from the subject's ``idle_foot_preference`` (the category transition graph of Sec. 5.3,
+Fig. 3, here with P(c ⇒ s) = preference of s, so the preference is the share of time in
+each category; c ⇒ c is a re-adjustment within the category); each rest is a slightly
+different posture of its category (the posture sets Q_c). On top run continuous small variations (Sec. 6): postural
 sway, breathing, small head and arm movements.
 
 Biomechanics (GAIT.md, "Quiet standing"; sources in each constant's comment):
-- Loaded leg straight (knee ``lock_knee_deg`` of 1–5°), the root height follows from it;
+- Loaded leg straight (knee ``lock_knee_deg``, 1–5°), the root height follows from it;
   the pelvis drops towards the unloaded side by ``pelvis_drop_deg`` (2–5°, "a few
   degrees"), which bends the unloaded knee; the trunk bends back over the pelvis so the
   head stays above it.
@@ -23,8 +24,8 @@ Biomechanics (GAIT.md, "Quiet standing"; sources in each constant's comment):
   ankles (the body tilts by displacement / root height).
 - Breathing at ``subject.breath_rate_hz`` (12–20 /min), shoulders rising by 0.3–0.9 cm
   and the chest extending by about a degree per breath.
-- Stance: heels about 17 cm apart and feet turned out by about 7° each in self-selected
-  quiet stance (McIlroy & Maki 1997); here ankle spacing 15–28 cm, toe-out 3–12° per foot.
+- Stance (ankle spacing, toe-out, straight-knee flexion, COM ahead of the ankles, arm
+  abduction): :class:`~motionvar.synth.stance.StanceHabit`, shared with the reach clips.
 
 Personal traits beyond :class:`Subject` (:class:`IdleStyle`) come from
 :func:`~motionvar.synth.signals.subject_rng`: they persist across the subject's clips, so
@@ -44,8 +45,8 @@ from ..core.quaternions import qmul, qrot
 from .intervals import format_intervals, format_ranges
 from .signals import colored_noise, minimum_jerk, subject_rng
 from .stance import (
-    Rig, SIDES, elbow_pole, euler_q, hanging_hand_offsets, heading_quat, identity_rotations,
-    plant_feet, root_height, solve_arm, solve_legs, to_world,
+    Rig, elbow_pole, euler_q, hanging_hand_offsets, heading_quat, identity_rotations,
+    plant_feet, root_height, solve_arm, solve_legs, stance_habit, to_world,
 )
 from .subjects import Subject
 
@@ -90,48 +91,39 @@ class IdleParams:
 class IdleStyle:
     """A subject's personal way of standing (ranges and sources in the module docstring)."""
 
-    stance_width_cm: float  # ankle spacing
-    toe_out_deg: float  # per foot
     com_shift_frac: float  # COM shift over the loaded foot, fraction of half the stance width
     pelvis_drop_deg: float  # pelvic obliquity towards the unloaded side
-    lock_knee_deg: float  # flexion of the straight (loaded) knee
     pelvis_yaw_deg: float  # pelvis turns this much towards the loaded side (sign personal)
     trunk_compensation: float  # fraction of the pelvic obliquity the trunk bends back
-    com_ahead_cm: float  # root ahead of the ankle line (COM ahead of the ankles, Winter 2009)
     transition_s: float  # mean duration of a balance shift
     sway_corner_hz: float
     sway_ml_ratio: float  # medio-lateral / antero-posterior sway RMS
     head_rms_deg: float
     arm_rms_deg: float  # small arm movements: RMS of elbow and shoulder angle noise
     breath_rise_cm: float
-    arm_abduction_deg: float
 
 
 def idle_style(subject: Subject) -> IdleStyle:
     """The subject's :class:`IdleStyle`: same subject, same style."""
     r = subject_rng(subject, "idle")
-    h = subject.height_scale
     return IdleStyle(
-        stance_width_cm=float(r.uniform(15.0, 28.0) * h),
-        toe_out_deg=float(r.uniform(3.0, 12.0)),
         com_shift_frac=float(r.uniform(0.35, 0.75)),
         pelvis_drop_deg=float(r.uniform(2.0, 5.0)),
-        lock_knee_deg=float(r.uniform(1.0, 5.0)),
         pelvis_yaw_deg=float(r.choice([-1.0, 1.0]) * r.uniform(1.0, 5.0)),
         trunk_compensation=float(r.uniform(0.5, 1.0)),
-        com_ahead_cm=float(r.uniform(2.0, 5.0) * h),
         transition_s=float(r.uniform(0.6, 1.3)),
         sway_corner_hz=float(r.uniform(0.15, 0.5)),
         sway_ml_ratio=float(r.uniform(0.5, 0.9)),
         head_rms_deg=float(r.uniform(1.0, 4.0)),
         arm_rms_deg=float(r.uniform(0.5, 2.5)),
         breath_rise_cm=float(r.uniform(0.3, 0.9)),
-        arm_abduction_deg=float(r.uniform(4.0, 12.0)),
     )
 
 
 @dataclass(frozen=True)
-class _Rest:
+class Rest:
+    """One resting posture and the balance shift that follows it (times in seconds)."""
+
     category: str
     start: float  # seconds
     stop: float  # end of the rest = start of the following shift
@@ -146,10 +138,16 @@ def _rest_values(category: str, rng: np.random.Generator) -> np.ndarray:
     return np.array([w, rng.normal(0.0, 1.5), rng.normal(0.0, 4.0), rng.normal(0.0, 2.0), rng.normal(0.0, 4.0)])
 
 
-def _timeline(subject: Subject, style: IdleStyle, duration: float, first: str, rng: np.random.Generator) -> list[_Rest]:
-    """Rests and shifts until ``duration``: dwell ~ Gamma(shape 4, mean weight_shift_s),
-    at least 1 s (the first one starts at a random point of its dwell); shifts last
-    transition_s × U(0.8, 1.25), kept in [0.5, 1.5] s."""
+def sample_rests(subject: Subject, duration: float, first: str, rng: np.random.Generator) -> list[Rest]:
+    """Rests and balance shifts until ``duration`` s, starting in category ``first``
+    (Egges 2004 Sec. 5.4): dwell ~ Gamma(shape 4, mean ``weight_shift_s``), at least 1 s
+    (the clip starts at a random point of the first dwell); the next category is drawn from
+    ``idle_foot_preference``, so that is the share of time spent in each (a repeat is a
+    re-adjustment to another posture of the same category); shifts last
+    ``transition_s`` × U(0.8, 1.25), kept in [0.5, 1.5] s."""
+    if first not in CATEGORIES:
+        raise ValueError(f"first category must be one of {CATEGORIES}; got {first!r}")
+    style = idle_style(subject)
     pref = np.asarray(subject.idle_foot_preference, dtype=float)
     rests, t, cat, first_rest = [], 0.0, first, True
     while t < duration:
@@ -158,15 +156,13 @@ def _timeline(subject: Subject, style: IdleStyle, duration: float, first: str, r
             dwell *= rng.uniform(0.3, 1.0)
             first_rest = False
         shift = float(np.clip(style.transition_s * rng.uniform(0.8, 1.25), 0.5, 1.5))
-        rests.append(_Rest(cat, t, t + dwell, t + dwell + shift, _rest_values(cat, rng)))
+        rests.append(Rest(cat, t, t + dwell, t + dwell + shift, _rest_values(cat, rng)))
         t += dwell + shift
-        others = [c for c in CATEGORIES if c != cat]
-        p = np.array([pref[CATEGORIES.index(c)] for c in others])
-        cat = others[rng.choice(2, p=p / p.sum())]
+        cat = CATEGORIES[rng.choice(3, p=pref / pref.sum())]
     return rests
 
 
-def _posture_tracks(rests: list[_Rest], t: np.ndarray) -> np.ndarray:
+def _posture_tracks(rests: list[Rest], t: np.ndarray) -> np.ndarray:
     """(T, P) posture parameters over time: constant in each rest, minimum-jerk shifts."""
     out = np.broadcast_to(rests[0].values, (t.size, rests[0].values.size)).copy()
     for a, b in zip(rests[:-1], rests[1:]):
@@ -175,7 +171,7 @@ def _posture_tracks(rests: list[_Rest], t: np.ndarray) -> np.ndarray:
     return out
 
 
-def _truth_intervals(rests: list[_Rest], fps: float, n: int) -> tuple[str, str]:
+def _truth_intervals(rests: list[Rest], fps: float, n: int) -> tuple[str, str]:
     """(idle_postures, segments): categories split at the middle of each shift; segments
     name each rest ``rest`` and each transition ``shift``."""
     frame = lambda s: int(np.clip(round(s * fps), 0, n))  # noqa: E731
@@ -183,7 +179,9 @@ def _truth_intervals(rests: list[_Rest], fps: float, n: int) -> tuple[str, str]:
     for i, r in enumerate(rests):
         a = 0 if i == 0 else frame(0.5 * (rests[i - 1].stop + rests[i - 1].shift_stop))
         b = frame(0.5 * (r.stop + r.shift_stop)) if i + 1 < len(rests) else n
-        if b > a:
+        if postures and postures[-1][0] == r.category:
+            postures[-1] = (r.category, postures[-1][1], b)
+        elif b > a:
             postures.append((r.category, a, b))
         for name, lo, hi in (("rest", r.start, r.stop), ("shift", r.stop, r.shift_stop)):
             if frame(hi) > frame(lo):
@@ -201,6 +199,7 @@ def generate_idle(subject: Subject, params: IdleParams, rng: np.random.Generator
     params.validate()
     sk = subject.skeleton
     style = idle_style(subject)
+    habit = stance_habit(subject)
     fps = float(params.fps)
     n = int(round(params.duration_s * fps)) + 1
     t = np.arange(n) / fps
@@ -209,10 +208,10 @@ def generate_idle(subject: Subject, params: IdleParams, rng: np.random.Generator
     pref = np.asarray(subject.idle_foot_preference, dtype=float)
     first = params.start_category or CATEGORIES[rng.choice(3, p=pref / pref.sum())]
 
-    width = style.stance_width_cm + rng.normal(0.0, 1.0)
-    toe_out = style.toe_out_deg + rng.normal(0.0, 1.5)
+    width = habit.width_cm + rng.normal(0.0, 1.0)
+    toe_out = habit.toe_out_deg + rng.normal(0.0, 1.5)
     feet = plant_feet(sk, width, toe_out)
-    rests = _timeline(subject, style, params.duration_s, first, rng)
+    rests = sample_rests(subject, params.duration_s, first, rng)
     post = _posture_tracks(rests, t)
     w, yaw_off, elbow_off, head_pitch_off, head_yaw_off = post.T
 
@@ -230,13 +229,13 @@ def generate_idle(subject: Subject, params: IdleParams, rng: np.random.Generator
     rot = identity_rotations(n, sk)
     # Pelvis: shift over the loaded foot, drop towards the unloaded side, turn, pendulum sway.
     root_x = w * style.com_shift_frac * width / 2.0 + sway_ml
-    root_z = style.com_ahead_cm + sway_ap
-    root_y0 = root_height(sk, np.zeros((1, 2)), rot[:1, 0], feet, style.lock_knee_deg)[0]
+    root_z = habit.com_ahead_cm + sway_ap
+    root_y0 = root_height(sk, np.zeros((1, 2)), rot[:1, 0], feet, habit.lock_knee_deg)[0]
     drop = np.radians(style.pelvis_drop_deg) * w
     yaw = np.radians(style.pelvis_yaw_deg * w + yaw_off)
     rot[:, 0] = euler_q(flex=sway_ap / root_y0, axial=yaw, lateral=drop - sway_ml / root_y0)
     root_xz = np.stack([root_x, root_z], axis=-1)
-    root_pos = np.stack([root_x, root_height(sk, root_xz, rot[:, 0], feet, style.lock_knee_deg), root_z], axis=-1)
+    root_pos = np.stack([root_x, root_height(sk, root_xz, rot[:, 0], feet, habit.lock_knee_deg), root_z], axis=-1)
     solve_legs(sk, rot, root_pos, feet)
 
     # Trunk: habitual lean, lateral bend back over the pelvis, turn back towards the front,
@@ -260,7 +259,7 @@ def generate_idle(subject: Subject, params: IdleParams, rng: np.random.Generator
     turn = heading_quat(yaw)
     for i, (sign, side) in enumerate(((1.0, "left"), (-1.0, "right"))):
         elbow = subject.elbow_flex_deg + elbow_off + np.degrees(arm_noise[:, i, 0])
-        hang = hanging_hand_offsets(sk, elbow, style.arm_abduction_deg)[:, i]
+        hang = hanging_hand_offsets(sk, elbow, habit.arm_abduction_deg)[:, i]
         swing = euler_q(flex=-arm_noise[:, i, 1], lateral=-sign * arm_noise[:, i, 2])
         target = pos[:, rig.side(side, "Arm")] + qrot(qmul(turn, swing), hang)
         solve_arm(sk, rot, root_pos, side, target, elbow_pole(turn, side))

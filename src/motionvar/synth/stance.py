@@ -21,6 +21,8 @@ from ..core.kinematics import fk
 from ..core.quaternions import qidentity, qinv, qmul, qrot, quat_about_axis
 from ..core.skeleton import Skeleton
 from .ik import two_bone_ik
+from .signals import subject_rng
+from .subjects import Subject
 
 SIDES = ("left", "right")
 _X, _Y, _Z = np.eye(3)
@@ -69,6 +71,38 @@ class Feet:
     def forward(self) -> np.ndarray:
         """(2, 3) each foot's forward direction (its toe line)."""
         return qrot(self.rotations, np.broadcast_to(_Z, (2, 3)))
+
+
+@dataclass(frozen=True)
+class StanceHabit:
+    """How a subject stands (personal, from :func:`stance_habit`).
+
+    - width_cm: ankle spacing, 15-28 cm × height scale; toe_out_deg: 3-12° per foot.
+      Self-selected quiet stance: heels ≈ 17 cm apart, feet ≈ 14° apart (McIlroy & Maki 1997).
+    - com_ahead_cm: root ahead of the ankle line, 2-5 cm × height scale (the centre of
+      mass lies a few cm in front of the ankles in quiet standing, Winter 2009).
+    - lock_knee_deg: flexion of a "straight" standing knee, 1-5° (GAIT.md: loaded leg straight).
+    - arm_abduction_deg: relaxed arms hang 4-12° out from vertical, clear of the hips.
+    """
+
+    width_cm: float
+    toe_out_deg: float
+    com_ahead_cm: float
+    lock_knee_deg: float
+    arm_abduction_deg: float
+
+
+def stance_habit(subject: Subject) -> StanceHabit:
+    """The subject's :class:`StanceHabit`; the same for all of the subject's clips."""
+    r = subject_rng(subject, "stance")
+    h = subject.height_scale
+    return StanceHabit(
+        width_cm=float(r.uniform(15.0, 28.0) * h),
+        toe_out_deg=float(r.uniform(3.0, 12.0)),
+        com_ahead_cm=float(r.uniform(2.0, 5.0) * h),
+        lock_knee_deg=float(r.uniform(1.0, 5.0)),
+        arm_abduction_deg=float(r.uniform(4.0, 12.0)),
+    )
 
 
 def euler_q(flex: np.ndarray | float = 0.0, axial: np.ndarray | float = 0.0, lateral: np.ndarray | float = 0.0) -> np.ndarray:
@@ -210,13 +244,16 @@ def elbow_pole(heading_rot: np.ndarray, side: str) -> np.ndarray:
     return qrot(heading_rot, np.broadcast_to(v / np.linalg.norm(v), heading_rot.shape[:-1] + (3,)))
 
 
-def body_com(positions: np.ndarray, skeleton: Skeleton) -> np.ndarray:
+def body_com(positions: np.ndarray, skeleton: Skeleton, arms: bool = True) -> np.ndarray:
     """(..., 3) whole-body centre of mass from joint positions (..., J, 3), Winter's segment
-    table (module constants); the head's COM is taken 4 cm above the Head joint along the neck."""
+    table (module constants); the head's COM is taken half the neck length above the Head
+    joint. ``arms=False`` gives the centre of mass of the body without the arms."""
     idx = skeleton.index
     com = np.zeros(positions.shape[:-2] + (3,))
+    total = 0.0
     for s in ("Left", "Right"):
-        for prox, dist, mass, frac in _SEGMENTS:
+        for prox, dist, mass, frac in _SEGMENTS if arms else _SEGMENTS[:3]:
+            total += mass
             p, d = positions[..., idx(prox.format(s=s)), :], positions[..., idx(dist.format(s=s)), :]
             com += mass * (p + frac * (d - p))
     hip_mid = 0.5 * (positions[..., idx("LeftUpLeg"), :] + positions[..., idx("RightUpLeg"), :])
@@ -224,7 +261,7 @@ def body_com(positions: np.ndarray, skeleton: Skeleton) -> np.ndarray:
     com += _TRUNK_MASS * 0.5 * (hip_mid + sh_mid)
     neck, head = positions[..., idx("Neck1"), :], positions[..., idx("Head"), :]
     com += _HEAD_MASS * (head + 0.5 * (head - neck))
-    return com
+    return com / (total + _TRUNK_MASS + _HEAD_MASS)
 
 
 def heading_quat(heading: np.ndarray | float) -> np.ndarray:
@@ -243,6 +280,14 @@ def to_world(
     rot = rotations.copy()
     rot[:, 0] = qmul(np.broadcast_to(q, rot[:, 0].shape), rot[:, 0])
     return pos, rot
+
+
+def to_body_frame(points: np.ndarray, heading_deg: float, start_xz: tuple[float, float]) -> np.ndarray:
+    """World points (..., 3) into the body frame of a clip made by :func:`to_world` with
+    ``heading`` = radians(heading_deg) and ``start_xz`` (the inverse of that placement)."""
+    q = heading_quat(-np.radians(heading_deg))
+    p = np.asarray(points, dtype=float) - np.array([start_xz[0], 0.0, start_xz[1]])
+    return qrot(np.broadcast_to(q, p.shape[:-1] + (4,)), p)
 
 
 def identity_rotations(n_frames: int, skeleton: Skeleton) -> np.ndarray:
