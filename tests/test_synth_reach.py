@@ -7,7 +7,7 @@ from motionvar.core.quaternions import qmul, qnormalize, qrot
 from motionvar.synth.ik import two_bone_ik
 from motionvar.synth.intervals import format_intervals, parse_intervals, parse_ranges
 from motionvar.synth.reach import REGIONS, ReachParams, generate_pick, generate_place, reach_style, target_grid
-from motionvar.synth.stance import to_body_frame
+from motionvar.synth.stance import body_com, to_body_frame
 from motionvar.synth.subjects import make_subjects
 
 SUBJECTS = make_subjects(5, seed=11)
@@ -99,6 +99,18 @@ def test_start_and_end_poses(clips):
         for f in (0, -1):
             g = 1 if f == 0 else -2
             assert np.abs(p[f] - p[g]).max() * m.fps < 1.0
+
+
+def test_centre_of_mass_stays_over_the_feet(clips):
+    """Hips move back as the trunk bends: the whole-body COM (arms included) stays between
+    the ankles (minus a heel length of 5 cm) and the toes."""
+    for kind, region, subject, m, truth in clips:
+        sk = m.skeleton
+        p = _body_positions(m, truth)
+        com = body_com(p, sk)
+        heel = p[0, [sk.index("LeftFoot"), sk.index("RightFoot")], 2].min() - 5.0
+        toe = p[0, [sk.index("LeftToeBase"), sk.index("RightToeBase")], 2].max()
+        assert heel < com[:, 2].min() and com[:, 2].max() < toe, (kind, region)
 
 
 def test_low_targets_bend_more_than_high(clips):

@@ -255,14 +255,15 @@ def generate_idle(subject: Subject, params: IdleParams, rng: np.random.Generator
         rot[:, rig.side(side, "Shoulder")] = euler_q(lateral=sign * lift)
 
     # Arms hang from the shoulders (gravity frame turned with the pelvis), elbows at the habit.
-    pos = fk(rot, root_pos, sk.offsets, sk.parents)
+    frames = fk(rot, root_pos, sk.offsets, sk.parents, return_rotations=True)
+    pos = frames[0]
     turn = heading_quat(yaw)
     for i, (sign, side) in enumerate(((1.0, "left"), (-1.0, "right"))):
         elbow = subject.elbow_flex_deg + elbow_off + np.degrees(arm_noise[:, i, 0])
         hang = hanging_hand_offsets(sk, elbow, habit.arm_abduction_deg)[:, i]
         swing = euler_q(flex=-arm_noise[:, i, 1], lateral=-sign * arm_noise[:, i, 2])
         target = pos[:, rig.side(side, "Arm")] + qrot(qmul(turn, swing), hang)
-        solve_arm(sk, rot, root_pos, side, target, elbow_pole(turn, side))
+        solve_arm(sk, rot, root_pos, side, target, elbow_pole(turn, side), frames=frames)
 
     root_w, rot_w = to_world(root_pos, rot, heading, start_xz)
     postures, segments = _truth_intervals(rests, fps, n)

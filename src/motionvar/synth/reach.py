@@ -235,16 +235,18 @@ class _Body:
         solve_legs(sk, rot, root, self.feet)
         return root, rot
 
-    def balance(self, s: np.ndarray, q: np.ndarray, iterations: int = 3) -> np.ndarray:
+    def balance(self, s: np.ndarray, q: np.ndarray, iterations: int = 3) -> tuple[np.ndarray, np.ndarray]:
         """Hip back-shift (K,) keeping the centre of mass of legs, trunk and head at its
-        standing (s = 0) position over the feet; fixed-point iteration."""
+        standing position over the feet (fixed-point iteration; ``s[0]`` must be 0), and the
+        joint positions (K, J, 3) of the posture with that back-shift."""
         sk = self.skeleton
-        com = lambda root, rot: body_com(fk(rot, root, sk.offsets, sk.parents), sk, arms=False)[:, 2]  # noqa: E731
-        goal = com(*self.pose(np.zeros(1), np.zeros(1), np.zeros(1)))[0]
         back = np.zeros(np.broadcast_shapes(np.shape(s), np.shape(q)))
-        for _ in range(iterations):
-            back = back + (com(*self.pose(s, q, back)) - goal) / 0.85  # the root carries ~85 % of that mass
-        return back
+        for it in range(iterations):
+            pos = fk(*self.pose(s, q, back)[::-1], sk.offsets, sk.parents)
+            if it + 1 < iterations:
+                com = body_com(pos, sk, arms=False)[:, 2]
+                back = back + (com - com[0]) / 0.85  # the root carries ~85 % of that mass
+        return back, pos
 
 
 def _generate(subject: Subject, params: ReachParams, rng: np.random.Generator, kind: str) -> tuple[Motion, dict]:
@@ -280,9 +282,7 @@ def _generate(subject: Subject, params: ReachParams, rng: np.random.Generator, k
     # with the personal strategy q, or squatting more when that cannot get there.
     strategies = np.array([q] + [x for x in (0.25, 0.5, 0.75, 1.0) if x > q])
     s_g, q_g = (a.ravel() for a in np.meshgrid(_GRID, strategies))
-    back_g = body.balance(s_g, q_g)
-    root_g, rot_g = body.pose(s_g, q_g, back_g)
-    pos_g = fk(rot_g, root_g, sk.offsets, sk.parents)
+    back_g, pos_g = body.balance(s_g, q_g)
     shoulders = pos_g[:, [rig.side(side, "Arm") for side in SIDES]]
     dist = np.max(np.linalg.norm(shoulders - grips, axis=-1), axis=-1)
     ok = np.flatnonzero(dist <= d_pref)  # rows ordered by strategy, then lowering
@@ -340,7 +340,8 @@ def _generate(subject: Subject, params: ReachParams, rng: np.random.Generator, k
 
     back = np.interp(s, _GRID, back_g)
     root, rot = body.pose(s, q, back, gaze=attention * np.interp(s, _GRID, gaze_g))
-    sh_mid = fk(rot, root, sk.offsets, sk.parents)[:, arms].mean(axis=1)
+    frames = fk(rot, root, sk.offsets, sk.parents, return_rotations=True)
+    sh_mid = frames[0][:, arms].mean(axis=1)
     centre = k0[0] + np.outer(m_hand, k1[0] - k0[0]) + np.outer(m_hold, k1b[0] - k1[0]) + np.outer(u_hand, k2[0] - k1b[0])
     bow = np.array([0.0, 0.0, 1.0])
     for (a, b), m in (((k0, k1), m_hand), ((k1b, k2), u_hand)):
@@ -351,7 +352,7 @@ def _generate(subject: Subject, params: ReachParams, rng: np.random.Generator, k
     centre_w = sh_mid + centre
     turn = heading_quat(s * body.yaw)
     for i, side in enumerate(SIDES):
-        solve_arm(sk, rot, root, side, centre_w + spacing[:, i], elbow_pole(turn, side))
+        solve_arm(sk, rot, root, side, centre_w + spacing[:, i], elbow_pole(turn, side), frames=frames)
 
     frame_b = int(np.ceil(t_b * fps - 1e-9))  # first frame with the hands at the grips
     root_w, rot_w = to_world(root, rot, heading, start_xz)

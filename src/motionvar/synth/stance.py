@@ -193,13 +193,19 @@ def solve_legs(skeleton: Skeleton, rotations: np.ndarray, root_pos: np.ndarray, 
 
 def solve_arm(
     skeleton: Skeleton, rotations: np.ndarray, root_pos: np.ndarray, side: str, target: np.ndarray,
-    pole: np.ndarray, max_extension: float = 0.999,
+    pole: np.ndarray, max_extension: float = 0.999, frames: tuple[np.ndarray, np.ndarray] | None = None,
 ) -> np.ndarray:
     """Pose one arm in place so that the wrist (``*Hand`` joint) reaches ``target`` (T, 3),
-    the elbow bending towards ``pole``; returns the wrist positions reached (T, 3)."""
+    the elbow bending towards ``pole``; returns the wrist positions reached (T, 3).
+
+    ``frames``: global joint positions and rotations of ``rotations`` (``fk(...,
+    return_rotations=True)``), to share one forward-kinematics pass between both arms
+    (one arm's rotations do not move the other's shoulder); computed when None."""
     rig = Rig(skeleton)
     arm, fore, hand, clav = (rig.side(side, p) for p in ("Arm", "ForeArm", "Hand", "Shoulder"))
-    pos, grot = fk(rotations, root_pos, skeleton.offsets, skeleton.parents, return_rotations=True)
+    if frames is None:
+        frames = fk(rotations, root_pos, skeleton.offsets, skeleton.parents, return_rotations=True)
+    pos, grot = frames
     hinge = -_Y if side == "left" else _Y  # elbow flexion brings the T-pose forearm forwards
     q_arm, q_fore, reached = two_bone_ik(
         pos[:, arm], target, grot[:, clav], skeleton.offsets[fore], skeleton.offsets[hand], hinge, pole,
