@@ -7,10 +7,10 @@ balance to another posture in a transition of about 0.5–1.5 s. The next catego
 from the subject's ``idle_foot_preference`` (the category transition graph of Sec. 5.3,
 Fig. 3, here with P(c ⇒ s) = preference of s, so the preference is the share of time in
 each category; c ⇒ c is a re-adjustment within the category); each rest is a slightly
-different posture of its category (the posture sets Q_c). On top run continuous small variations (Sec. 6): postural
-sway, breathing, small head and arm movements.
+different posture of its category (the posture sets Q_c). On top run continuous small
+variations (Sec. 6): postural sway, breathing, small head and arm movements.
 
-Biomechanics (GAIT.md, "Quiet standing"; sources in each constant's comment):
+Biomechanics (GAIT.md, "Quiet standing"; ranges of the personal traits in brackets):
 - Loaded leg straight (knee ``lock_knee_deg``, 1–5°), the root height follows from it;
   the pelvis drops towards the unloaded side by ``pelvis_drop_deg`` (2–5°, "a few
   degrees"), which bends the unloaded knee; the trunk bends back over the pelvis so the
@@ -259,7 +259,7 @@ def generate_idle(subject: Subject, params: IdleParams, rng: np.random.Generator
     pos = frames[0]
     turn = heading_quat(yaw)
     for i, (sign, side) in enumerate(((1.0, "left"), (-1.0, "right"))):
-        elbow = subject.elbow_flex_deg + elbow_off + np.degrees(arm_noise[:, i, 0])
+        elbow = np.maximum(subject.elbow_flex_deg + elbow_off + np.degrees(arm_noise[:, i, 0]), 3.0)
         hang = hanging_hand_offsets(sk, elbow, habit.arm_abduction_deg)[:, i]
         swing = euler_q(flex=-arm_noise[:, i, 1], lateral=-sign * arm_noise[:, i, 2])
         target = pos[:, rig.side(side, "Arm")] + qrot(qmul(turn, swing), hang)

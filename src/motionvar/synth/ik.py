@@ -22,7 +22,7 @@ def _unit(v: np.ndarray) -> np.ndarray:
     return v / np.maximum(np.linalg.norm(v, axis=-1, keepdims=True), _EPS)
 
 
-def _rotate_about(axis: np.ndarray, theta: np.ndarray, v: np.ndarray) -> np.ndarray:
+def rotate_about(axis: np.ndarray, theta: np.ndarray, v: np.ndarray) -> np.ndarray:
     """Rodrigues: rotate the fixed vector v (3,) about the fixed unit axis (3,) by θ (T,)."""
     c, s = np.cos(theta)[..., None], np.sin(theta)[..., None]
     return v * c + np.cross(axis, v) * s + axis * np.dot(axis, v) * (1.0 - c)
@@ -80,12 +80,12 @@ def two_bone_ik(
     theta = hinge_angle(off_mid, off_end, h, length)
 
     # Frame of the chain in A's rest coordinates: u along A->C, n the hinge, w = u x n.
-    e_loc = off_mid + _rotate_about(h, theta, off_end)
+    e_loc = off_mid + rotate_about(h, theta, off_end)
     u_l = _unit(e_loc)
     n_l = _unit(h - np.sum(u_l * h, axis=-1, keepdims=True) * u_l)
     w_l = np.cross(u_l, n_l)
     # On which side of A->C the middle joint lies (sign along w), from a clearly bent chain.
-    e_ref = off_mid + _rotate_about(h, np.array(hinge_angle(off_mid, off_end, h, 0.7 * (l1 + l2))), off_end)
+    e_ref = off_mid + rotate_about(h, np.array(hinge_angle(off_mid, off_end, h, 0.7 * (l1 + l2))), off_end)
     u_ref = _unit(e_ref)
     side = np.sign(np.dot(off_mid - np.dot(off_mid, u_ref) * u_ref, np.cross(u_ref, h)))
 

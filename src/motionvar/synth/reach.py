@@ -342,7 +342,8 @@ def _generate(subject: Subject, params: ReachParams, rng: np.random.Generator, k
     root, rot = body.pose(s, q, back, gaze=attention * np.interp(s, _GRID, gaze_g))
     frames = fk(rot, root, sk.offsets, sk.parents, return_rotations=True)
     sh_mid = frames[0][:, arms].mean(axis=1)
-    centre = k0[0] + np.outer(m_hand, k1[0] - k0[0]) + np.outer(m_hold, k1b[0] - k1[0]) + np.outer(u_hand, k2[0] - k1b[0])
+    centre = k0[0] + np.outer(m_hand, k1[0] - k0[0]) + np.outer(m_hold, k1b[0] - k1[0])
+    centre = centre + np.outer(u_hand, k2[0] - k1b[0])
     bow = np.array([0.0, 0.0, 1.0])
     for (a, b), m in (((k0, k1), m_hand), ((k1b, k2), u_hand)):
         amp = min(0.1 * np.linalg.norm(b[0] - a[0]), 6.0)

@@ -20,7 +20,7 @@ import numpy as np
 from ..core.kinematics import fk
 from ..core.quaternions import qidentity, qinv, qmul, qrot, quat_about_axis
 from ..core.skeleton import Skeleton
-from .ik import two_bone_ik
+from .ik import rotate_about, two_bone_ik
 from .signals import subject_rng
 from .subjects import Subject
 
@@ -105,7 +105,9 @@ def stance_habit(subject: Subject) -> StanceHabit:
     )
 
 
-def euler_q(flex: np.ndarray | float = 0.0, axial: np.ndarray | float = 0.0, lateral: np.ndarray | float = 0.0) -> np.ndarray:
+def euler_q(
+    flex: np.ndarray | float = 0.0, axial: np.ndarray | float = 0.0, lateral: np.ndarray | float = 0.0
+) -> np.ndarray:
     """Local rotation (..., 4) from flexion (about x), axial rotation (about y) and lateral
     bending (about z) in radians, applied as axial * flex * lateral."""
     flex, axial, lateral = np.broadcast_arrays(*(np.asarray(a, dtype=float) for a in (flex, axial, lateral)))
@@ -131,8 +133,7 @@ def leg_reach(skeleton: Skeleton, side: str, knee_deg: np.ndarray | float) -> np
     a = rig.offset(side.capitalize() + "Leg")
     b = rig.offset(side.capitalize() + "Foot")
     k = np.radians(np.asarray(knee_deg, dtype=float))
-    rotated = a + (b * np.cos(k)[..., None] + np.cross(_X, b) * np.sin(k)[..., None] + _X * b[0] * (1 - np.cos(k))[..., None])
-    return np.linalg.norm(rotated, axis=-1)
+    return np.linalg.norm(a + rotate_about(_X, k, b), axis=-1)
 
 
 def hip_offsets(skeleton: Skeleton, root_rot: np.ndarray) -> np.ndarray:
