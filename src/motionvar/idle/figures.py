@@ -72,7 +72,7 @@ def plot_category_graph(ax: Axes, graph: CategoryGraph, title: str = "") -> None
             ax.text(*mid, f"{p:.2f}", ha="center", va="center", fontsize=9, color="tab:red",
                     bbox=dict(boxstyle="round,pad=0.15", fc="white", ec="tab:red", lw=0.5))
     ax.set_xlim(-2.6, 2.6)
-    ax.set_ylim(-2.4, 2.6)
+    ax.set_ylim(-1.7, 2.4)
     ax.set_aspect("equal")
     ax.axis("off")
     if title:
@@ -93,3 +93,58 @@ def plot_fitted_animation(
     ax.set_xlabel("time (s)")
     ax.set_ylabel(f"PC {pc + 1}")
     ax.legend(fontsize=8)
+
+
+def plot_identification(ax_bar: Axes, ax_conf: Axes, table, confusion: dict) -> None:
+    """Accuracy per source and feature set with the chance level; confusion matrix of the
+    generated windows (rows: true subject, columns: named subject)."""
+    sources = list(dict.fromkeys(table["source"]))
+    sets = list(dict.fromkeys(table["features"]))
+    width = 0.8 / len(sets)
+    x = np.arange(len(sources))
+    for k, fs in enumerate(sets):
+        acc = [float(table.loc[(table.source == s) & (table.features == fs), "accuracy"].iloc[0]) for s in sources]
+        bars = ax_bar.bar(x + (k - (len(sets) - 1) / 2) * width, acc, width, label=f"features: {fs}")
+        ax_bar.bar_label(bars, fmt="%.2f", fontsize=8)
+    ax_bar.axhline(float(table["chance"].iloc[0]), color="k", ls="--", lw=1, label="chance (1/N)")
+    ax_bar.set_xticks(x, [s.replace(" (", "\n(") for s in sources], fontsize=8)
+    ax_bar.set_ylim(0, 1.08)
+    ax_bar.set_ylabel("subject named correctly (share of windows)")
+    ax_bar.legend(fontsize=8, loc="upper right")
+    m = confusion["confusion"]
+    ax_conf.imshow(m, cmap="Blues")
+    labels = confusion["labels"]
+    ticks = np.arange(len(labels))
+    step = max(1, len(labels) // 12)
+    ax_conf.set_xticks(ticks[::step], labels[::step], fontsize=7)
+    ax_conf.set_yticks(ticks[::step], labels[::step], fontsize=7)
+    ax_conf.set_xlabel("subject named by the classifier")
+    ax_conf.set_ylabel("subject of the generated motion")
+    ax_conf.set_title("generated windows, all features", fontsize=9)
+
+
+def plot_repetition(ax: Axes, pooled: dict[str, np.ndarray]) -> None:
+    """Best-match normalised cross-correlation of every window, per source (box plots)."""
+    names = list(pooled)
+    ax.boxplot([pooled[k] for k in names], vert=False, widths=0.6, showfliers=False)
+    for k, name in enumerate(names):
+        v = pooled[name]
+        jitter = np.random.default_rng(k).uniform(-0.15, 0.15, len(v))
+        ax.plot(v, k + 1 + jitter, ".", ms=2, alpha=0.4, color="tab:blue")
+    ax.set_yticks(np.arange(1, len(names) + 1), names, fontsize=8)
+    ax.invert_yaxis()
+    ax.set_xlim(0, 1.02)
+    ax.set_xlabel("highest normalised cross-correlation with another window (1 = exact repeat)")
+
+
+def plot_speed(ax: Axes, table) -> None:
+    """Frames generated per second per subject against the playback rate (log scale)."""
+    x = np.arange(len(table))
+    bars = ax.bar(x, table["frames_per_second"], color="tab:blue", label="generated (balance + variations + PC -> rotations)")
+    ax.bar_label(bars, labels=[f"{r:.0f}x" for r in table["realtime_ratio"]], fontsize=8)
+    ax.axhline(float(table["playback_fps"].iloc[0]), color="tab:red", ls="--", label="playback rate")
+    ax.set_yscale("log")
+    ax.set_ylim(float(table["playback_fps"].min()) / 5, float(table["frames_per_second"].max()) * 30)
+    ax.set_xticks(x, [f"subject {s}" for s in table["subject"]], fontsize=8)
+    ax.set_ylabel("frames per second")
+    ax.legend(fontsize=8, loc="upper center")

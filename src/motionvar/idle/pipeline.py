@@ -1,0 +1,168 @@
+"""From a dataset's idle clips to one idle-motion database per person (Egges et al. 2004,
+Sec. 5.6): select the idle clips, hold some out per subject, fit the posture PCA on the
+training clips of all subjects (Sec. 3.2) and build each subject's database; check the
+resting-posture categories against the ground truth where the data has one.
+"""
+
+from __future__ import annotations
+
+import os
+import pickle
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+
+from ..core.joint_map import JointMap
+from ..core.motion import Motion
+from ..core.skeleton import Skeleton
+from ..io.dataset import MotionDataset
+from .categories import frame_labels, parse_postures, segment_agreement
+from .database import IdleDatabase, IdleSettings, Recording, analyse_recording, build_database
+from .pca import PosturePCA
+
+
+@dataclass
+class IdleModel:
+    """The fitted idle engine of a dataset: the shared posture PCA, one database per
+    subject, each subject's skeleton, and which clips trained and which were held out."""
+
+    pca: PosturePCA
+    databases: dict[str, IdleDatabase]
+    skeletons: dict[str, Skeleton]
+    train_clips: dict[str, list[str]]
+    test_clips: dict[str, list[str]]
+
+
+def idle_clips(dataset: MotionDataset, source: str) -> dict[str, list[tuple[pd.Series, Motion]]]:
+    """Subject -> [(metadata row, Motion)] of the clips with behaviour ``idle``, by clip_id."""
+    meta = dataset.metadata
+    missing = [c for c in ("clip_id", "subject", "behaviour") if c not in meta.columns]
+    if missing:
+        raise ValueError(f"{source}: metadata lacks columns {missing}")
+    mask = (meta["behaviour"] == "idle").to_numpy()
+    if not mask.any():
+        raise ValueError(f"{source}: no idle clips (behaviour == 'idle'); Egges 2004 needs recordings of standing")
+    out: dict[str, list[tuple[pd.Series, Motion]]] = {}
+    for row, motion in sorted(dataset.select(mask), key=lambda rm: str(rm[0]["clip_id"])):
+        out.setdefault(str(row["subject"]), []).append((row, motion))
+    return dict(sorted(out.items()))
+
+
+def split_clips(
+    clips: dict[str, list[tuple[pd.Series, Motion]]], held_out: int
+) -> tuple[dict[str, list[tuple[pd.Series, Motion]]], dict[str, list[tuple[pd.Series, Motion]]]]:
+    """Per subject, the last ``held_out`` clips (by clip_id) for testing, the rest for
+    training; ValueError naming the subjects with too few clips."""
+    short = [s for s, c in clips.items() if len(c) <= held_out]
+    if short:
+        raise ValueError(
+            f"subjects {short} have {held_out} or fewer idle clips; need more than idle.held_out_clips = {held_out}"
+        )
+    train = {s: c[: len(c) - held_out] for s, c in clips.items()}
+    test = {s: c[len(c) - held_out:] for s, c in clips.items()}
+    return train, test
+
+
+def fit_idle_model(
+    train: dict[str, list[tuple[pd.Series, Motion]]],
+    test: dict[str, list[tuple[pd.Series, Motion]]],
+    joint_map: JointMap,
+    settings: IdleSettings,
+    translation_scale: float = 0.01,
+    seed: int = 0,
+) -> tuple[IdleModel, dict[str, list[Recording]]]:
+    """Fit the PCA on every training clip, then one database per subject. Returns the
+    model and the analysed training recordings (PC values, support ratio) per subject."""
+    first = next(iter(train.values()))[0][1]
+    joint_map.validate(first.skeleton, source="idle: joint map")
+    pca = PosturePCA.fit([m for clips in train.values() for _, m in clips], translation_scale=translation_scale)
+    recordings, databases = {}, {}
+    for subject, clips in train.items():
+        recordings[subject] = [analyse_recording(m, pca, joint_map, str(row["clip_id"])) for row, m in clips]
+        try:
+            databases[subject] = build_database(recordings[subject], pca, settings, subject, seed)
+        except ValueError as exc:
+            raise ValueError(f"idle database of subject {subject}: {exc}") from exc
+    model = IdleModel(
+        pca=pca,
+        databases=databases,
+        skeletons={s: c[0][1].skeleton for s, c in train.items()},
+        train_clips={s: [str(r["clip_id"]) for r, _ in c] for s, c in train.items()},
+        test_clips={s: [str(r["clip_id"]) for r, _ in c] for s, c in test.items()},
+    )
+    return model, recordings
+
+
+def category_check(model: IdleModel, train: dict[str, list[tuple[pd.Series, Motion]]]) -> pd.DataFrame:
+    """Per subject: the categories found, resting segments, transitions, and (where the
+    metadata has ``idle_postures``) the share of resting segments whose category is the
+    true one and the adjusted Rand index."""
+    rows = []
+    for subject, db in model.databases.items():
+        found, truth = [], []
+        for row, motion in train[subject]:
+            segs, cats = db.segments[str(row["clip_id"])]
+            spec = row.get("idle_postures", "")
+            if isinstance(spec, str) and spec:
+                labels = frame_labels(parse_postures(spec, str(row["clip_id"])), motion.n_frames)
+                found.append((segs, [db.categories.names[c] for c in cats], labels))
+        acc = ari = float("nan")
+        if found:
+            names = [n for f in found for n in f[1]]
+            labels = np.concatenate([f[2] for f in found])
+            offsets = np.concatenate([[0], np.cumsum([len(f[2]) for f in found])[:-1]])
+            segs = np.concatenate([f[0] + o for f, o in zip(found, offsets)])
+            acc, ari = segment_agreement(segs, names, labels)
+        rows.append({
+            "subject": subject,
+            "categories": " ".join(db.categories.names),
+            "resting_segments": int(sum(len(s) for s, _ in db.segments.values())),
+            "balance_shifts": len(db.animations),
+            "rest_speed_threshold": db.rest_speed,
+            "category_accuracy": acc,
+            "category_ari": ari,
+        })
+    return pd.DataFrame(rows)
+
+
+def save_model(path: str | Path, model: IdleModel) -> None:
+    """Pickle the model; a failed write leaves no file."""
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    tmp = path.with_name(f".{path.name}.tmp")
+    try:
+        with open(tmp, "wb") as f:
+            pickle.dump(model, f, protocol=pickle.HIGHEST_PROTOCOL)
+        os.replace(tmp, path)
+    finally:
+        tmp.unlink(missing_ok=True)
+
+
+def load_model(path: str | Path) -> IdleModel:
+    """Read a model written by :func:`save_model`; ValueError naming the file otherwise."""
+    try:
+        with open(path, "rb") as f:
+            model = pickle.load(f)
+    except (OSError, pickle.UnpicklingError, EOFError, AttributeError) as exc:
+        raise ValueError(f"{path}: not a readable idle model ({exc}); rerun rule egges2004_model") from exc
+    if not isinstance(model, IdleModel):
+        raise ValueError(f"{path}: holds a {type(model).__name__}, not an IdleModel")
+    return model
+
+
+def model_recordings(
+    model: IdleModel, dataset: MotionDataset, joint_map: JointMap, source: str
+) -> tuple[dict[str, list[Recording]], dict[str, list[Recording]]]:
+    """The model's training and held-out clips of ``dataset``, analysed (PC values and
+    support ratio), per subject; ValueError when the dataset lacks a clip of the model."""
+    clips = {str(row["clip_id"]): m for rows in idle_clips(dataset, source).values() for row, m in rows}
+
+    def analyse(ids: dict[str, list[str]]) -> dict[str, list[Recording]]:
+        missing = [c for cs in ids.values() for c in cs if c not in clips]
+        if missing:
+            raise ValueError(f"{source}: idle clips {missing[:5]} of the model are not in the dataset; rerun egges2004_model")
+        return {s: [analyse_recording(clips[c], model.pca, joint_map, c) for c in cs] for s, cs in ids.items()}
+
+    return analyse(model.train_clips), analyse(model.test_clips)
