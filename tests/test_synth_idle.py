@@ -27,7 +27,7 @@ def clip():
 def _rest_frames(truth, n):
     """Boolean mask of the frames inside a rest (not a shift)."""
     mask = np.zeros(n, dtype=bool)
-    for name, a, b in parse_intervals(truth["segments"]):
+    for name, a, b in parse_intervals(truth["idle_phases"]):
         if name == "rest":
             mask[a:b] = True
     return mask
@@ -82,7 +82,7 @@ def test_truth_intervals_cover_the_clip(clip):
     assert all(a[2] == b[1] for a, b in zip(post, post[1:]))
     assert all(c in CATEGORIES for c, _, _ in post)
     assert all(a[0] != b[0] for a, b in zip(post, post[1:]))  # repeats are merged
-    seg = parse_intervals(truth["segments"])
+    seg = parse_intervals(truth["idle_phases"])
     assert seg[0][1] == 0 and seg[-1][2] == m.n_frames
     assert all(a[2] == b[1] for a, b in zip(seg, seg[1:]))
     shifts = [(b - a) / m.fps for name, a, b in seg[:-1] if name == "shift"]
@@ -137,7 +137,7 @@ def test_sway_rms_and_spectrum():
         m, truth = _clip(subject, seed=7, duration_s=120.0)
         com = body_com(m.positions(), m.skeleton)
         dev = []
-        for name, a, b in parse_intervals(truth["segments"]):
+        for name, a, b in parse_intervals(truth["idle_phases"]):
             if name == "rest" and b - a > 2 * m.fps:
                 c = com[a:b, [0, 2]]
                 dev.append(c - c.mean(axis=0))

@@ -172,10 +172,10 @@ def _posture_tracks(rests: list[Rest], t: np.ndarray) -> np.ndarray:
 
 
 def _truth_intervals(rests: list[Rest], fps: float, n: int) -> tuple[str, str]:
-    """(idle_postures, segments): categories split at the middle of each shift; segments
+    """(idle_postures, idle_phases): categories split at the middle of each shift; phases
     name each rest ``rest`` and each transition ``shift``."""
     frame = lambda s: int(np.clip(round(s * fps), 0, n))  # noqa: E731
-    postures, segments = [], []
+    postures, phases = [], []
     for i, r in enumerate(rests):
         a = 0 if i == 0 else frame(0.5 * (rests[i - 1].stop + rests[i - 1].shift_stop))
         b = frame(0.5 * (r.stop + r.shift_stop)) if i + 1 < len(rests) else n
@@ -185,15 +185,16 @@ def _truth_intervals(rests: list[Rest], fps: float, n: int) -> tuple[str, str]:
             postures.append((r.category, a, b))
         for name, lo, hi in (("rest", r.start, r.stop), ("shift", r.stop, r.shift_stop)):
             if frame(hi) > frame(lo):
-                segments.append((name, frame(lo), frame(hi)))
-    return format_intervals(postures), format_intervals(segments)
+                phases.append((name, frame(lo), frame(hi)))
+    return format_intervals(postures), format_intervals(phases)
 
 
 def generate_idle(subject: Subject, params: IdleParams, rng: np.random.Generator) -> tuple[Motion, dict]:
     """Idle standing of ``params.duration_s`` seconds with balance shifts and small variations.
 
     Returns the Motion (at ``params.fps``) and its truth: variant ``"standing"``, NaN target,
-    ``segments`` (rest / shift), foot contacts (both feet all the time), ``idle_postures``
+    ``segments`` (one ``idle`` primitive: idle clips are not segmented), ``idle_phases``
+    (rest / shift), foot contacts (both feet all the time), ``idle_postures``
     (left | right | both, split at the middle of each shift) and the stance used.
     """
     params.validate()
@@ -266,11 +267,12 @@ def generate_idle(subject: Subject, params: IdleParams, rng: np.random.Generator
         solve_arm(sk, rot, root_pos, side, target, elbow_pole(turn, side), frames=frames)
 
     root_w, rot_w = to_world(root_pos, rot, heading, start_xz)
-    postures, segments = _truth_intervals(rests, fps, n)
+    postures, phases = _truth_intervals(rests, fps, n)
     truth = {
         "variant": "standing",
         "target_x": float("nan"), "target_y": float("nan"), "target_z": float("nan"),
-        "segments": segments,
+        "segments": format_intervals([("idle", 0, n)]),
+        "idle_phases": phases,
         "left_contacts": format_ranges([(0, n)]),
         "right_contacts": format_ranges([(0, n)]),
         "idle_postures": postures,
