@@ -1,0 +1,166 @@
+"""The synthetic dataset: every subject performs every behaviour a set number of times.
+
+:func:`generate_dataset` returns the clips and one metadata row per clip (the shared
+contract, DESIGN.md "Datasets"): clip_id, subject, behaviour (walk | run | sidestep | pick |
+place | idle), style, variant, primitive ("" for whole clips), the style parameters and
+ground truth (stride_length_cm, speed_cm_s, step_width_cm, turn_deg, target_x/y/z,
+segments, left_contacts, right_contacts, idle_postures; NaN where a column does not apply),
+further per-generator truth (cadence, stance fraction, placement, ...) and the subject's
+traits prefixed ``subj_``.
+
+Randomness: subjects come from ``make_subjects(subjects, seed)``; each (subject, behaviour)
+pair draws from its own stream ``default_rng([seed, subject index, behaviour index])``, so
+changing one behaviour's clip count leaves every other clip unchanged, and the same spec
+gives identical arrays and tables.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from dataclasses import dataclass, fields
+
+import numpy as np
+import pandas as pd
+
+from ..core.motion import Motion
+from .gait_params import sample_run_params, sample_sidestep_params, sample_walk_params
+from .idle import IdleParams, generate_idle
+from .locomotion import generate_run, generate_sidestep, generate_walk
+from .reach import ReachParams, generate_pick, generate_place
+from .styles import STYLES
+from .subjects import Subject, make_subjects
+
+BEHAVIOURS = ("walk", "run", "sidestep", "pick", "place", "idle")
+CONTRACT_COLUMNS = (
+    "clip_id", "subject", "behaviour", "style", "variant", "primitive", "stride_length_cm", "speed_cm_s",
+    "step_width_cm", "turn_deg", "target_x", "target_y", "target_z", "segments", "left_contacts",
+    "right_contacts", "idle_postures",
+)
+TURN_RANGE_DEG = (30.0, 90.0)  # total turn of a turning walk or run
+REACH_REGIONS = ("low", "forward", "high")
+
+
+@dataclass(frozen=True)
+class SynthSpec:
+    """What to generate. Defaults are the full replication (25 subjects × 37 clips, about
+    half a million frames); a CI spec lowers ``subjects`` and the counts.
+
+    Attributes:
+        subjects: number of synthetic persons; seed: the random seed.
+        walks_per_style: straight walks per subject and style (7 styles).
+        turning_walks: neutral walks turning left / right by 30-90° (alternating).
+        runs: runs per subject (forward, left, right, forward, ...).
+        sidesteps: side-step clips (left, right, ...).
+        picks / places: two-hand pick and place clips (regions low, forward, high, ...).
+        idle_clips: idle standing clips of ``idle_duration_s`` seconds each.
+        fps: frame rate of every clip.
+    """
+
+    subjects: int = 25
+    seed: int = 0
+    walks_per_style: int = 2
+    turning_walks: int = 4
+    runs: int = 2
+    sidesteps: int = 2
+    picks: int = 3
+    places: int = 3
+    idle_clips: int = 2
+    idle_duration_s: float = 20.0
+    fps: float = 120.0
+
+    def validate(self) -> None:
+        """ValueError naming the first bad field."""
+        for f in fields(self):
+            v = getattr(self, f.name)
+            if f.name in ("idle_duration_s", "fps"):
+                continue
+            low = 1 if f.name == "subjects" else 0
+            if isinstance(v, bool) or not isinstance(v, (int, np.integer)) or v < low:
+                raise ValueError(f"SynthSpec.{f.name} must be an integer >= {low}; got {v!r}")
+        for name, lo, hi in (("idle_duration_s", 0.5, 3600.0), ("fps", 24.0, 1000.0)):
+            v = getattr(self, name)
+            if isinstance(v, bool) or not isinstance(v, (int, float)) or not (math.isfinite(v) and lo <= v <= hi):
+                raise ValueError(f"SynthSpec.{name} must be a number in [{lo}, {hi}]; got {v!r}")
+
+
+def _turn(rng: np.random.Generator, variant: str) -> float:
+    sign = {"forward": 0.0, "left": 1.0, "right": -1.0}[variant]
+    return sign * float(rng.uniform(*TURN_RANGE_DEG)) if sign else 0.0
+
+
+def _clips(subject: Subject, spec: SynthSpec, behaviour: str, rng: np.random.Generator):
+    """Yield (style, clip-id tag, Motion, truth) for one subject and behaviour, in a fixed
+    order; the truth carries the variant."""
+    fps = spec.fps
+    if behaviour == "walk":
+        for style in STYLES:
+            for _ in range(spec.walks_per_style):
+                m, tr = generate_walk(subject, sample_walk_params(subject, rng, style, fps=fps))
+                yield style, style, m, tr
+        for k in range(spec.turning_walks):
+            variant = ("left", "right")[k % 2]
+            m, tr = generate_walk(subject, sample_walk_params(subject, rng, "neutral", _turn(rng, variant), fps=fps))
+            yield "neutral", variant, m, tr
+    elif behaviour == "run":
+        for k in range(spec.runs):
+            variant = ("forward", "left", "right")[k % 3]
+            m, tr = generate_run(subject, sample_run_params(subject, rng, _turn(rng, variant), fps=fps))
+            yield "neutral", variant, m, tr
+    elif behaviour == "sidestep":
+        for k in range(spec.sidesteps):
+            variant = ("left", "right")[k % 2]
+            m, tr = generate_sidestep(subject, sample_sidestep_params(subject, rng, variant, fps=fps))
+            yield "neutral", variant, m, tr
+    elif behaviour in ("pick", "place"):
+        gen: Callable = generate_pick if behaviour == "pick" else generate_place
+        for k in range(spec.picks if behaviour == "pick" else spec.places):
+            m, tr = gen(subject, ReachParams(region=REACH_REGIONS[k % 3], fps=fps), rng)
+            yield "neutral", tr["variant"], m, tr
+    else:
+        for _ in range(spec.idle_clips):
+            m, tr = generate_idle(subject, IdleParams(duration_s=spec.idle_duration_s, fps=fps), rng)
+            yield "neutral", tr["variant"], m, tr
+
+
+def subject_traits(subject: Subject) -> dict:
+    """The subject's proportions and habits as ``subj_*`` metadata columns."""
+    out = {"subj_leg_length_cm": subject.leg_length_cm}
+    for f in fields(subject):
+        v = getattr(subject, f.name)
+        if f.name == "idle_foot_preference":
+            out.update({f"subj_idle_pref_{c}": float(p) for c, p in zip(("left", "right", "both"), v)})
+        elif isinstance(v, float):
+            out[f"subj_{f.name}"] = v
+    return out
+
+
+def generate_dataset(spec: SynthSpec) -> tuple[list[Motion], pd.DataFrame]:
+    """All clips of ``spec`` (subject by subject, behaviours in :data:`BEHAVIOURS` order) and
+    their metadata table (see the module docstring)."""
+    spec.validate()
+    motions: list[Motion] = []
+    rows: list[dict] = []
+    for i, subject in enumerate(make_subjects(spec.subjects, spec.seed)):
+        traits = subject_traits(subject)
+        for b, behaviour in enumerate(BEHAVIOURS):
+            rng = np.random.default_rng([spec.seed, i, b])
+            counts: dict[str, int] = {}
+            for style, tag, motion, truth in _clips(subject, spec, behaviour, rng):
+                k = counts[tag] = counts.get(tag, -1) + 1
+                row = {c: float("nan") for c in CONTRACT_COLUMNS}
+                row.update(truth)
+                row.update({
+                    "clip_id": f"s{subject.subject_id}_{behaviour}_{tag}_{k:02d}", "subject": subject.subject_id,
+                    "behaviour": behaviour, "style": style, "primitive": "",
+                })
+                if behaviour != "idle":
+                    row["idle_postures"] = float("nan")
+                rows.append({**row, **traits})
+                motions.append(motion)
+    if not rows:
+        raise ValueError("SynthSpec: every clip count is 0; nothing to generate")
+    meta = pd.DataFrame(rows)
+    extras = sorted(c for c in meta.columns if c not in CONTRACT_COLUMNS and not c.startswith("subj_"))
+    traits = [c for c in meta.columns if c.startswith("subj_")]
+    return motions, meta[list(CONTRACT_COLUMNS) + extras + traits]
