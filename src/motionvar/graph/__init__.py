@@ -1,0 +1,35 @@
+"""Morphable Graph (Du 2022 ch. 4; Herrmann et al. 2017): motion primitives with a GMM
+latent density chosen by BIC, space-partitioning trees for constraint search, MAP
+synthesis by Levenberg-Marquardt and graph-walk generation.
+
+- :mod:`.primitive`: :class:`MotionPrimitive` (DTW time warping + SFPCA + GMM/BIC,
+  Sec. 4.4.1, Eq. 4.1): ``fit``, ``sample``, ``log_prob``, ``key_frame_pose`` (f_k(M(s))
+  at key frames), ``to_motions`` (back-projection), ``save``/``load`` (npz + json).
+- :mod:`.constraints`: :class:`Constraint` (position, orientation, heading),
+  :class:`Objective` (Eq. 4.2, counts evaluations), :func:`random_constraints` (Sec. 4.6.2).
+- :mod:`.trees`: :class:`SpacePartitioningTree` (k-means, GMM, median; beam search,
+  Sec. 4.4.2/4.5.2), :func:`brute_force`, :func:`random_search`,
+  :class:`KeyFramePositionIndex` (exact search on precomputed key-frame poses).
+- :mod:`.synthesis`: :func:`optimize_map` (Eq. 4.9 by Levenberg-Marquardt).
+- :mod:`.morphable_graph`: :class:`MorphableGraph` (edges from the prep metadata),
+  :func:`follow_path` and :func:`synthesize_step` (Algorithm 1).
+- :mod:`.evaluation`: the measures of Fig. 4.9 (coverage), Fig. 4.12 (search comparison)
+  and Sec. 4.6.1 (compactness).
+"""
+
+from .constraints import Constraint, Objective, random_constraints
+from .morphable_graph import (
+    MorphableGraph, Path2D, StepResult, WalkSettings, concatenate_steps, follow_path, place_motion, synthesize_step,
+)
+from .primitive import MotionPrimitive, PrimitiveOptions, select_gmm
+from .synthesis import MapResult, optimize_map
+from .trees import (
+    TREE_KINDS, KeyFramePositionIndex, SearchResult, SpacePartitioningTree, brute_force, random_search, tree_search,
+)
+
+__all__ = [
+    "TREE_KINDS", "Constraint", "KeyFramePositionIndex", "MapResult", "MorphableGraph", "MotionPrimitive", "Objective",
+    "Path2D", "PrimitiveOptions", "SearchResult", "SpacePartitioningTree", "StepResult", "WalkSettings",
+    "brute_force", "concatenate_steps", "follow_path", "optimize_map", "place_motion", "random_constraints",
+    "random_search", "select_gmm", "synthesize_step", "tree_search",
+]

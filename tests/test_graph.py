@@ -1,0 +1,236 @@
+"""Morphable Graph (Du 2022 ch. 4) on small procedural clips: primitives, constraints,
+trees, MAP synthesis, graph walks and the evaluation measures."""
+
+from __future__ import annotations
+
+import json
+
+import numpy as np
+import pandas as pd
+import pytest
+from graph_toy import toy_clips
+
+from motionvar.core import cmu_joint_map
+from motionvar.graph import (
+    Constraint, KeyFramePositionIndex, MorphableGraph, MotionPrimitive, Objective, Path2D, PrimitiveOptions,
+    SpacePartitioningTree, WalkSettings, brute_force, concatenate_steps, follow_path, optimize_map, place_motion,
+    random_constraints, random_search, select_gmm,
+)
+from motionvar.graph.evaluation import SearchSettings, coverage, search_comparison, summarize_search
+from motionvar.graph.kinematics import ancestors, chain_fk
+from motionvar.graph.morphable_graph import _to_local
+
+OPT = PrimitiveOptions(n_basis=8, n_components=5, gmm_components=(1, 3), sfpca_max_iter=0)
+
+
+@pytest.fixture(scope="module")
+def clips():
+    return toy_clips(16)
+
+
+@pytest.fixture(scope="module")
+def prim(clips):
+    return MotionPrimitive.fit(clips, "walk_leftStance", OPT)
+
+
+@pytest.fixture(scope="module")
+def joints(prim):
+    jm, sk = cmu_joint_map(), prim.skeleton
+    return {k: jm.index(sk, k) for k in ("hips", "right_hand", "left_hand", "left_ankle", "right_ankle",
+                                         "left_shoulder", "right_shoulder", "left_hip", "right_hip")}
+
+
+def test_chain_fk_matches_full_fk(clips):
+    m = clips[0]
+    pos = m.positions()
+    p, _ = chain_fk(m.rotations, m.root_pos, m.skeleton.offsets, m.skeleton.parents, [27, 4])
+    assert np.allclose(p, pos[:, [27, 4]])
+    assert list(ancestors(m.skeleton.parents, [4])) == [0, 1, 2, 3, 4]
+
+
+def test_primitive_fit_reconstructs_and_unwarps(prim, clips):
+    assert prim.n_latent == 5 and prim.n_frames in [c.n_frames for c in clips]
+    # the chosen GMM has the lowest BIC of the searched range (Eq. 4.1)
+    assert prim.gmm_.n_components == min(prim.gmm_scores_, key=prim.gmm_scores_.get)
+    # back-projected training scores put the hands where the (warped) clips end
+    last = prim.n_frames - 1
+    pos, _ = prim.key_frame_pose(prim.training_latent_, [last], [27])
+    true = np.stack([c.positions()[-1, 27] for c in clips])
+    assert np.median(np.linalg.norm(pos[:, 0, 0] - true, axis=-1)) < 2.0
+    # the time function restores each clip's own length (within a few frames)
+    lengths = [m.n_frames for m in prim.to_motions(prim.training_latent_)]
+    assert np.max(np.abs(np.array(lengths) - [c.n_frames for c in clips])) <= 3
+    assert all(m.n_frames == prim.n_frames for m in prim.to_motions(prim.training_latent_[:2], warp_time=False))
+
+
+def test_primitive_sample_and_log_prob(prim):
+    S = prim.sample(500, 0)
+    assert S.shape == (500, prim.n_latent)
+    assert np.allclose(prim.log_prob(S), prim.gmm_.score_samples(S))
+    assert np.array_equal(S, prim.sample(500, 0))
+    with pytest.raises(ValueError, match="latent vectors must be"):
+        prim.log_prob(np.zeros((2, prim.n_latent + 1)))
+
+
+def test_primitive_save_load_roundtrip(prim, tmp_path):
+    files = prim.save(tmp_path / "walk")
+    assert sorted(f.suffix for f in files) == [".json", ".npz"]
+    with np.load(files[0], allow_pickle=False) as z:  # no pickles inside
+        assert "components" in z.files
+    meta = json.loads(files[1].read_text())
+    assert meta["name"] == "walk_leftStance" and meta["options"]["gmm_criterion"] == "bic"
+    back = MotionPrimitive.load(tmp_path / "walk.npz")
+    S = prim.sample(20, 1)
+    assert np.allclose(back.log_prob(S), prim.log_prob(S))
+    assert np.allclose(back.coefs(S), prim.coefs(S))
+    assert np.array_equal(back.sample(20, 1), prim.sample(20, 1))
+
+
+def test_primitive_bad_input(clips, tmp_path):
+    with pytest.raises(ValueError, match="at least 3 clips"):
+        MotionPrimitive.fit(clips[:2], "x", OPT)
+    with pytest.raises(ValueError, match="gmm_components"):
+        MotionPrimitive.fit(clips, "x", PrimitiveOptions(gmm_components=(3, 1)))
+    with pytest.raises(ValueError, match="not a readable motion primitive"):
+        MotionPrimitive.load(tmp_path / "missing")
+
+
+def test_select_gmm_bic_finds_clusters():
+    rng = np.random.default_rng(0)
+    X = np.concatenate([rng.normal(c, 0.3, size=(80, 2)) for c in ((0, 0), (5, 0), (0, 5))])
+    gmm, scores = select_gmm(X, (1, 6))
+    assert gmm.n_components == 3 and set(scores) == set(range(1, 7))
+
+
+def test_constraints_objective_and_errors(prim, joints):
+    last = prim.n_frames - 1
+    s = prim.sample(1, 3)
+    pose = [joints[k] for k in ("hips", "left_shoulder", "right_shoulder", "left_hand", "right_hand")]
+    for kind, js in (("position", [joints["right_hand"]]), ("orientation", [joints["right_hand"]]), ("pose", pose)):
+        c = random_constraints(prim, kind, 1, js, last, 3)[0]  # met by the same sample s
+        obj = Objective(prim, [c])
+        assert obj(s)[0] == pytest.approx(0.0, abs=1e-6)
+        assert obj(prim.sample(10, 9)).shape == (10,) and obj.n_evals == 11
+    moved = Constraint("position", last, (joints["hips"],), np.zeros((1, 3)), mask=np.array([1.0, 0.0, 1.0]))
+    pos, _ = prim.key_frame_pose(s, [last], [joints["hips"]])
+    assert Objective(prim, [moved])(s)[0] == pytest.approx(np.linalg.norm(pos[0, 0, 0, [0, 2]]))
+    with pytest.raises(ValueError, match="target must be finite"):
+        Constraint("position", last, (1, 2), np.zeros(3))
+    with pytest.raises(ValueError, match="kind must be one of"):
+        Constraint("velocity", last, (1,), np.zeros((1, 3)))
+    with pytest.raises(ValueError, match="outside the canonical timeline"):
+        Objective(prim, [Constraint("position", prim.n_frames, (1,), np.zeros((1, 3)))])
+
+
+@pytest.mark.parametrize("kind", ["kmeans", "gmm", "median"])
+def test_tree_partitions_samples_and_searches(prim, joints, kind):
+    S = prim.sample(600, 1)
+    tree = SpacePartitioningTree(S, kind, leaf_size=8, seed=0)
+    leaf_idx = np.concatenate(list(tree.leaves.values()))
+    assert np.array_equal(np.sort(leaf_idx), np.arange(len(S)))  # every sample in exactly one leaf
+    assert all(len(v) <= 8 for v in tree.leaves.values())
+    assert all(len(c) <= (2 if kind == "median" else 4) for c in tree.children)
+    last = prim.n_frames - 1
+    c = random_constraints(prim, "position", 1, [joints["right_hand"]], last, 4)[0]
+    obj = Objective(prim, [c])
+    found = tree.search(obj, beam=2)
+    exact = brute_force(S, Objective(prim, [c]))
+    assert found.error >= exact.error - 1e-12 and found.n_evals < len(S)
+    assert found.n_evals == obj.n_evals
+    wide = tree.search(Objective(prim, [c]), beam=tree.n_nodes)  # an unbounded beam visits everything
+    assert wide.error == pytest.approx(exact.error)
+
+
+def test_exact_index_and_random_search(prim, joints):
+    S = prim.sample(800, 2)
+    last = prim.n_frames - 1
+    js = [joints["right_hand"], joints["hips"], joints["left_hand"]]
+    index = KeyFramePositionIndex(prim, S, [last], js)
+    for kind, cj in (("position", js[:1]), ("orientation", js[:1]), ("pose", js)):
+        for c in random_constraints(prim, kind, 5, cj, last, 6):
+            assert index.search([c]).index == brute_force(S, Objective(prim, [c])).index
+    c = random_constraints(prim, "position", 1, js[:1], last, 7)[0]
+    r = random_search(prim, Objective(prim, [c]), 100, 0)
+    assert r.n_evals == 100 and r.index == -1
+    with pytest.raises(ValueError, match="not precomputed"):
+        index.search([Constraint("position", 0, (js[0],), np.zeros((1, 3)))])
+    with pytest.raises(ValueError, match="tree kind"):
+        SpacePartitioningTree(S, "kd")
+
+
+def test_map_optimisation_reaches_constraint(prim, joints):
+    last = prim.n_frames - 1
+    c = random_constraints(prim, "position", 1, [joints["right_hand"]], last, 11)[0]
+    start = prim.gmm_.means_[0]
+    fit = optimize_map(prim, [c], start, likelihood_weight=0.0)
+    assert fit.errors_after[0] < 0.05 * fit.errors_before[0] + 1e-3
+    fit_trf = optimize_map(prim, [c], start, likelihood_weight=1.0, method="trf")
+    assert fit_trf.errors_after[0] < fit_trf.errors_before[0]
+    with pytest.raises(ValueError, match="method"):
+        optimize_map(prim, [c], start, method="bfgs")
+
+
+def test_graph_from_metadata():
+    meta = pd.DataFrame(dict(
+        source_clip=["a", "a", "a", "b", "b"], start_frame=[0, 30, 60, 0, 20],
+        primitive=["walk_start", "walk_leftStance", "walk_end", "pick_reach", "pick_retrieve"]))
+    g = MorphableGraph.from_metadata(meta.iloc[::-1])  # order of rows does not matter
+    assert g.successors("walk_start") == ["walk_leftStance"]
+    assert g.successors("walk_leftStance") == ["walk_end"]
+    assert g.start_nodes == {"walk_start": 1, "pick_reach": 1} and g.end_nodes == {"walk_end": 1, "pick_retrieve": 1}
+    assert len(g.edge_table()) == 3
+    with pytest.raises(ValueError, match="lacks columns"):
+        MorphableGraph.from_metadata(meta.drop(columns="start_frame"))
+    with pytest.raises(KeyError, match="no node"):
+        g.successors("run")
+
+
+def test_place_motion_and_local_frame(clips):
+    m = clips[0]
+    heading = np.array([0.0, 0.0, 1.0])  # +z
+    placed = place_motion(m, np.array([10.0, 20.0]), heading)
+    # the aligned clip moves along +x; placed, it moves along +z from (10, 20)
+    d = placed.root_pos[-1] - placed.root_pos[0]
+    assert abs(d[0]) < 1e-6 and d[2] > 0 and np.allclose(placed.root_pos[0, [0, 2]], [10, 20])
+    world_end = placed.root_pos[-1, [0, 2]]
+    assert np.allclose(_to_local(world_end, np.array([10.0, 20.0]), heading), m.root_pos[-1, [0, 2]])
+
+
+def test_follow_straight_path(clips, prim):
+    right = MotionPrimitive.fit(clips[::-1], "walk_rightStance", OPT)
+    prims = {"walk_leftStance": prim, "walk_rightStance": right}
+    meta = pd.DataFrame(dict(source_clip=["a"] * 4, start_frame=[0, 1, 2, 3],
+                             primitive=["walk_leftStance", "walk_rightStance"] * 2))
+    g = MorphableGraph.from_metadata(meta, prims)
+    trees = {k: SpacePartitioningTree(p.sample(300, 0), "kmeans", leaf_size=8) for k, p in prims.items()}
+    path = Path2D(np.array([[0.0, 0.0], [200.0, 0.0]]))
+    steps = follow_path(g, trees, path, cmu_joint_map(), WalkSettings(max_steps=6, max_nfev=30))
+    names = [s.primitive for s in steps]
+    assert len(names) >= 2 and all(a != b for a, b in zip(names[:-1], names[1:]))  # the graph alternates stances
+    walk = concatenate_steps(steps)
+    assert walk.n_frames == sum(s.motion.n_frames for s in steps) - (len(steps) - 1)
+    assert walk.root_pos[-1, 0] > 100.0 and abs(walk.root_pos[-1, 2]) < 20.0
+    with pytest.raises(ValueError, match="path"):
+        Path2D(np.zeros((1, 2)))
+
+
+def test_coverage_measures_overlap():
+    rng = np.random.default_rng(0)
+    samples = rng.normal(size=(20000, 2))
+    cov_same, _, data = coverage(samples, rng.normal(size=(400, 2)))
+    cov_far, _, _ = coverage(samples, rng.normal(4.0, 1.0, size=(400, 2)))
+    assert 0.88 <= cov_same <= 1.0 and cov_far < 0.3
+    assert data["density"].shape == (128, 128)
+
+
+def test_search_comparison_table(prim, joints):
+    pose = [joints[k] for k in ("hips", "left_shoulder", "right_shoulder", "left_hand", "right_hand",
+                                "left_ankle", "right_ankle")]
+    table, trees = search_comparison(prim, joints["right_hand"], pose,
+                                     SearchSettings(n_samples=500, n_queries=4, leaf_size=8, n_random=20))
+    assert set(table["method"]) == {"kmeans", "gmm", "median", "random", "brute_force"}
+    assert len(table) == 3 * 4 * 5 and set(trees["method"]) == {"kmeans", "gmm", "median", "brute_force"}
+    wide = table.pivot_table(index=["kind", "query"], columns="method", values="error")
+    assert (wide.drop(columns="random").min(axis=1) >= wide["brute_force"] - 1e-9).all()  # trees search its samples
+    summary = summarize_search(table)
+    assert {"median", "mean_evals", "share_under_120_evals"} <= set(summary.columns)
