@@ -63,6 +63,7 @@ class Manner:
     pelvis_rotation_deg: float = 4.5
     pelvis_obliquity_deg: float = 4.0
     pelvis_tilt_deg: float = 2.0
+    pelvis_tilt_mean_deg: float = 5.0
     thorax_rotation_ratio: float = 0.7
     stance_fraction: float = 0.6
     lift_cm: float = 7.0
@@ -75,7 +76,7 @@ class Manner:
             "head_pitch_deg": (-45.0, 60.0), "shoulder_lift_deg": (-20.0, 20.0), "knee_peak_deg": (20.0, 140.0),
             "push_off_deg": (0.0, 80.0), "heel_strike_deg": (0.0, 35.0), "bob_cm": (0.0, 8.0),
             "sway_cm": (0.0, 8.0), "pelvis_rotation_deg": (0.0, 20.0), "pelvis_obliquity_deg": (0.0, 15.0),
-            "pelvis_tilt_deg": (0.0, 10.0), "thorax_rotation_ratio": (0.0, 2.0), "stance_fraction": stance,
+            "pelvis_tilt_deg": (0.0, 10.0), "pelvis_tilt_mean_deg": (-10.0, 20.0), "thorax_rotation_ratio": (0.0, 2.0), "stance_fraction": stance,
             "lift_cm": (1.0, 30.0),
         }
         for name, (lo, hi) in limits.items():
@@ -164,7 +165,7 @@ class RunParams:
         default_factory=lambda: Manner(
             arm_swing_deg=30.0, elbow_flex_deg=85.0, elbow_swing_deg=10.0, torso_lean_deg=7.0, knee_peak_deg=105.0,
             push_off_deg=60.0, heel_strike_deg=8.0, bob_cm=0.0, sway_cm=1.0, pelvis_rotation_deg=6.0,
-            thorax_rotation_ratio=0.8, stance_fraction=0.36,
+            thorax_rotation_ratio=0.8, stance_fraction=0.36, pelvis_tilt_mean_deg=8.0,
         )
     )
 
@@ -211,7 +212,8 @@ class SidestepParams:
     manner: Manner = field(
         default_factory=lambda: Manner(
             arm_swing_deg=3.0, knee_peak_deg=60.0, push_off_deg=0.0, heel_strike_deg=0.0, bob_cm=0.5,
-            sway_cm=0.0, pelvis_rotation_deg=0.0, pelvis_obliquity_deg=3.0, pelvis_tilt_deg=0.0, stance_fraction=0.7,
+            sway_cm=0.0, pelvis_rotation_deg=0.0, pelvis_obliquity_deg=3.0, pelvis_tilt_deg=0.0, pelvis_tilt_mean_deg=0.0,
+            stance_fraction=0.7,
         )
     )
 

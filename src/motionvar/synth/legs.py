@@ -49,7 +49,8 @@ LAND_SPEED_FRAC = 0.2  # horizontal foot speed at touchdown / mean swing speed
 LAND_DROP_CM_S = 15  # vertical foot speed at touchdown
 DORSI_MAX_DEG = 20.0  # swing: ankle dorsiflexion limit (neutral to ≈ 10-20° in swing)
 PLANTAR_MAX_DEG = 35.0  # swing: ankle plantarflexion limit (≈ 15-30° after toe-off)
-TOE_CLEAR_CM = 0.3  # swing: the toe base stays at least this far above the floor
+TOE_CLEAR_CM = 1.2  # swing: the toe base stays at least this far above the floor (minimum toe
+# clearance in mid-swing is ≈ 1-2 cm in adult walking)
 LIMIT_FADE = 0.2  # swing fraction over which the two limits above fade in after toe-off
 
 
@@ -340,7 +341,7 @@ def _target_ceiling(geo: BodyGeometry, root_pos: np.ndarray, hips: np.ndarray, a
 
 
 def legs_along(
-    geo: BodyGeometry, plan: Plan, root_xz: np.ndarray, hips: np.ndarray, passes: int = 3
+    geo: BodyGeometry, plan: Plan, root_xz: np.ndarray, hips: np.ndarray, passes: int = 5
 ) -> tuple[np.ndarray, FeetTracks]:
     """Root positions (T, 3) and foot tracks for ``plan``.
 

@@ -5,7 +5,8 @@ times the gait envelope (0 standing, 1 in steady gait):
 
 - pelvis rotation (transverse): the side of the leading leg forward, −A cos 2πφ;
 - pelvic obliquity: the swing side drops, most at the end of loading response (φ = 0.2);
-- pelvic tilt: two oscillations per stride, most anterior in terminal stance;
+- pelvic tilt: a mean anterior tilt while moving plus two oscillations per stride, most
+  anterior in terminal stance;
 - the thorax counter-rotates (world yaw −ratio × pelvic rotation) and bends against the
   obliquity; the trunk leans by ``torso_lean_deg`` over the three spine joints;
 - the head keeps 70 % of the trunk lean and all of the thorax rotation out of the gaze
@@ -36,7 +37,7 @@ def pelvis_angles(phase: np.ndarray, env: np.ndarray, m: Manner) -> tuple[np.nda
     """(rotation, obliquity, tilt) in radians over frames (the root's oscillations)."""
     rot = -np.radians(m.pelvis_rotation_deg) * np.cos(2 * np.pi * phase) * env
     obl = np.radians(m.pelvis_obliquity_deg) * np.sin(2 * np.pi * (phase + 0.05)) * env
-    tilt = np.radians(m.pelvis_tilt_deg) * np.cos(4 * np.pi * (phase - 0.4)) * env
+    tilt = (np.radians(m.pelvis_tilt_mean_deg) + np.radians(m.pelvis_tilt_deg) * np.cos(4 * np.pi * (phase - 0.4))) * env
     return rot, obl, tilt
 
 
