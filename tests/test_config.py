@@ -12,6 +12,7 @@ import yaml
 from snakemake.utils import validate
 
 from motionvar.prep import PrepOptions
+from motionvar.synth import SynthSpec
 
 ROOT = Path(__file__).resolve().parents[1]
 SCHEMA = str(ROOT / "config" / "schema.yaml")
@@ -74,6 +75,13 @@ def test_prep_section_matches_prep_options():
     defaults = {f.name: f.default for f in dataclasses.fields(PrepOptions)}
     assert set(props) == set(defaults)
     assert {k: v["default"] for k, v in props.items()} == defaults
+
+
+def test_synthetic_dataset_entry_matches_synth_spec():
+    props = yaml.safe_load(Path(SCHEMA).read_text())["$defs"]["synthetic_dataset"]["properties"]
+    defaults = {f.name: f.default for f in dataclasses.fields(SynthSpec)}
+    assert set(props) - {"source"} == set(defaults)
+    assert {k: v["default"] for k, v in props.items() if k != "source"} == defaults
 
 
 def run_dry(tmp_path, config_text):
