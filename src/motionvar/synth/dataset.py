@@ -55,6 +55,8 @@ class SynthSpec:
         picks / places: two-hand pick and place clips (regions low, forward, high, ...).
         idle_clips: idle standing clips of ``idle_duration_s`` seconds each.
         fps: frame rate of every clip.
+        workers: processes generating subjects in parallel (1: in this process); the
+            result does not depend on it.
     """
 
     subjects: int = 25
@@ -68,6 +70,7 @@ class SynthSpec:
     idle_clips: int = 2
     idle_duration_s: float = 20.0
     fps: float = 120.0
+    workers: int = 1
 
     def validate(self) -> None:
         """ValueError naming the first bad field."""
@@ -75,7 +78,7 @@ class SynthSpec:
             v = getattr(self, f.name)
             if f.name in ("idle_duration_s", "fps"):
                 continue
-            low = 1 if f.name == "subjects" else 0
+            low = 1 if f.name in ("subjects", "workers") else 0
             if isinstance(v, bool) or not isinstance(v, (int, np.integer)) or v < low:
                 raise ValueError(f"SynthSpec.{f.name} must be an integer >= {low}; got {v!r}")
         for name, lo, hi in (("idle_duration_s", 0.5, 3600.0), ("fps", 24.0, 1000.0)):
@@ -135,29 +138,43 @@ def subject_traits(subject: Subject) -> dict:
     return out
 
 
+def _subject_clips(spec: SynthSpec, i: int) -> tuple[list[Motion], list[dict]]:
+    """Clips and metadata rows of subject ``i`` (its own random streams, see module docstring)."""
+    subject = make_subjects(spec.subjects, spec.seed)[i]
+    traits = subject_traits(subject)
+    motions: list[Motion] = []
+    rows: list[dict] = []
+    for b, behaviour in enumerate(BEHAVIOURS):
+        rng = np.random.default_rng([spec.seed, i, b])
+        counts: dict[str, int] = {}
+        for style, tag, motion, truth in _clips(subject, spec, behaviour, rng):
+            k = counts[tag] = counts.get(tag, -1) + 1
+            row = {c: float("nan") for c in CONTRACT_COLUMNS}
+            row.update(truth)
+            row.update({
+                "clip_id": f"s{subject.subject_id}_{behaviour}_{tag}_{k:02d}", "subject": subject.subject_id,
+                "behaviour": behaviour, "style": style, "primitive": "",
+            })
+            if behaviour != "idle":
+                row["idle_postures"] = float("nan")
+            rows.append({**row, **traits})
+            motions.append(motion)
+    return motions, rows
+
+
 def generate_dataset(spec: SynthSpec) -> tuple[list[Motion], pd.DataFrame]:
     """All clips of ``spec`` (subject by subject, behaviours in :data:`BEHAVIOURS` order) and
     their metadata table (see the module docstring)."""
     spec.validate()
-    motions: list[Motion] = []
-    rows: list[dict] = []
-    for i, subject in enumerate(make_subjects(spec.subjects, spec.seed)):
-        traits = subject_traits(subject)
-        for b, behaviour in enumerate(BEHAVIOURS):
-            rng = np.random.default_rng([spec.seed, i, b])
-            counts: dict[str, int] = {}
-            for style, tag, motion, truth in _clips(subject, spec, behaviour, rng):
-                k = counts[tag] = counts.get(tag, -1) + 1
-                row = {c: float("nan") for c in CONTRACT_COLUMNS}
-                row.update(truth)
-                row.update({
-                    "clip_id": f"s{subject.subject_id}_{behaviour}_{tag}_{k:02d}", "subject": subject.subject_id,
-                    "behaviour": behaviour, "style": style, "primitive": "",
-                })
-                if behaviour != "idle":
-                    row["idle_postures"] = float("nan")
-                rows.append({**row, **traits})
-                motions.append(motion)
+    if spec.workers > 1 and spec.subjects > 1:
+        from concurrent.futures import ProcessPoolExecutor
+
+        with ProcessPoolExecutor(min(spec.workers, spec.subjects)) as pool:
+            parts = list(pool.map(_subject_clips, [spec] * spec.subjects, range(spec.subjects)))
+    else:
+        parts = [_subject_clips(spec, i) for i in range(spec.subjects)]
+    motions = [m for ms, _ in parts for m in ms]
+    rows = [r for _, rs in parts for r in rs]
     if not rows:
         raise ValueError("SynthSpec: every clip count is 0; nothing to generate")
     meta = pd.DataFrame(rows)
