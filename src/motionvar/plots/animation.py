@@ -82,16 +82,22 @@ def render_frames(
     fig, axes = plt.subplots(1, n, squeeze=False, figsize=(n * panel_px / dpi, panel_px / dpi), dpi=dpi)
     panels = []
     for ax, pos, par, nm, label, fps in zip(axes[0], positions, parents, names, labels, clip_fps):
-        xy = project(pos, view_axis(pos), elevation_deg, azimuth_deg)
+        idx = np.minimum(np.round(times * fps).astype(int), len(pos) - 1)
         ground = float(pos[..., 1].min())
         height = float(pos[..., 1].max() - ground)
         root_xz = pos[:, 0, [0, 2]]
         grid = _floor_grid(root_xz.min(axis=0) - height, root_xz.max(axis=0) + height, ground, 50.0)
-        ax.add_collection(LineCollection(
-            project(grid, view_axis(pos), elevation_deg, azimuth_deg), colors="0.85", linewidths=0.8, zorder=0
-        ))
-        idx = np.minimum(np.round(times * fps).astype(int), len(pos) - 1)
-        lines = draw_pose(ax, xy[idx[0]], np.asarray(par), nm, linewidth=2.2)
+        # the camera follows the root over the floor: every frame is projected relative to
+        # the root's horizontal position, so the body stays centred at any distance
+        follow = np.zeros((len(pos), 1, 3))
+        follow[:, 0, [0, 2]] = root_xz
+
+        def view(points, axis=view_axis(pos)):
+            return project(points, axis, elevation_deg, azimuth_deg)
+
+        floor = LineCollection(view(grid - follow[idx[0]]), colors="0.85", linewidths=0.8, zorder=0)
+        ax.add_collection(floor)
+        lines = draw_pose(ax, view(pos[idx[0]] - follow[idx[0]]), np.asarray(par), nm, linewidth=2.2)
         text = ax.text(0.02, 0.02, "", transform=ax.transAxes, fontsize=7, color="0.3")
         ax.set_title(label, fontsize=8)
         ax.set_aspect("equal")
@@ -100,17 +106,18 @@ def render_frames(
         for spine in ax.spines.values():
             spine.set_visible(False)
         half = 0.6 * height + 10.0
-        ylim = (ground - 0.15 * height - 5.0, ground - 0.15 * height - 5.0 + 2 * half)
-        ax.set_ylim(*ylim)
-        panels.append((ax, xy, idx, lines, text, half, np.asarray(par)))
+        bottom = view(np.array([0.0, ground, 0.0]))[1] - 0.15 * height - 5.0
+        ax.set_xlim(-half, half)
+        ax.set_ylim(bottom, bottom + 2 * half)
+        panels.append((pos, follow, idx, view, lines, floor, grid, text, np.asarray(par)))
     fig.subplots_adjust(left=0.01, right=0.99, bottom=0.01, top=0.9, wspace=0.04)
 
     frames = []
     for k, t in enumerate(times):
-        for ax, xy, idx, lines, text, half, par in panels:
-            pose = xy[idx[k]]
-            lines.set_segments(bone_segments(pose, par))
-            ax.set_xlim(pose[0, 0] - half, pose[0, 0] + half)
+        for pos, follow, idx, view, lines, floor, grid, text, par in panels:
+            f = idx[k]
+            lines.set_segments(bone_segments(view(pos[f] - follow[f]), par))
+            floor.set_segments(view(grid - follow[f]))
             text.set_text(f"{t:4.2f} s")
         fig.canvas.draw()
         frames.append(np.asarray(fig.canvas.buffer_rgba())[..., :3].copy())

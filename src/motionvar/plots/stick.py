@@ -149,10 +149,10 @@ def check_positions(positions: np.ndarray, parents: np.ndarray) -> np.ndarray:
 
 
 def key_frame_spacing(positions: np.ndarray) -> float:
-    """Horizontal distance between neighbouring key-frame poses: 0.6 x the body's height
+    """Horizontal distance between neighbouring key-frame poses: 0.7 x the body's height
     (a pose's full vertical extent over the clip), at least 40 cm."""
     y = np.asarray(positions)[..., 1]
-    return max(0.6 * float(y.max() - y.min()), 40.0)
+    return max(0.7 * float(y.max() - y.min()), 40.0)
 
 
 def plot_key_frames(
