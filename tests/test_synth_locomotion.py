@@ -85,7 +85,7 @@ SMALL = dict(subjects=2, walks_per_style=1, turning_walks=1, runs=1, sidesteps=1
 
 def test_dataset_is_deterministic_and_follows_the_contract():
     m1, meta1 = generate_dataset(SynthSpec(**SMALL))
-    m2, meta2 = generate_dataset(SynthSpec(**SMALL, workers=2))  # parallel: the same data
+    m2, meta2 = generate_dataset(SynthSpec(**SMALL), workers=2)  # parallel: the same data
     pd.testing.assert_frame_equal(meta1, meta2)
     assert all(np.array_equal(a.rotations, b.rotations) and np.array_equal(a.root_pos, b.root_pos) for a, b in zip(m1, m2))
 
@@ -334,6 +334,8 @@ def test_bad_params_raise_value_error_naming_the_parameter(subjects, make, name)
 def test_unwalkable_strides_and_bad_specs_are_rejected(subjects):
     with pytest.raises(ValueError, match="stride_length_cm"):
         generate_walk(subjects[0], WalkParams(stride_length_cm=240.0, speed_cm_s=230.0))
-    for bad in ({"subjects": 0}, {"seed": -1}, {"runs": 1.5}, {"idle_duration_s": -1.0}, {"fps": 0}, {"workers": 0}):
+    for bad in ({"subjects": 0}, {"seed": -1}, {"runs": 1.5}, {"idle_duration_s": -1.0}, {"fps": 0}):
         with pytest.raises(ValueError, match=next(iter(bad))):
             generate_dataset(SynthSpec(**bad))
+    with pytest.raises(ValueError, match="workers"):
+        generate_dataset(SynthSpec(subjects=1), workers=0)

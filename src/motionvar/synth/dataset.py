@@ -55,8 +55,6 @@ class SynthSpec:
         picks / places: two-hand pick and place clips (regions low, forward, high, ...).
         idle_clips: idle standing clips of ``idle_duration_s`` seconds each.
         fps: frame rate of every clip.
-        workers: processes generating subjects in parallel (1: in this process); the
-            result does not depend on it.
     """
 
     subjects: int = 25
@@ -70,7 +68,6 @@ class SynthSpec:
     idle_clips: int = 2
     idle_duration_s: float = 20.0
     fps: float = 120.0
-    workers: int = 1
 
     def validate(self) -> None:
         """ValueError naming the first bad field."""
@@ -78,7 +75,7 @@ class SynthSpec:
             v = getattr(self, f.name)
             if f.name in ("idle_duration_s", "fps"):
                 continue
-            low = 1 if f.name in ("subjects", "workers") else 0
+            low = 1 if f.name == "subjects" else 0
             if isinstance(v, bool) or not isinstance(v, (int, np.integer)) or v < low:
                 raise ValueError(f"SynthSpec.{f.name} must be an integer >= {low}; got {v!r}")
         for name, lo, hi in (("idle_duration_s", 0.5, 3600.0), ("fps", 24.0, 1000.0)):
@@ -162,14 +159,17 @@ def _subject_clips(spec: SynthSpec, i: int) -> tuple[list[Motion], list[dict]]:
     return motions, rows
 
 
-def generate_dataset(spec: SynthSpec) -> tuple[list[Motion], pd.DataFrame]:
+def generate_dataset(spec: SynthSpec, workers: int = 1) -> tuple[list[Motion], pd.DataFrame]:
     """All clips of ``spec`` (subject by subject, behaviours in :data:`BEHAVIOURS` order) and
-    their metadata table (see the module docstring)."""
+    their metadata table (see the module docstring). ``workers`` > 1 generates subjects in
+    that many processes; the result is the same."""
     spec.validate()
-    if spec.workers > 1 and spec.subjects > 1:
+    if isinstance(workers, bool) or not isinstance(workers, (int, np.integer)) or workers < 1:
+        raise ValueError(f"generate_dataset: workers must be an integer >= 1; got {workers!r}")
+    if workers > 1 and spec.subjects > 1:
         from concurrent.futures import ProcessPoolExecutor
 
-        with ProcessPoolExecutor(min(spec.workers, spec.subjects)) as pool:
+        with ProcessPoolExecutor(min(workers, spec.subjects)) as pool:
             parts = list(pool.map(_subject_clips, [spec] * spec.subjects, range(spec.subjects)))
     else:
         parts = [_subject_clips(spec, i) for i in range(spec.subjects)]

@@ -100,6 +100,26 @@ def _check_common(p, owner: str) -> None:
         _check(owner, "start_xz", v, -1e5, 1e5)
 
 
+def _check_gait(p, owner: str, stride: tuple, speed: tuple, steps: tuple, cadence: tuple) -> None:
+    """Checks shared by walks and runs: stride, speed, width, turn, steps, first foot, and the
+    cadence that stride and speed imply; then :func:`_check_common`."""
+    _check(owner, "stride_length_cm", p.stride_length_cm, *stride)
+    _check(owner, "speed_cm_s", p.speed_cm_s, *speed)
+    _check(owner, "step_width_cm", p.step_width_cm, 0.0, 40.0)
+    _check(owner, "turn_deg", p.turn_deg, -180.0, 180.0)
+    if not isinstance(p.n_steps, (int, np.integer)) or not steps[0] <= p.n_steps <= steps[1]:
+        raise ValueError(f"{owner}.n_steps must be an integer in [{steps[0]}, {steps[1]}]; got {p.n_steps!r}")
+    if p.first_foot not in SIDES:
+        raise ValueError(f"{owner}.first_foot must be one of {SIDES}; got {p.first_foot!r}")
+    steps_min = 120.0 * p.speed_cm_s / p.stride_length_cm
+    if not cadence[0] <= steps_min <= cadence[1]:
+        raise ValueError(
+            f"{owner}.speed_cm_s / stride_length_cm give a cadence of {steps_min:.0f} steps/min; "
+            f"{cadence[0]:.0f}-{cadence[1]:.0f} expected"
+        )
+    _check_common(p, owner)
+
+
 @dataclass(frozen=True)
 class WalkParams:
     """A walk: stand, ``n_steps`` heel strikes on a straight or curved path, a closing step,
@@ -127,23 +147,9 @@ class WalkParams:
         o = "WalkParams"
         if self.style not in STYLES:
             raise ValueError(f"{o}.style must be one of {STYLES}; got {self.style!r}")
-        _check(o, "stride_length_cm", self.stride_length_cm, 20.0, 250.0)
-        _check(o, "speed_cm_s", self.speed_cm_s, 10.0, 300.0)
-        _check(o, "step_width_cm", self.step_width_cm, 0.0, 40.0)
-        _check(o, "turn_deg", self.turn_deg, -180.0, 180.0)
         _check(o, "stand_start_s", self.stand_start_s, 0.1, 30.0)
         _check(o, "stand_end_s", self.stand_end_s, 0.1, 30.0)
-        if not isinstance(self.n_steps, (int, np.integer)) or not 3 <= self.n_steps <= 60:
-            raise ValueError(f"{o}.n_steps must be an integer in [3, 60]; got {self.n_steps!r}")
-        if self.first_foot not in SIDES:
-            raise ValueError(f"{o}.first_foot must be one of {SIDES}; got {self.first_foot!r}")
-        cadence = 120.0 * self.speed_cm_s / self.stride_length_cm
-        if not 40.0 <= cadence <= 200.0:
-            raise ValueError(
-                f"{o}.speed_cm_s / stride_length_cm give a cadence of {cadence:.0f} steps/min; "
-                "walking needs 40-200"
-            )
-        _check_common(self, o)
+        _check_gait(self, o, stride=(20.0, 250.0), speed=(10.0, 300.0), steps=(3, 60), cadence=(40.0, 200.0))
         self.manner.validate(o, (0.52, 0.8))
 
 
@@ -175,21 +181,7 @@ class RunParams:
 
     def validate(self) -> None:
         o = "RunParams"
-        _check(o, "stride_length_cm", self.stride_length_cm, 80.0, 500.0)
-        _check(o, "speed_cm_s", self.speed_cm_s, 150.0, 1000.0)
-        _check(o, "step_width_cm", self.step_width_cm, 0.0, 40.0)
-        _check(o, "turn_deg", self.turn_deg, -180.0, 180.0)
-        if not isinstance(self.n_steps, (int, np.integer)) or not 2 <= self.n_steps <= 80:
-            raise ValueError(f"{o}.n_steps must be an integer in [2, 80]; got {self.n_steps!r}")
-        if self.first_foot not in SIDES:
-            raise ValueError(f"{o}.first_foot must be one of {SIDES}; got {self.first_foot!r}")
-        cadence = 120.0 * self.speed_cm_s / self.stride_length_cm
-        if not 120.0 <= cadence <= 240.0:
-            raise ValueError(
-                f"{o}.speed_cm_s / stride_length_cm give a cadence of {cadence:.0f} steps/min; "
-                "running needs 120-240"
-            )
-        _check_common(self, o)
+        _check_gait(self, o, stride=(80.0, 500.0), speed=(150.0, 1000.0), steps=(2, 80), cadence=(120.0, 240.0))
         self.manner.validate(o, (0.2, 0.48))
 
 

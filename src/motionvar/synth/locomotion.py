@@ -88,6 +88,15 @@ def _realise(subject: Subject, plan: Plan, manner: Manner, start_xz: tuple[float
     return motion, truth
 
 
+def _gait(subject: Subject, params: WalkParams | RunParams, planner, limit: float) -> tuple[Motion, dict]:
+    params.validate()
+    _check_stride(subject, type(params).__name__, params.stride_length_cm, limit)
+    plan = planner(BodyGeometry.from_skeleton(subject.skeleton), params)
+    motion, truth = _realise(subject, plan, params.manner, params.start_xz, params.heading_deg)
+    truth["variant"] = params.variant
+    return motion, truth
+
+
 def generate_walk(subject: Subject, params: WalkParams) -> tuple[Motion, dict]:
     """A walk of ``subject``: stand, gait cycles on a straight or turning path, stand.
 
@@ -95,23 +104,13 @@ def generate_walk(subject: Subject, params: WalkParams) -> tuple[Motion, dict]:
     :func:`~.gait_params.sample_walk_params`). Segments: walk_start, walk_leftStance /
     walk_rightStance (heel strike to the other foot's heel strike), walk_end.
     """
-    params.validate()
-    _check_stride(subject, "WalkParams", params.stride_length_cm, MAX_WALK_STRIDE_PER_LEG)
-    plan = plan_walk(BodyGeometry.from_skeleton(subject.skeleton), params)
-    motion, truth = _realise(subject, plan, params.manner, params.start_xz, params.heading_deg)
-    truth["variant"] = params.variant
-    return motion, truth
+    return _gait(subject, params, plan_walk, MAX_WALK_STRIDE_PER_LEG)
 
 
 def generate_run(subject: Subject, params: RunParams) -> tuple[Motion, dict]:
     """A steady run with flight phases; segments run_leftStance / run_rightStance (landing
     to the other foot's landing, flight included). Deterministic in its arguments."""
-    params.validate()
-    _check_stride(subject, "RunParams", params.stride_length_cm, MAX_RUN_STRIDE_PER_LEG)
-    plan = plan_run(BodyGeometry.from_skeleton(subject.skeleton), params)
-    motion, truth = _realise(subject, plan, params.manner, params.start_xz, params.heading_deg)
-    truth["variant"] = params.variant
-    return motion, truth
+    return _gait(subject, params, plan_run, MAX_RUN_STRIDE_PER_LEG)
 
 
 def generate_sidestep(subject: Subject, params: SidestepParams) -> tuple[Motion, dict]:
