@@ -6,10 +6,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from motionvar.core import Motion, cmu_joint_map, cmu_skeleton
+from motionvar.core import Motion, cmu_joint_map, cmu_skeleton  # noqa: F401
 from motionvar.core.quaternions import qmul, quat_about_axis
-from motionvar.ma2010.postprocess import reconstruct_root
-from motionvar.ma2010.synthesis import rest_foot_height
+from motionvar.ma2010.examples import root_solver
 
 
 def toy_walk(
@@ -42,7 +41,4 @@ def toy_walk(
     rot[:, ix("LeftForeArm")] = quat_about_axis([0, 1, 0], np.full(n, 0.3 + 0.5 * arm_amp))
     rot[:, ix("RightForeArm")] = quat_about_axis([0, 1, 0], np.full(n, -0.3 - 0.5 * arm_amp))
     rot[:, ix("Spine")] = quat_about_axis([0, 1, 0], twist * np.sin(phi))
-    jm = cmu_joint_map()
-    la, ra, lt = (jm.index(sk, s) for s in ("left_ankle", "right_ankle", "left_toe"))
-    root = reconstruct_root(rot, sk, la, ra, rest_foot_height(sk, la, lt))
-    return Motion(skeleton=sk, root_pos=root, rotations=rot, fps=fps)
+    return root_solver(sk, cmu_joint_map()).motion(rot, fps)

@@ -82,7 +82,7 @@ def test_space_warp_turns_the_walk_onto_x_and_starts_at_origin():
     turned = Motion(m.skeleton, m.root_pos @ np.array([[np.cos(.7), 0, -np.sin(.7)], [0, 1, 0], [np.sin(.7), 0, np.cos(.7)]]) + [50, 0, -20],
                     m.rotations.copy(), m.fps)
     turned.rotations[:, 0] = qmul(rot, turned.rotations[:, 0])
-    w = space_warp(turned)
+    w = space_warp(turned, JM)
     d = w.root_pos[-1] - w.root_pos[0]
     assert abs(d[2]) < 1e-6 * abs(d[0]) + 1e-9 and d[0] > 0
     assert np.allclose(w.root_pos[0, [0, 2]], 0)
@@ -230,23 +230,29 @@ def test_landing_frame_is_the_first_local_maximum():
 
 def test_footskate_cleanup_plants_the_lower_foot():
     m = toy_walk(n_cycles=2)
-    sk = m.skeleton
-    la, ra = JM.index(sk, "left_ankle"), JM.index(sk, "right_ankle")
+    solver = root_solver(m.skeleton, JM)
     pos = m.positions()
-    lower = np.argmin(pos[:, [la, ra], 1], axis=1)
-    feet = pos[:, [la, ra]]
-    same = lower[1:] == lower[:-1]
-    slide = np.linalg.norm(feet[1:, :, [0, 2]][np.arange(len(same)), lower[1:]] - feet[:-1, :, [0, 2]][np.arange(len(same)), lower[1:]], axis=-1)
-    assert slide[same].max() < 1e-6
-    assert np.allclose(feet[np.arange(len(feet)), lower, 1], feet[0, lower[0], 1])
+    feet = pos[:, solver.feet]  # (T, 2, 2, 3): ankle and toe of each foot
+    above = feet[..., 1] - solver.planted
+    t = np.arange(len(pos))
+    joint = np.argmin(above, axis=2)
+    low = above[t[:, None], [0, 1], joint]
+    support = np.argmin(low, axis=1)
+    foot_gap = np.abs(low[:, 0] - low[:, 1])
+    joint_gap = np.abs(above[t, support, 0] - above[t, support, 1])
+    clear = ((foot_gap > 1e-6) & (joint_gap > 1e-6))[1:]  # no ties between the feet or the joints
+    pinned = feet[t, support, joint[t, support]]  # the lowest joint of the lower foot
+    before = feet[t[1:] - 1, support[1:], joint[t[1:], support[1:]]]
+    assert np.abs(pinned[1:, [0, 2]] - before[:, [0, 2]])[clear].max() < 1e-6  # it does not slide
+    assert np.allclose(pinned[:, 1], solver.planted[support, joint[t, support]])  # and stands on the ground
 
 
 def test_flight_phases_follow_the_predicted_root_height():
     m = toy_walk(n_cycles=1)
-    la, ra = JM.index(m.skeleton, "left_ankle"), JM.index(m.skeleton, "right_ankle")
+    solver = root_solver(m.skeleton, JM)
     high = np.full(m.n_frames, 500.0)  # predicted curve far above the ground: every frame is in flight
     high[:3] = m.root_pos[:3, 1]
-    root = reconstruct_root(m.rotations, m.skeleton, la, ra, 3.0, root_height=high, flight_threshold=5.0)
+    root = reconstruct_root(m.rotations, m.skeleton, solver.feet, solver.planted, root_height=high, flight_threshold=5.0)
     assert np.allclose(root[5:, 1], 500.0)
     v = np.diff(root[5:, [0, 2]], axis=0)
     assert np.allclose(v, v[0])  # constant horizontal speed in flight
@@ -290,3 +296,13 @@ def test_model_rejects_bad_groups_and_structure(toy_clips):
         StyleVariationModel(groups).fit(toy_clips)
     with pytest.raises(ValueError, match="unknown structure"):
         StyleVariationModel(groups, structure="sideways").fit(toy_clips)
+
+
+def test_realtime_clips_match_one_by_one_retiming(toy_clips):
+    from motionvar.ma2010.synthesis import realtime_clips
+
+    sub = toy_clips.subset(np.arange(3))
+    together = realtime_clips(sub.rotations, sub.key_times, sub.reference_keys, sub.fps, sub.root_height)
+    for m, (rot, height) in enumerate(together):
+        one, h = retime(sub.rotations[m], sub.reference_keys, sub.key_times[m], sub.fps, sub.root_height[m])
+        assert np.allclose(np.abs(np.sum(rot * one, axis=-1)), 1.0) and np.allclose(height, h)

@@ -33,10 +33,16 @@ class LinearGaussianNode:
 
 
 def _fit_nodes(inputs: np.ndarray, targets: np.ndarray, max_parents: int) -> list[LinearGaussianNode]:
-    """One linear-Gaussian node per target column; parents chosen by LassoLarsIC (BIC)."""
+    """One linear-Gaussian node per target column; parents chosen by LassoLarsIC (BIC).
+    The noise variance the BIC needs comes from one least-squares fit of all targets on
+    all candidates (what LassoLarsIC would otherwise refit for every target)."""
     mu, sd = inputs.mean(axis=0), inputs.std(axis=0)
     sd = np.where(sd > 1e-12, sd, 1.0)
     z = (inputs - mu) / sd
+    full = np.concatenate([z, np.ones((len(z), 1))], axis=1)
+    resid = targets - full @ np.linalg.lstsq(full, targets, rcond=None)[0]
+    noise = np.maximum((resid**2).sum(axis=0) / max(len(z) - full.shape[1], 1), 1e-12)
+    gram = (z - z.mean(axis=0)).T @ (z - z.mean(axis=0))  # shared by every target's LARS path
     nodes = []
     for d in range(targets.shape[1]):  # loop over DOFs
         y = targets[:, d]
@@ -45,7 +51,9 @@ def _fit_nodes(inputs: np.ndarray, targets: np.ndarray, max_parents: int) -> lis
             continue
         with warnings.catch_warnings():  # LARS reports collinear candidates (consecutive frames) as it drops them
             warnings.simplefilter("ignore", ConvergenceWarning)
-            lasso = LassoLarsIC(criterion="bic", max_iter=max_parents).fit(z, y)
+            lasso = LassoLarsIC(
+                criterion="bic", max_iter=max_parents, noise_variance=noise[d], precompute=gram
+            ).fit(z, y)
         parents = np.flatnonzero(lasso.coef_)[:max_parents]
         design = np.concatenate([inputs[:, parents], np.ones((len(y), 1))], axis=1)
         coef = np.linalg.lstsq(design, y, rcond=None)[0]

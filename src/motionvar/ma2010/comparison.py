@@ -7,7 +7,7 @@ same footskate cleanup (Sec. 6.3), so that the methods differ only in their pose
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -81,31 +81,41 @@ def dbn_sequence(dbn: LauDBN, codec: PoseCodec, n_frames: int, solver: RootSolve
 @dataclass(frozen=True)
 class NaturalnessReference:
     """What the naturalness measures compare with: the training poses (pose features),
-    the foot joints and contact height for skating, and the acceleration threshold above
-    which a frame counts as a discontinuity."""
+    the foot joints with the height of each when planted (its 5th height percentile over
+    the examples) and the contact tolerance above it, for skating; and the acceleration
+    above which a frame counts as a discontinuity."""
 
     poses: np.ndarray
     foot_joints: np.ndarray
+    foot_floor: np.ndarray
     contact_height: float
     acceleration_threshold: float
 
     @classmethod
-    def from_examples(cls, motions: Sequence[Motion], foot_joints: np.ndarray, contact_height: float, threshold_factor: float = 1.5) -> "NaturalnessReference":
-        """From the (root-solved) example motions: their poses, and ``threshold_factor``
-        times the largest joint acceleration seen in them."""
-        poses = np.concatenate([pose_features(m.positions()) for m in motions])
-        peak = max(float(peak_acceleration(m.positions(), m.fps).max()) for m in motions)
-        return cls(poses, np.asarray(foot_joints), contact_height, threshold_factor * peak)
+    def from_examples(
+        cls, motions: Sequence[Motion], foot_joints: np.ndarray, contact_height: float = 2.0, threshold_factor: float = 1.5
+    ) -> "NaturalnessReference":
+        """From the (root-solved) example motions: their poses, their feet's planted
+        heights, and ``threshold_factor`` times the largest joint acceleration in them."""
+        positions = [m.positions() for m in motions]
+        foot_joints = np.asarray(foot_joints)
+        poses = np.concatenate([pose_features(p) for p in positions])
+        heights = np.concatenate([p[:, foot_joints, 1] for p in positions])
+        peak = max(float(peak_acceleration(p, m.fps).max()) for p, m in zip(positions, motions))
+        return cls(poses, foot_joints, np.percentile(heights, 5, axis=0), contact_height, threshold_factor * peak)
 
 
 def naturalness(motion: Motion, ref: NaturalnessReference) -> dict[str, float]:
-    """Jerk (cm/s^3), foot skating (cm/s), mean distance to the nearest training pose (cm,
-    RMS per joint) and discontinuities per minute."""
+    """Jerk (cm/s^3), foot skating (cm/s: horizontal speed of foot joints within
+    ``contact_height`` of their planted height), mean distance to the nearest training
+    pose (cm, RMS per joint) and discontinuities per minute."""
     pos = motion.positions()
+    feet = pos[:, ref.foot_joints].copy()
+    feet[..., 1] -= ref.foot_floor
     minutes = motion.duration / 60.0
     return {
         "jerk_cm_s3": mean_jerk(pos, motion.fps),
-        "foot_skating_cm_s": foot_skating(pos[:, ref.foot_joints], motion.fps, ref.contact_height),
+        "foot_skating_cm_s": foot_skating(feet, motion.fps, ref.contact_height),
         "pose_distance_cm": float(nearest_pose_distance(pose_features(pos), ref.poses).mean()),
         "discontinuities_per_min": count_discontinuities(pos, motion.fps, ref.acceleration_threshold) / max(minutes, 1e-9),
     }
@@ -117,3 +127,33 @@ def variation_between(motions: Sequence[Motion]) -> float:
     feats = [pose_features(m.positions()) for m in motions]
     pairs = [(i, j) for i in range(len(feats)) for j in range(i + 1, len(feats))]
     return float(np.mean([pose_set_distance(feats[i], feats[j]) for i, j in pairs])) if pairs else 0.0
+
+
+NATURALNESS_SCORES = {
+    "jerk_vs_examples": "|log(jerk / examples' jerk)|",
+    "foot_skating_cm_s": "foot skating (cm/s)",
+    "pose_distance_cm": "distance to the nearest example pose (cm)",
+    "discontinuities_per_min": "discontinuities per minute",
+}
+
+
+def naturalness_scores(measures: Mapping[str, float], example_jerk: float) -> dict[str, float]:
+    """The four naturalness scores of one sequence, each lower = more natural: jerk as its
+    log-ratio to the examples' jerk (too smooth is as unnatural as too jerky), the others
+    as measured."""
+    return {
+        "jerk_vs_examples": abs(float(np.log(measures["jerk_cm_s3"] / example_jerk))),
+        "foot_skating_cm_s": measures["foot_skating_cm_s"],
+        "pose_distance_cm": measures["pose_distance_cm"],
+        "discontinuities_per_min": measures["discontinuities_per_min"],
+    }
+
+
+def best_with_variation(
+    scores: Mapping[str, Mapping[str, float]], variation: Mapping[str, float], method: str, min_variation: float = 1e-6
+) -> dict[str, bool]:
+    """For each score, whether ``method`` is at least as good (lower) as every other
+    method whose sequences vary (variation > ``min_variation``). ``scores``: method ->
+    score name -> mean value; ``variation``: method -> variation between its sequences."""
+    rivals = [m for m in scores if m != method and variation[m] > min_variation]
+    return {k: all(scores[method][k] <= scores[r][k] for r in rivals) for k in scores[method]}

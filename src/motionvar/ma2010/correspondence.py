@@ -15,11 +15,13 @@ from dataclasses import replace
 
 import numpy as np
 
+from ..core.joint_map import JointMap
 from ..core.motion import Motion
-from ..core.quaternions import qfix, qmul, qnormalize, qrot, qslerp, quat_about_axis
+from ..core.quaternions import qnormalize, qslerp
 from ..core.skeleton import Skeleton
-
-UP = np.array([0.0, 1.0, 0.0])
+from ..prep.alignment import align_motion, clip_directions
+from ..prep.options import PrepOptions
+from ..prep.resample import sample_motion
 
 
 def standard_skeleton(skeletons: Sequence[Skeleton]) -> Skeleton:
@@ -36,35 +38,24 @@ def standard_skeleton(skeletons: Sequence[Skeleton]) -> Skeleton:
     return replace(first, offsets=offsets, end_sites=ends)
 
 
-def movement_direction(motion: Motion, facing_axis: np.ndarray = np.array([0.0, 0.0, 1.0])) -> np.ndarray:
-    """dir(M) of Eq. 5: the horizontal root displacement from the first to the last frame,
-    or, for a clip that does not travel (< 1 cm), the root's facing in the first frame."""
-    d = motion.root_pos[-1] - motion.root_pos[0]
-    d = np.array([d[0], 0.0, d[2]])
-    if np.linalg.norm(d) < 1.0:
-        f = qrot(motion.rotations[0, 0], np.asarray(facing_axis, dtype=float))
-        d = np.array([f[0], 0.0, f[2]])
-    n = np.linalg.norm(d)
-    if n < 1e-9:
-        raise ValueError("movement_direction: the clip neither travels nor faces a horizontal direction")
-    return d / n
+def movement_direction(motion: Motion, joint_map: JointMap) -> np.ndarray:
+    """dir(M) of Eq. 5: the unit horizontal direction from the first to the last root
+    position (the hips' facing for a clip that does not travel)."""
+    d = clip_directions([motion], joint_map, PrepOptions(heading="movement"))[0]
+    return d / np.linalg.norm(d)
 
 
-def space_warp(motion: Motion, facing_axis: np.ndarray = np.array([0.0, 0.0, 1.0])) -> Motion:
-    """Eq. 5-6: rotate the clip about the vertical axis so that its movement direction is
-    the x axis (theta* in closed form: atan2 of the direction), and move its first frame's
-    root horizontally to the origin."""
-    d = movement_direction(motion, facing_axis)
-    theta = np.arctan2(d[2], d[0])  # R_y(theta) maps (cos t, 0, sin t) onto +x
-    q = quat_about_axis(UP, theta)
-    root = motion.root_pos - motion.root_pos[0] * np.array([1.0, 0.0, 1.0])
-    rotations = motion.rotations.copy()
-    rotations[:, 0] = qmul(q, rotations[:, 0])
-    return replace(motion, root_pos=qrot(q, root), rotations=rotations)
+def space_warp(motion: Motion, joint_map: JointMap) -> Motion:
+    """Eq. 5-6: rotate the clip about the vertical so that its movement direction is +x
+    (theta* = atan2 of the direction, exactly) and put its first root above the origin;
+    :func:`motionvar.prep.alignment.align_motion` with Ma's movement heading."""
+    return align_motion(motion, joint_map, PrepOptions(heading="movement"))
 
 
 def sample_rotations(rotations: np.ndarray, frames: np.ndarray) -> np.ndarray:
-    """Rotations (T, J, 4) sampled at fractional frame indices (U,) by slerp."""
+    """Rotations (T, J, 4) sampled at fractional frame indices (U,) by slerp (the array
+    counterpart of :func:`motionvar.prep.resample.sample_motion`, for the synthesis hot
+    path, where clips are arrays without a skeleton)."""
     T = rotations.shape[0]
     frames = np.clip(np.asarray(frames, dtype=float), 0.0, T - 1.0)
     if T == 1:
@@ -107,8 +98,18 @@ def time_warp(motion: Motion, key_frames: np.ndarray, reference: np.ndarray) -> 
         raise ValueError(f"time_warp: key frames {key_frames.tolist()} must increase and match the reference")
     n = int(round(reference[-1])) + 1
     src = np.interp(np.arange(n, dtype=float), reference, key_frames)
-    rot = qfix(qnormalize(sample_rotations(motion.rotations, src)), axis=0)
-    return replace(motion, root_pos=sample_linear(motion.root_pos, src), rotations=rot, translations=None)
+    return replace(sample_motion(motion, src), translations=None)
+
+
+def retime_frames(reference: np.ndarray, key_times: np.ndarray, fps: float) -> np.ndarray:
+    """Source frames (U,) on the normalized timeline (key frames at ``reference``) of the
+    real-time frames of a clip whose key frames fall at ``key_times`` (seconds from its
+    start). Key times are made strictly increasing first: the progression through the
+    clip is monotonic ([PSS02]'s incremental time warping)."""
+    kt = np.asarray(key_times, dtype=float) - float(key_times[0])
+    kt = np.maximum.accumulate(np.maximum(kt, 0.0) + np.arange(len(kt)) * 1e-6)
+    n_out = int(np.floor(kt[-1] * fps + 1e-9)) + 1
+    return np.interp(np.arange(n_out) / fps, kt, reference)
 
 
 def retime(
@@ -120,14 +121,10 @@ def retime(
 ) -> tuple[np.ndarray, np.ndarray | None]:
     """Inverse time warp of a synthesized clip: from the normalized timeline (key frames
     at ``reference``) to real time, where its key frames fall at ``key_times`` (seconds
-    from the clip's start). Key times are made strictly increasing first (monotonic
-    progression, [PSS02]).
+    from the clip's start), see :func:`retime_frames`.
 
     Returns rotations (U, J, 4) at ``fps`` and ``extra`` (T, ...) resampled alike.
     """
-    kt = np.asarray(key_times, dtype=float) - float(key_times[0])
-    kt = np.maximum.accumulate(np.maximum(kt, 0.0) + np.arange(len(kt)) * 1e-6)
-    n_out = int(np.floor(kt[-1] * fps + 1e-9)) + 1
-    src = np.interp(np.arange(n_out) / fps, kt, reference)
+    src = retime_frames(reference, key_times, fps)
     rot = qnormalize(sample_rotations(rotations, src))
     return rot, None if extra is None else sample_linear(extra, src)

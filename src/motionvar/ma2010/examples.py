@@ -9,6 +9,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
+import pandas as pd
 
 from ..core.joint_map import JointMap
 from ..core.motion import Motion
@@ -17,7 +18,7 @@ from ..metrics.stride import stride_lengths
 from .correspondence import movement_direction, reference_key_positions, space_warp, time_warp
 from .keyframes import Cycle, KeyframeSignal, find_extrema, keyframe_signal, segment_cycles
 from .representation import ClipSet, rest_hip_height
-from .synthesis import RootSolver, rest_foot_height
+from .synthesis import RootSolver, rest_foot_heights
 
 
 @dataclass(frozen=True)
@@ -52,16 +53,16 @@ def extract_cycles(
     sig = keyframe_signal(pos, lower, upper, n_components)
     frames, kinds = find_extrema(sig.signal, min_prominence, int(round(min_separation_s * motion.fps)))
     la, ra = joint_map.index(sk, "left_ankle"), joint_map.index(sk, "right_ankle")
-    cycles = segment_cycles(frames, kinds, pos[:, la], pos[:, ra], movement_direction(motion))
+    cycles = segment_cycles(frames, kinds, pos[:, la], pos[:, ra], movement_direction(motion, joint_map))
     return CycleExtraction(sig, frames, kinds, cycles)
 
 
 def root_solver(skeleton: Skeleton, joint_map: JointMap, flight_threshold: float | None = None) -> RootSolver:
-    """Footskate cleanup settings on ``skeleton``: the ankles are compared, planted at
-    their rest height above the sole."""
-    la, ra = joint_map.index(skeleton, "left_ankle"), joint_map.index(skeleton, "right_ankle")
-    lt = joint_map.index(skeleton, "left_toe")
-    return RootSolver(skeleton, la, ra, rest_foot_height(skeleton, la, lt), flight_threshold)
+    """Footskate cleanup settings on ``skeleton``: each foot stands on its ankle or its
+    toe, planted at their rest heights above the sole; strides are measured at the ankles."""
+    feet = np.array([joint_map.indices(skeleton, [f"{side}_ankle", f"{side}_toe"]) for side in ("left", "right")])
+    planted = np.stack([rest_foot_heights(skeleton, f) for f in feet])
+    return RootSolver(skeleton, feet, planted, flight_threshold)
 
 
 def support_strides(motion: Motion, key_frames: np.ndarray, solver: RootSolver) -> np.ndarray:
@@ -103,7 +104,7 @@ def build_clipset(
     std_hip = rest_hip_height(skeleton, foot_joints)
     rots, heights, keys = [], [], []
     for m, k in zip(cycles, key_frames):  # loop over clips
-        w = time_warp(space_warp(m), k, ref)
+        w = time_warp(space_warp(m, joint_map), k, ref)
         scale = std_hip / rest_hip_height(m.skeleton, foot_joints)
         rots.append(w.rotations)
         heights.append(w.root_pos[:, 1] * scale)
@@ -112,7 +113,7 @@ def build_clipset(
     fps = float(cycles[0].fps)
     if style is None:
         solver = root_solver(skeleton, joint_map)
-        style = np.stack([normalized_strides(space_warp(m).rotations, k, solver, fps) for m, k in zip(cycles, key_frames)])
+        style = np.stack([normalized_strides(space_warp(m, joint_map).rotations, k, solver, fps) for m, k in zip(cycles, key_frames)])
     ids = list(clip_ids) if clip_ids is not None else []
     return ClipSet(
         rotations=rotations, key_times=np.stack(keys), root_height=np.stack(heights), style=np.asarray(style, dtype=float),
@@ -124,3 +125,41 @@ def cut(motion: Motion, cycle: Cycle) -> Motion:
     """The frames of one cycle as a motion."""
     return motion.slice(cycle.start, cycle.stop + 1)
 
+
+
+def collect_cycles(
+    motions: Sequence[Motion],
+    clip_ids: Sequence[str],
+    joint_map: JointMap,
+    min_prominence: float = 0.1,
+    min_separation_s: float = 0.1,
+) -> tuple[list[Motion], list[np.ndarray], pd.DataFrame]:
+    """Every cycle of every motion (Sec. 4.1-4.2: key frames, then clips): the cycles as
+    motions, their key frames, and a table (clip_id = "<source>_c<k>", source_clip,
+    start_frame, stop_frame, n_frames). Motions without a complete cycle add nothing."""
+    cycles, keys, rows = [], [], []
+    for m, cid in zip(motions, clip_ids):  # loop over clips
+        for k, c in enumerate(extract_cycles(m, joint_map, min_prominence, min_separation_s).cycles):
+            cycles.append(cut(m, c))
+            keys.append(c.key_frames)
+            rows.append({"clip_id": f"{cid}_c{k}", "source_clip": cid, "start_frame": c.start, "stop_frame": c.stop,
+                         "n_frames": c.stop - c.start + 1})
+    columns = ["clip_id", "source_clip", "start_frame", "stop_frame", "n_frames"]
+    return cycles, keys, pd.DataFrame(rows, columns=columns)
+
+
+def rows_matching(metadata: pd.DataFrame, what: str = "metadata", **filters: str | Sequence[str]) -> np.ndarray:
+    """Row indices of ``metadata`` whose columns take the given values (a string, or a list
+    of accepted values; an empty list accepts all). ValueError naming ``what`` when a
+    filtered column is missing or nothing matches."""
+    mask = np.ones(len(metadata), dtype=bool)
+    for column, accepted in filters.items():
+        values = [accepted] if isinstance(accepted, str) else list(accepted)
+        if not values:
+            continue
+        if column not in metadata:
+            raise ValueError(f"{what}: no column {column!r} to select {values}")
+        mask &= metadata[column].astype(str).isin(values).to_numpy()
+    if not mask.any():
+        raise ValueError(f"{what}: no clip with {filters}")
+    return np.flatnonzero(mask)

@@ -42,6 +42,34 @@ def heading_angle(q: np.ndarray, forward: np.ndarray) -> np.ndarray:
     return np.arctan2(-f[..., 2], f[..., 0])
 
 
+def land(
+    last_pose: np.ndarray,
+    second: np.ndarray,
+    last_extra: np.ndarray | None = None,
+    second_extra: np.ndarray | None = None,
+    landing: int | None = None,
+    align_heading: bool = True,
+    forward: np.ndarray = np.array([1.0, 0.0, 0.0]),
+) -> tuple[np.ndarray, np.ndarray | None]:
+    """M2 edited for a transition from a clip ending in ``last_pose`` (Eq. 14-15):
+    {q_1..q_t, p^2_(t+1)..p^2_T} with q_i = p^2_i exp(rho_i log((p^2_1)^-1 p^1_T)) per
+    joint, so that q_1 = p^1_T; per-frame channels ``second_extra`` get
+    q_i = p^2_i + rho_i (p^1_T - p^2_1). See :func:`transition`."""
+    second = second.copy()
+    if align_heading:
+        yaw = heading_angle(last_pose[0], forward) - heading_angle(second[0, 0], forward)
+        second[:, 0] = qmul(quat_about_axis([0.0, 1.0, 0.0], yaw), second[:, 0])
+    t = landing_frame(last_pose, second) if landing is None else int(np.clip(landing, 2, len(second)))
+    rho = blend_weights(t)
+    delta = qlog(qmul(qinv(second[0]), last_pose))  # (J, 3)
+    second[:t] = qmul(second[:t], qexp(rho[:, None, None] * delta[None]))
+    extra = None
+    if last_extra is not None and second_extra is not None:
+        extra = np.array(second_extra, dtype=float, copy=True)
+        extra[:t] += rho.reshape((-1,) + (1,) * (extra.ndim - 1)) * (last_extra - extra[0])
+    return second, extra
+
+
 def transition(
     first: np.ndarray,
     second: np.ndarray,
@@ -52,7 +80,7 @@ def transition(
     forward: np.ndarray = np.array([1.0, 0.0, 0.0]),
 ) -> tuple[np.ndarray, np.ndarray | None]:
     """M = M1 (+) M2 (Eq. 14): {p^1_1..p^1_(T-1), q_1..q_t, p^2_(t+1)..p^2_T} with
-    q_i = p^2_i + rho_i dp, dp = p^1_T - p^2_1. Only M2 is edited.
+    q_i = p^2_i + rho_i dp, dp = p^1_T - p^2_1. Only M2 is edited (:func:`land`).
 
     For rotations the displacement is taken in the tangent space of each joint:
     q_i = p^2_i exp(rho_i log((p^2_1)^-1 p^1_T)), so q_1 = p^1_T exactly. With
@@ -67,64 +95,63 @@ def transition(
         landing: landing frame t (1-based); default :func:`landing_frame`.
         forward: the root's forward axis after space warping (+x).
     """
-    second = second.copy()
-    if align_heading:
-        yaw = heading_angle(first[-1, 0], forward) - heading_angle(second[0, 0], forward)
-        second[:, 0] = qmul(quat_about_axis([0.0, 1.0, 0.0], yaw), second[:, 0])
-    t = landing_frame(first[-1], second) if landing is None else int(np.clip(landing, 2, len(second)))
-    rho = blend_weights(t)
-    delta = qlog(qmul(qinv(second[0]), first[-1]))  # (J, 3)
-    blended = qmul(second[:t], qexp(rho[:, None, None] * delta[None]))
-    rotations = np.concatenate([first[:-1], blended, second[t:]], axis=0)
-    extra = None
-    if first_extra is not None and second_extra is not None:
-        d_extra = first_extra[-1] - second_extra[0]
-        shape = (-1,) + (1,) * (np.ndim(second_extra) - 1)
-        q_extra = second_extra[:t] + rho.reshape(shape) * d_extra
-        extra = np.concatenate([first_extra[:-1], q_extra, second_extra[t:]], axis=0)
+    last_extra = None if first_extra is None else first_extra[-1]
+    edited, extra = land(first[-1], second, last_extra, second_extra, landing, align_heading, forward)
+    rotations = np.concatenate([first[:-1], edited], axis=0)
+    if extra is not None:
+        extra = np.concatenate([first_extra[:-1], extra], axis=0)
     return rotations, extra
 
 
 def reconstruct_root(
     rotations: np.ndarray,
     skeleton: Skeleton,
-    left_foot: int,
-    right_foot: int,
-    foot_height: float,
+    feet: np.ndarray,
+    planted: np.ndarray,
     root_height: np.ndarray | None = None,
     flight_threshold: float | None = None,
 ) -> np.ndarray:
     """Footskate cleanup (Sec. 6.3): the root trajectory (T, 3) that keeps the lower foot
     planted ("fixing this foot on the ground and treating it as the root", [TLP07]).
 
-    In every frame the support foot is the lower of the two foot joints. Horizontally the
-    root moves opposite to the support foot's motion relative to the root; vertically it
-    sits so that the support foot is at ``foot_height`` (its height when planted).
+    A foot's height is that of its lowest joint above the joint's planted height (ankle
+    and toe: a foot rolling over its toes stands on the toe, a foot landing on its heel
+    on the ankle). In every frame the lower foot supports the body and its lowest joint is
+    pinned: horizontally the root moves opposite to that joint's motion relative to the
+    root, vertically the root sits so that the joint is at its planted height.
 
     Behaviours with flight phases (running): pass the predicted root height curve
     ``root_height`` (T,) and ``flight_threshold`` (cm). A frame is in flight when both
-    feet, placed with the predicted root height, are higher than ``foot_height +
-    flight_threshold``; there the predicted curve sets the root height and the root moves
-    horizontally at constant speed (the velocity of the last supported frame).
+    feet, placed with the predicted root height, are higher than ``flight_threshold``;
+    there the predicted curve sets the root height and the root moves horizontally at
+    constant speed (the velocity of the last supported frame).
 
     Args:
         rotations: (T, J, 4) local rotations.
-        left_foot, right_foot: indices of the foot joints compared (e.g. the ankles).
+        feet: (2, F) joint indices of the left and the right foot (e.g. ankle and toe).
+        planted: (2, F) height (cm) of each of those joints when its foot is planted.
     """
     T = len(rotations)
+    feet = np.asarray(feet, dtype=np.int64).reshape(2, -1)
+    planted = np.asarray(planted, dtype=float).reshape(feet.shape)
     local = fk(rotations, np.zeros((T, 3)), skeleton.offsets, skeleton.parents)  # root at the origin
-    feet = local[:, [left_foot, right_foot]]  # (T, 2, 3)
-    support = np.argmin(feet[:, :, 1], axis=1)
-    sup_now = feet[np.arange(T), support]
-    sup_prev = feet[np.arange(T - 1), support[1:]]
+    p = local[:, feet]  # (T, 2, F, 3)
+    above = p[..., 1] - planted  # (T, 2, F): height above planted, root at height 0
+    joint = np.argmin(above, axis=2)  # lowest joint of each foot
+    foot_low = np.take_along_axis(above, joint[..., None], axis=2)[..., 0]  # (T, 2)
+    support = np.argmin(foot_low, axis=1)
+    t = np.arange(T)
+    pin = joint[t, support]
+    now = p[t, support, pin]
+    prev = p[np.maximum(t - 1, 0), support, pin]
     step = np.zeros((T, 3))
-    step[1:, [0, 2]] = -(sup_now[1:, [0, 2]] - sup_prev[:, [0, 2]])
-    height = foot_height - sup_now[:, 1]
+    step[1:, [0, 2]] = -(now[1:, [0, 2]] - prev[1:, [0, 2]])
+    height = -foot_low[t, support]
     if root_height is not None and flight_threshold is not None:
         root_height = np.asarray(root_height, dtype=float)
-        flight = np.all(root_height[:, None] + feet[:, :, 1] > foot_height + flight_threshold, axis=1)
+        flight = np.all(root_height[:, None] + foot_low > flight_threshold, axis=1)
         flight[0] = False
-        last_supported = np.maximum.accumulate(np.where(flight, 0, np.arange(T)))
+        last_supported = np.maximum.accumulate(np.where(flight, 0, t))
         step[flight] = step[last_supported[flight]]
         height = np.where(flight, root_height, height)
     root = np.cumsum(step, axis=0)

@@ -107,6 +107,7 @@ class StyleVariationModel:
         self.skeleton_ = clips.skeleton
         self.fps_ = clips.fps
         self.style_ = clips.style
+        self.key_times_span_ = clips.key_times[:, -1] - clips.key_times[:, 0]
         self.interpolators_: dict[str, tuple[ClipCodec, UniversalKriging]] = {}
         for g, joints in self.groups.items():
             lead = g == self.timing_group_

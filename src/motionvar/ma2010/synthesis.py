@@ -14,34 +14,43 @@ import numpy as np
 from ..core.kinematics import fk
 from ..core.motion import Motion
 from ..core.skeleton import Skeleton
-from .correspondence import retime
-from .postprocess import reconstruct_root, transition
+from ..core.quaternions import qnormalize, qslerp
+from .correspondence import retime_frames
+from .postprocess import land, reconstruct_root
 
 
-def rest_foot_height(skeleton: Skeleton, ankle: int, toe: int) -> float:
-    """Height of the ankle above the lowest point of its foot in the rest pose (cm): the
-    ankle's height when the foot is planted flat."""
+def rest_foot_heights(skeleton: Skeleton, joints: np.ndarray) -> np.ndarray:
+    """Height (cm) of each of ``joints`` (one foot's, e.g. ankle and toe) above the lowest
+    point of that foot (its joints and end sites) in the rest pose: their planted heights."""
+    joints = np.asarray(joints, dtype=np.int64)
     pos = fk(np.tile([1.0, 0, 0, 0], (skeleton.n_joints, 1)), np.zeros(3), skeleton.offsets, skeleton.parents)
-    lowest = [pos[ankle, 1], pos[toe, 1]]
-    if toe in skeleton.end_sites:
-        lowest.append(pos[toe, 1] + skeleton.end_sites[toe][1])
-    return float(pos[ankle, 1] - min(lowest))
+    points = [pos[j, 1] for j in joints] + [pos[j, 1] + skeleton.end_sites[j][1] for j in joints if j in skeleton.end_sites]
+    return pos[joints, 1] - min(points)
 
 
 @dataclass(frozen=True)
 class RootSolver:
-    """How the root is recovered (Sec. 6.3): the foot joints compared, the planted foot
-    height and, for behaviours with flight phases, the flight threshold (cm)."""
+    """How the root is recovered (Sec. 6.3): the joints of the left and the right foot
+    (2, F), their planted heights (2, F) and, for behaviours with flight phases, the
+    flight threshold (cm). ``left_foot`` / ``right_foot`` name the joint whose travel
+    measures a stride (the ankle)."""
 
     skeleton: Skeleton
-    left_foot: int
-    right_foot: int
-    foot_height: float
+    feet: np.ndarray
+    planted: np.ndarray
     flight_threshold: float | None = None
+
+    @property
+    def left_foot(self) -> int:
+        return int(self.feet[0, 0])
+
+    @property
+    def right_foot(self) -> int:
+        return int(self.feet[1, 0])
 
     def motion(self, rotations: np.ndarray, fps: float, root_height: np.ndarray | None = None) -> Motion:
         root = reconstruct_root(
-            rotations, self.skeleton, self.left_foot, self.right_foot, self.foot_height,
+            rotations, self.skeleton, self.feet, self.planted,
             root_height=root_height if self.flight_threshold is not None else None,
             flight_threshold=self.flight_threshold,
         )
@@ -51,23 +60,40 @@ class RootSolver:
 def realtime_clips(
     rotations: np.ndarray, key_times: np.ndarray, reference_keys: np.ndarray, fps: float, root_height: np.ndarray | None = None
 ) -> list[tuple[np.ndarray, np.ndarray | None]]:
-    """Inverse time warp (Sec. 4.2) of M clips (M, T, J, 4) to real time at ``fps``."""
-    out = []
-    for m in range(len(rotations)):  # loop over clips
-        h = None if root_height is None else root_height[m]
-        out.append(retime(rotations[m], reference_keys, key_times[m], fps, h))
-    return out
+    """Inverse time warp (Sec. 4.2) of M clips (M, T, J, 4) to real time at ``fps``: one
+    vectorised slerp over the frames of all clips (see :func:`.correspondence.retime`)."""
+    M, T = rotations.shape[:2]
+    sources = [retime_frames(reference_keys, key_times[m], fps) for m in range(M)]  # loop over clips: sizes only
+    cuts = np.cumsum([len(f) for f in sources])[:-1]
+    within = np.concatenate(sources)  # fractional frame within its clip
+    clip = np.repeat(np.arange(M), [len(f) for f in sources])
+    i0 = np.minimum(np.floor(within).astype(np.int64), T - 2)
+    alpha = np.broadcast_to((within - i0)[:, None], (len(within), rotations.shape[2]))
+    rot = qnormalize(qslerp(rotations[clip, i0], rotations[clip, i0 + 1], alpha))
+    rots = np.split(rot, cuts)
+    if root_height is None:
+        return [(r, None) for r in rots]
+    heights = np.split(root_height[clip, i0] * (1 - alpha[:, 0]) + root_height[clip, i0 + 1] * alpha[:, 0], cuts)
+    return list(zip(rots, heights))
 
 
 def stitch(clips: Sequence[tuple[np.ndarray, np.ndarray | None]], align_heading: bool = True) -> tuple[np.ndarray, np.ndarray | None]:
     """Concatenate real-time clips with a displacement-mapped transition into each next
-    clip (Eq. 14-15); returns rotations (T, J, 4) and the root height curve or None."""
+    clip (Eq. 14-15); returns rotations (T, J, 4) and the root height curve or None.
+    Every clip is edited only at its start, so its last frame is the one the next clip
+    lands from; the pieces are joined once at the end."""
     if not clips:
         raise ValueError("stitch: no clips")
-    rot, extra = clips[0]
+    pieces, extras = [clips[0][0]], [clips[0][1]]
     for nxt_rot, nxt_extra in clips[1:]:  # loop over clips
-        rot, extra = transition(rot, nxt_rot, extra, nxt_extra, align_heading=align_heading)
-    return rot, extra
+        last_extra = None if extras[-1] is None else extras[-1][-1]
+        rot, extra = land(pieces[-1][-1], nxt_rot, last_extra, nxt_extra, align_heading=align_heading)
+        pieces[-1], extras[-1] = pieces[-1][:-1], None if extras[-1] is None else extras[-1][:-1]
+        pieces.append(rot)
+        extras.append(extra)
+    rotations = np.concatenate(pieces, axis=0)
+    extra = None if any(e is None for e in extras) else np.concatenate(extras, axis=0)
+    return rotations, extra
 
 
 def sequence_motion(
