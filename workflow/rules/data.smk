@@ -14,7 +14,7 @@ rule data:
         ev_log("data"),
     benchmark:
         ev_benchmark("data")
-    threads: 1
+    threads: lambda wc: 2 if dataset_config(wc.dataset)["source"] == "synthetic" else 1
     resources:
         mem_mb=4000,
     conda:

@@ -4,12 +4,14 @@ it into results/{dataset}/data/ (clips.npz + metadata.csv)."""
 from pathlib import Path
 
 
-def load(entry: dict):
-    """(motions, metadata) of one config.datasets entry."""
+def load(entry: dict, workers: int = 1):
+    """(motions, metadata) of one config.datasets entry; the generator runs ``workers``
+    processes (the rule's threads; the output does not depend on it)."""
     if entry["source"] == "synthetic":
         from motionvar.synth import SynthSpec, generate_dataset
 
-        return generate_dataset(SynthSpec(**{k: v for k, v in entry.items() if k != "source"}))
+        spec = SynthSpec(**{k: v for k, v in entry.items() if k != "source"})
+        return generate_dataset(spec, workers=workers)
     from motionvar.core import cmu_joint_map
     from motionvar.io.bvh_dataset import import_bvh_folder
     from motionvar.io.joint_map_file import load_joint_map
@@ -28,7 +30,7 @@ def main(snakemake) -> None:
 
     name = snakemake.wildcards.dataset
     try:
-        motions, metadata = load(dict(snakemake.params.entry))
+        motions, metadata = load(dict(snakemake.params.entry), workers=snakemake.threads)
     except ValueError as exc:
         raise ValueError(f"datasets.{name}: {exc}") from exc
     save_dataset(Path(snakemake.output.clips).parent, motions, metadata)
