@@ -41,6 +41,7 @@ class FakeSnakemake:
         self.params = params or Named()
         self.wildcards = wildcards or Named(dataset="test")
         self.log = Named([str(tmp_path / f"{rule}.log")])
+        self.threads = 1
 
 
 def script(name):
