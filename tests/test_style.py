@@ -9,7 +9,7 @@ from motionvar.core import JointMap, Motion, cmu_joint_map, cmu_skeleton
 from motionvar.core import quaternions as Q
 from motionvar.style import (
     ConvAutoencoder, FeatureScaler, FeatureSpace, MotionVAE, TrainConfig, content_loss, diagonal_minima,
-    diversity, features_to_positions, gram, gram_distance, heading_angles, kl_loss, load_vae, motion_features,
+    diversity, features_to_positions, gram, gram_distance, gram_distance_maps, heading_angles, kl_loss, load_vae, motion_features,
     motions_features, positions_to_features, sample_features, save_vae, sliding_windows, step_lengths,
     style_distance, style_distance_matrix, style_joints, train_autoencoder, train_vae,
 )
@@ -192,6 +192,15 @@ def test_gram_is_an_average_over_frames_independent_of_their_order():
     assert torch.allclose(gram(torch.cat([y, y], dim=1)), g, atol=1e-6)  # examples of any length
     assert float(style_distance(y[None].repeat(3, 1, 1), y)) == pytest.approx(0.0, abs=1e-9)
     assert float(gram_distance(g + 1.0, g)) == pytest.approx(1.0)
+
+
+def test_gram_distance_from_maps_equals_the_explicit_one():
+    gen = torch.Generator().manual_seed(0)
+    a, b = torch.rand(3, 5, 16, 10, generator=gen, dtype=torch.float64), torch.rand(16, 7, generator=gen, dtype=torch.float64)
+    ref = gram_distance(gram(a), gram(b))
+    assert ref.shape == (3, 5)
+    assert torch.allclose(gram_distance_maps(a, b), ref, rtol=1e-10)
+    assert float(style_distance(a[0], b)) == pytest.approx(float(ref[0].mean()))
 
 
 # ---------------------------------------------------------------- training

@@ -29,7 +29,7 @@ from .features import (
     FeatureLayout, FeatureScaler, features_to_positions, heading_angles, motion_features, motions_features,
     positions_to_features, sliding_windows, split_features, style_joints,
 )
-from .losses import content_loss, gram, gram_distance, kl_loss, style_distance, style_loss, vae_loss
+from .losses import content_loss, gram, gram_distance, gram_distance_maps, kl_loss, style_distance, style_loss, vae_loss
 from .model import (
     FeatureSpace, diagonal_minima, load_vae, sample_features, sample_maps, save_vae, style_distance_matrix,
 )

@@ -7,6 +7,9 @@
 - :func:`gram_distance`: the distance of Eq. 5.10 and 5.12. The thesis writes a norm and
   describes it as "the mean squared distance"; we take the mean over the 256 x 256 entries
   of the squared difference.
+- :func:`gram_distance_maps`: the same distance computed from the feature maps without
+  forming the K x K Gram matrices (exact algebra, ~10x less work for K = 256 kernels and
+  T = 30 frames: ||A A'/T - B B'/S||^2 = ||A'A||^2/T^2 - 2 ||A'B||^2/(T S) + ||B'B||^2/S^2).
 - :func:`style_loss`: Eq. 5.10, alpha times the Gram distance of decoded samples to the
   style example's Gram matrix.
 """
@@ -42,14 +45,25 @@ def gram_distance(g: torch.Tensor, g_ref: torch.Tensor) -> torch.Tensor:
     return ((g - g_ref) ** 2).mean(dim=(-2, -1))
 
 
-def style_loss(recon_maps: torch.Tensor, style_gram: torch.Tensor, alpha: float) -> torch.Tensor:
+def gram_distance_maps(maps: torch.Tensor, ref_maps: torch.Tensor) -> torch.Tensor:
+    """(...) ``gram_distance(gram(maps), gram(ref_maps))`` for maps (..., K, T) and
+    ref_maps (K, S), through T x T and T x S products instead of K x K ones."""
+    K, T, S = maps.shape[-2], maps.shape[-1], ref_maps.shape[-1]
+    mt = maps.transpose(-1, -2)
+    own = (mt @ maps).pow(2).sum(dim=(-2, -1)) / T**2
+    cross = (mt @ ref_maps).pow(2).sum(dim=(-2, -1)) / (T * S)
+    ref = (ref_maps.transpose(-1, -2) @ ref_maps).pow(2).sum() / S**2
+    return torch.clamp(own - 2.0 * cross + ref, min=0.0) / K**2
+
+
+def style_loss(recon_maps: torch.Tensor, style_maps: torch.Tensor, alpha: float) -> torch.Tensor:
     """Eq. 5.10: alpha ||Gram(decoder(z)) - Gram(y_s)||, averaged over samples;
-    recon_maps (..., K, T) decoded feature maps, style_gram (K, K)."""
-    return alpha * gram_distance(gram(recon_maps), style_gram).mean()
+    recon_maps (..., K, T) decoded feature maps, style_maps (K, S) the encoded style example."""
+    return alpha * gram_distance_maps(recon_maps, style_maps).mean()
 
 
 def style_distance(sample_maps: torch.Tensor, style_maps: torch.Tensor) -> torch.Tensor:
     """Eq. 5.12: D(m, s) = 1/N sum_i ||Gram(encoder(x_i)) - Gram(encoder(s))||, with
     sample_maps (N, K, T) the encoded samples x_i of model m and style_maps (K, T') the
     encoded style example s."""
-    return gram_distance(gram(sample_maps), gram(style_maps)).mean()
+    return gram_distance_maps(sample_maps, style_maps).mean()

@@ -116,9 +116,13 @@ def sample_maps(vae: MotionVAE, map_shape: tuple[int, int], n: int, seed: int) -
     return vae.sample(n, generator=gen).reshape(n, *map_shape)
 
 
-def sample_features(vae: MotionVAE, map_shape: tuple[int, int], space: FeatureSpace, n: int, seed: int) -> np.ndarray:
-    """n random clips of a model as features (n, T, C) (VAE decoder, then motion decoder)."""
-    return space.decode(sample_maps(vae, map_shape, n, seed))
+def sample_features(
+    vae: MotionVAE, map_shape: tuple[int, int], space: FeatureSpace, n: int, seed: int, chunk: int = 1000,
+) -> np.ndarray:
+    """n random clips of a model as features (n, T, C) (VAE decoder, then motion decoder),
+    decoded ``chunk`` clips at a time (the draws do not depend on ``chunk``)."""
+    maps = sample_maps(vae, map_shape, n, seed)
+    return np.concatenate([space.decode(maps[i:i + chunk]) for i in range(0, n, chunk)])
 
 
 def style_distance_matrix(

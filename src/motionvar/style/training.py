@@ -23,7 +23,7 @@ import numpy as np
 import pandas as pd
 import torch
 
-from .losses import content_loss, gram, kl_loss, style_loss
+from .losses import content_loss, kl_loss, style_loss
 from .networks import ConvAutoencoder, MotionVAE
 
 
@@ -102,12 +102,10 @@ def train_vae(
         if init.hparams != model.hparams:
             raise ValueError(f"train_vae: init VAE has {init.hparams}, expected {model.hparams}")
         model.load_state_dict(init.state_dict())
-    style_g = None
     if style_maps is not None:
         style_maps = torch.as_tensor(style_maps, dtype=torch.float32)
         if style_maps.ndim != 2 or style_maps.shape[0] != K:
             raise ValueError(f"train_vae: style_maps must be ({K}, T_s); got {tuple(style_maps.shape)}")
-        style_g = gram(style_maps)
     opt = torch.optim.Adam(model.parameters(), lr=cfg.lr)
     rows, t0 = [], time.perf_counter()
     for epoch in range(1, cfg.epochs + 1):
@@ -118,7 +116,7 @@ def train_vae(
             eps = torch.randn((n_samples, len(idx), model.latent), generator=gen)
             recon = model.decode(model.reparameterize(mu, logvar, eps))
             c, k = content_loss(recon, yb), kl_loss(mu, logvar)
-            s = style_loss(recon.reshape(n_samples, len(idx), K, Tf), style_g, alpha) if style_g is not None else torch.zeros(())
+            s = style_loss(recon.reshape(n_samples, len(idx), K, Tf), style_maps, alpha) if style_maps is not None else torch.zeros(())
             loss = c + k + s
             opt.zero_grad()
             loss.backward()

@@ -1,0 +1,48 @@
+"""Rule style_autoencoder (Du 2022 Sec. 5.3.1, 5.4.1): the convolutional motion
+autoencoder (Eq. 5.1-5.2) trained on sliding windows of all clips of the dataset."""
+
+
+def main(snakemake) -> None:
+    import logging
+    from pathlib import Path
+
+    import numpy as np
+    import torch
+
+    from motionvar.core import cmu_joint_map
+    from motionvar.io import load_dataset
+    from motionvar.io.joint_map_file import load_joint_map
+    from motionvar.style import FeatureScaler, FeatureSpace, TrainConfig, train_autoencoder
+    from motionvar.style.data import dataset_layout, training_windows
+
+    cfg = snakemake.params.cfg
+    ae_cfg = cfg["autoencoder"]
+    torch.set_num_threads(snakemake.threads)
+    path = snakemake.params.joint_map
+    dataset = load_dataset(Path(snakemake.input.clips).parent)
+    layout = dataset_layout(dataset, load_joint_map(path) if path else cmu_joint_map())
+    windows = training_windows(dataset, layout, cfg["canonical_frames"], ae_cfg["window_stride"])
+    n_all = len(windows)
+    if 0 < ae_cfg["max_windows"] < n_all:
+        keep = np.sort(np.random.default_rng(cfg["seed"]).choice(n_all, ae_cfg["max_windows"], replace=False))
+        windows = windows[keep]
+    logging.info("%d windows of %d frames (%d in all) from %d clips; joints %s", len(windows),
+                 windows.shape[1], n_all, len(dataset), ", ".join(layout.names))
+    scaler = FeatureScaler.fit(windows, layout.n_joints)
+    train_cfg = TrainConfig(ae_cfg["epochs"], ae_cfg["lr"], ae_cfg["batch_size"], cfg["seed"])
+    ae, history = train_autoencoder(
+        scaler.transform(windows), train_cfg, decoder_order=ae_cfg["decoder_order"],
+        n_kernels=ae_cfg["kernels"], kernel_width=ae_cfg["kernel_width"],
+    )
+    space = FeatureSpace(ae, scaler)
+    history["windows"] = len(windows)
+    logging.info("trained in %.1f s; final loss %.4g; reconstruction RMSE %.3f", history["seconds"].iloc[-1],
+                 history["loss"].iloc[-1], space.reconstruction_rmse(windows[:512]))
+    space.save(snakemake.output.model)
+    history.to_csv(snakemake.output.history, index=False)
+
+
+if "snakemake" in globals():
+    from _rule import run
+
+    run(snakemake, main)  # noqa: F821

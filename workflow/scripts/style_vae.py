@@ -1,0 +1,38 @@
+"""Rule style_vae (Du 2022 Sec. 5.3.2, 5.4.1): the VAE of one motion primitive (Fig. 5.3,
+loss Eq. 5.6) in the autoencoder's feature space, trained on its neutral clips."""
+
+
+def main(snakemake) -> None:
+    import logging
+    from pathlib import Path
+
+    import torch
+
+    from motionvar.core import cmu_joint_map
+    from motionvar.io import load_dataset
+    from motionvar.io.joint_map_file import load_joint_map
+    from motionvar.style import FeatureSpace, TrainConfig, save_vae, train_vae
+    from motionvar.style.data import dataset_layout, primitive_features
+
+    cfg, vcfg = snakemake.params.cfg, snakemake.params.cfg["vae"]
+    primitive = snakemake.wildcards.primitive
+    torch.set_num_threads(snakemake.threads)
+    path = snakemake.params.joint_map
+    dataset = load_dataset(Path(snakemake.input.clips).parent)
+    layout = dataset_layout(dataset, load_joint_map(path) if path else cmu_joint_map())
+    space = FeatureSpace.load(snakemake.input.autoencoder)
+    rows, feats = primitive_features(dataset, layout, primitive, "neutral", cfg["canonical_frames"])
+    maps = space.encode(feats)
+    logging.info("%s: %d neutral clips, feature maps %s", primitive, len(rows), tuple(maps.shape))
+    train_cfg = TrainConfig(vcfg["epochs"], vcfg["lr"], vcfg["batch_size"], cfg["seed"])
+    vae, history = train_vae(maps, train_cfg, n_samples=vcfg["samples_per_input"], latent=vcfg["latent"])
+    logging.info("trained in %.1f s; final loss %.4g", history["seconds"].iloc[-1], history["loss"].iloc[-1])
+    save_vae(snakemake.output.model, vae, tuple(maps.shape[1:]),
+             {"primitive": primitive, "style": "neutral", "n_clips": len(rows)})
+    history.to_csv(snakemake.output.history, index=False)
+
+
+if "snakemake" in globals():
+    from _rule import run
+
+    run(snakemake, main)  # noqa: F821
