@@ -234,3 +234,32 @@ def test_search_comparison_table(prim, joints):
     assert (wide.drop(columns="random").min(axis=1) >= wide["brute_force"] - 1e-9).all()  # trees search its samples
     summary = summarize_search(table)
     assert {"median", "mean_evals", "share_under_120_evals"} <= set(summary.columns)
+
+
+def test_dense_pick_clips_are_aligned_pick_reaches():
+    from motionvar.graph.dense import dense_pick_clips
+
+    clips, meta = dense_pick_clips(1, 0, 2, cmu_joint_map())
+    assert len(clips) == 2 and (meta["primitive"] == "pick_reach").all() and (meta["variant"] == "dense").all()
+    assert np.allclose(clips[0].root_pos[0, [0, 2]], 0.0, atol=1e-6)  # aligned: starts above the origin
+    with pytest.raises(ValueError, match="per_subject"):
+        dense_pick_clips(1, 0, 0, cmu_joint_map())
+
+
+def test_fig4_12_verdicts_follow_the_numbers():
+    from motionvar.graph.verdicts import compactness_claim, fig4_12_claims
+
+    rows = []
+    for kind in ("position", "orientation", "pose"):
+        for method, med in (("kmeans", 1.0), ("gmm", 1.2), ("median", 3.5), ("random", 4.0), ("brute_force", 0.9)):
+            rows.append(dict(primitive="p", kind=kind, method=method, median=med))
+    per_query = pd.DataFrame(dict(method=["kmeans"] * 4, n_evals=[50, 60, 130, 70]))
+    claims = {c.claim_id.split(".")[-1]: c for c in fig4_12_claims(pd.DataFrame(rows), per_query)}
+    assert all(c.verdict == "reproduced" for c in claims.values())
+    rows = [dict(r, median=r["median"] if r["method"] != "kmeans" else 3.9) for r in rows]
+    claims = {c.claim_id.split(".")[-1]: c for c in fig4_12_claims(pd.DataFrame(rows), per_query)}
+    assert claims["kmeans_halves_random_error"].verdict == "not reproduced"
+    assert claims["kmeans_near_brute_force_position"].verdict == "not reproduced"
+    assert compactness_claim(1_000, 200_000).verdict == "reproduced"
+    assert compactness_claim(1_000, 20_000).verdict == "partial"
+    assert compactness_claim(1_000, 2_000).verdict == "not reproduced"

@@ -79,8 +79,9 @@ class Constraint:
         if self.kind == "orientation":
             a = qrot(rot[:, 0, None, :], _AXES)  # (B, 3, 3) rotated reference axes
             b = qrot(self.target[None, :], _AXES)  # (3, 3)
-            cos = np.clip(np.einsum("bij,ij->bi", a, b), -1.0, 1.0)
-            return np.degrees(np.arccos(cos)).mean(axis=-1)
+            cos = np.einsum("bij,ij->bi", a, b)
+            sin = np.linalg.norm(np.cross(a, b), axis=-1)  # atan2: accurate near 0 (arccos is not)
+            return np.degrees(np.arctan2(sin, cos)).mean(axis=-1)
         facing = np.cross(_UP, pos[:, 1] - pos[:, 0])
         return _angle_2d(facing, self.target)
 

@@ -55,7 +55,10 @@ class PrimitiveOptions:
         gmm_criterion: "bic" (thesis) or "aic" (DFKI's default).
         sfpca_max_iter: L-BFGS-B iterations of the SFPCA weights (0: the start weights).
         sfpca_weight_groups: "function" (thesis) or "joint" (DFKI).
-        reg_covar: added to the GMM covariances' diagonals (scikit-learn).
+        reg_covar: added to the GMM covariances' diagonals, relative to the mean variance of
+            the latent dimensions (scikit-learn's is absolute; with few clips per component
+            an absolute 1e-6 lets BIC pick near-singular components).
+        sfpca_eval_frames: canonical frames at which SFPCA's objective runs FK (None: all).
         dtw_window: optional Sakoe-Chiba band of the DTW (frames).
         seed: random state of the GMM fits and of sampling defaults.
     """
@@ -66,7 +69,8 @@ class PrimitiveOptions:
     gmm_criterion: str = "bic"
     sfpca_max_iter: int = 30
     sfpca_weight_groups: str = "function"
-    reg_covar: float = 1e-6
+    reg_covar: float = 1e-3
+    sfpca_eval_frames: int | None = None
     dtw_window: int | None = None
     seed: int = 0
 
@@ -165,7 +169,8 @@ class MotionPrimitive:
         warped = [apply_warp(m, w) for m, w in zip(motions, warps)]
         fd = FunctionalMotions.from_motions(warped, opt.n_basis, n_frames=n_ref)
         n = int(min(opt.n_components, len(motions) - 1, fd.coefs.shape[1] * fd.coefs.shape[2]))
-        sfpca = SFPCA(n_components=n, max_iter=opt.sfpca_max_iter, weight_groups=opt.sfpca_weight_groups).fit(fd)
+        sfpca = SFPCA(n_components=n, max_iter=opt.sfpca_max_iter, weight_groups=opt.sfpca_weight_groups,
+                      n_eval_frames=opt.sfpca_eval_frames).fit(fd)
         time_coefs = fd.basis.fit(np.stack(warps)[..., None])  # (N, K, 1): f(t) in source frames
         coefs = np.concatenate([fd.coefs, time_coefs], axis=-1)  # Y'(t)
         w_sp = sfpca.function_weights_
@@ -180,7 +185,8 @@ class MotionPrimitive:
         comps *= np.where(comps[np.arange(n), np.argmax(np.abs(comps), axis=1)] < 0, -1.0, 1.0)[:, None]
         evr = sv[:n] ** 2 / max(float(np.sum(sv ** 2)), 1e-300)
         latent = Z @ comps.T
-        gmm, scores = select_gmm(latent, opt.gmm_components, opt.gmm_criterion, opt.reg_covar, opt.seed)
+        reg = opt.reg_covar * float(np.mean(np.var(latent, axis=0)))
+        gmm, scores = select_gmm(latent, opt.gmm_components, opt.gmm_criterion, reg, opt.seed)
         sk = motions[0].skeleton.with_offsets(fd.offsets.mean(axis=0))
         model = cls(name, sk, motions[0].fps, n_ref, fd.basis, coefs.mean(axis=0), weights, comps, gmm,
                     explained_variance_ratio=evr, gmm_scores=scores, options=opt)
