@@ -5,28 +5,20 @@ characters started side by side in a line) and as GIF animations."""
 
 def main(snakemake) -> None:
     import logging
-    from pathlib import Path
 
     import matplotlib.pyplot as plt
     import numpy as np
     import pandas as pd
-    import torch
 
     from motionvar.claims import write_claims
-    from motionvar.core import cmu_joint_map
-    from motionvar.io import load_dataset
-    from motionvar.io.joint_map_file import load_joint_map
     from motionvar.plots import render_frames, write_gif
-    from motionvar.style import FeatureSpace, diversity, features_to_positions, load_vae, sample_features
-    from motionvar.style.data import dataset_layout, example_features, primitive_mask
+    from motionvar.style import diversity, features_to_positions, load_vae, sample_features
+    from motionvar.style.data import example_features, primitive_mask
     from motionvar.style.figures import samples_figure
+    from _style import load_inputs
 
-    cfg = snakemake.params.cfg
-    torch.set_num_threads(snakemake.threads)
-    path = snakemake.params.joint_map
-    dataset = load_dataset(Path(snakemake.input.clips).parent)
-    layout = dataset_layout(dataset, load_joint_map(path) if path else cmu_joint_map())
-    space = FeatureSpace.load(snakemake.input.autoencoder)
+    cfg, dataset, layout, space = load_inputs(snakemake)
+
     n = cfg["figure_samples"]
     meta = dataset.metadata
 
@@ -45,7 +37,7 @@ def main(snakemake) -> None:
         if info["style"] != "neutral":
             example = features_to_positions(example_features(dataset, layout, info["example"], cfg["canonical_frames"]), layout)
             example = example + np.array([0.0, 0.0, -75.0])  # left of the first sample
-            label = f"{info['primitive']}: {info['style']} CVAE (grey: style example {info['example']})"
+            label = f"{info['primitive']}: {info['style']} CVAE (grey: example {info['example']})"
         fig_rows.append((label, pos, example))
         steps = np.linalg.norm(feats[:, :-1, 3 * layout.n_joints: 3 * layout.n_joints + 2], axis=-1).sum(axis=1)
         table.append({"primitive": info["primitive"], "model": info["style"], "samples": n,

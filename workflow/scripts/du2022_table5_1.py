@@ -4,26 +4,18 @@ between the samples of each model (neutral VAE, six CVAEs) and each style exampl
 
 def main(snakemake) -> None:
     import logging
-    from pathlib import Path
 
     import matplotlib.pyplot as plt
-    import torch
 
     from motionvar.claims import Claim, verdict_from_fraction, write_claims
-    from motionvar.core import cmu_joint_map
-    from motionvar.io import load_dataset
-    from motionvar.io.joint_map_file import load_joint_map
-    from motionvar.style import FeatureSpace, diagonal_minima, load_vae, style_distance_matrix
-    from motionvar.style.data import dataset_layout, example_features, primitive_features
+    from motionvar.style import diagonal_minima, load_vae, style_distance_matrix
+    from motionvar.style.data import example_features, primitive_features
     from motionvar.style.figures import distance_heatmap
     from motionvar.style.published import table5_1
+    from _style import load_inputs
 
-    cfg = snakemake.params.cfg
-    torch.set_num_threads(snakemake.threads)
-    path = snakemake.params.joint_map
-    dataset = load_dataset(Path(snakemake.input.clips).parent)
-    layout = dataset_layout(dataset, load_joint_map(path) if path else cmu_joint_map())
-    space = FeatureSpace.load(snakemake.input.autoencoder)
+    cfg, dataset, layout, space = load_inputs(snakemake)
+
     primitive = cfg["distance_primitive"]
     vae, shape, _ = load_vae(snakemake.input.vae)
     models, examples = {"neutral": (vae, shape)}, {}

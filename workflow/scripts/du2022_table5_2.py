@@ -5,27 +5,19 @@ and right stance."""
 
 def main(snakemake) -> None:
     import logging
-    from pathlib import Path
 
     import matplotlib.pyplot as plt
     import pandas as pd
-    import torch
 
     from motionvar.claims import Claim, verdict_from_fraction, write_claims
-    from motionvar.core import cmu_joint_map
-    from motionvar.io import load_dataset
-    from motionvar.io.joint_map_file import load_joint_map
-    from motionvar.style import FeatureSpace, diversity, load_vae, sample_features
-    from motionvar.style.data import dataset_layout, primitive_features
+    from motionvar.style import diversity, load_vae, sample_features
+    from motionvar.style.data import primitive_features
     from motionvar.style.figures import diversity_figure
     from motionvar.style.published import diversity_tables
+    from _style import load_inputs
 
-    cfg = snakemake.params.cfg
-    torch.set_num_threads(snakemake.threads)
-    path = snakemake.params.joint_map
-    dataset = load_dataset(Path(snakemake.input.clips).parent)
-    layout = dataset_layout(dataset, load_joint_map(path) if path else cmu_joint_map())
-    space = FeatureSpace.load(snakemake.input.autoencoder)
+    cfg, dataset, layout, space = load_inputs(snakemake)
+
     n = cfg["diversity_samples"]
     J = layout.n_joints
     rows = []

@@ -4,23 +4,16 @@ autoencoder (Eq. 5.1-5.2) trained on sliding windows of all clips of the dataset
 
 def main(snakemake) -> None:
     import logging
-    from pathlib import Path
 
     import numpy as np
-    import torch
 
-    from motionvar.core import cmu_joint_map
-    from motionvar.io import load_dataset
-    from motionvar.io.joint_map_file import load_joint_map
     from motionvar.style import FeatureScaler, FeatureSpace, TrainConfig, train_autoencoder
-    from motionvar.style.data import dataset_layout, training_windows
+    from motionvar.style.data import training_windows
+    from _style import load_inputs
 
-    cfg = snakemake.params.cfg
+    cfg, dataset, layout, space = load_inputs(snakemake)
     ae_cfg = cfg["autoencoder"]
-    torch.set_num_threads(snakemake.threads)
-    path = snakemake.params.joint_map
-    dataset = load_dataset(Path(snakemake.input.clips).parent)
-    layout = dataset_layout(dataset, load_joint_map(path) if path else cmu_joint_map())
+
     windows = training_windows(dataset, layout, cfg["canonical_frames"], ae_cfg["window_stride"])
     n_all = len(windows)
     if 0 < ae_cfg["max_windows"] < n_all:

@@ -5,23 +5,15 @@ Eq. 5.10 (weight alpha); starts from the neutral VAE when cvae.init_from_neutral
 
 def main(snakemake) -> None:
     import logging
-    from pathlib import Path
 
-    import torch
+    from motionvar.style import TrainConfig, load_vae, save_vae, train_vae
+    from motionvar.style.data import example_features, primitive_features, select_style_example
+    from _style import load_inputs
 
-    from motionvar.core import cmu_joint_map
-    from motionvar.io import load_dataset
-    from motionvar.io.joint_map_file import load_joint_map
-    from motionvar.style import FeatureSpace, TrainConfig, load_vae, save_vae, train_vae
-    from motionvar.style.data import dataset_layout, example_features, primitive_features, select_style_example
+    cfg, dataset, layout, space = load_inputs(snakemake)
+    ccfg = cfg["cvae"]
 
-    cfg, ccfg = snakemake.params.cfg, snakemake.params.cfg["cvae"]
     primitive, style = snakemake.wildcards.primitive, snakemake.wildcards.style
-    torch.set_num_threads(snakemake.threads)
-    path = snakemake.params.joint_map
-    dataset = load_dataset(Path(snakemake.input.clips).parent)
-    layout = dataset_layout(dataset, load_joint_map(path) if path else cmu_joint_map())
-    space = FeatureSpace.load(snakemake.input.autoencoder)
     neutral, shape, _ = load_vae(snakemake.input.vae)
     rows, feats = primitive_features(dataset, layout, primitive, "neutral", cfg["canonical_frames"])
     example_id = select_style_example(dataset.metadata, primitive, style)

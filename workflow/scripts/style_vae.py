@@ -4,23 +4,15 @@ loss Eq. 5.6) in the autoencoder's feature space, trained on its neutral clips."
 
 def main(snakemake) -> None:
     import logging
-    from pathlib import Path
 
-    import torch
+    from motionvar.style import TrainConfig, save_vae, train_vae
+    from motionvar.style.data import primitive_features
+    from _style import load_inputs
 
-    from motionvar.core import cmu_joint_map
-    from motionvar.io import load_dataset
-    from motionvar.io.joint_map_file import load_joint_map
-    from motionvar.style import FeatureSpace, TrainConfig, save_vae, train_vae
-    from motionvar.style.data import dataset_layout, primitive_features
+    cfg, dataset, layout, space = load_inputs(snakemake)
+    vcfg = cfg["vae"]
 
-    cfg, vcfg = snakemake.params.cfg, snakemake.params.cfg["vae"]
     primitive = snakemake.wildcards.primitive
-    torch.set_num_threads(snakemake.threads)
-    path = snakemake.params.joint_map
-    dataset = load_dataset(Path(snakemake.input.clips).parent)
-    layout = dataset_layout(dataset, load_joint_map(path) if path else cmu_joint_map())
-    space = FeatureSpace.load(snakemake.input.autoencoder)
     rows, feats = primitive_features(dataset, layout, primitive, "neutral", cfg["canonical_frames"])
     maps = space.encode(feats)
     logging.info("%s: %d neutral clips, feature maps %s", primitive, len(rows), tuple(maps.shape))

@@ -109,7 +109,7 @@ def samples_figure(
     the samples in grey. Each character starts ``spacing_cm`` to the side of the one
     before; the last frame is drawn, seen from the front-side."""
     n_cols = max(len(p) for _, p, _ in rows)
-    fig, axes = plt.subplots(len(rows), 1, figsize=(max(7.0, 1.0 + 0.8 * (n_cols + 1.5)), 1.9 * len(rows)), squeeze=False)
+    fig, axes = plt.subplots(len(rows), 1, figsize=(max(5.5, 1.0 + 0.9 * (n_cols + 1.5)), 1.9 * len(rows)), squeeze=False)
     screen = np.array([0.0, 0.0, 1.0])
     for ax, (label, samples, example) in zip(axes[:, 0], rows):
         lateral = np.array([0.0, 0.0, spacing_cm])
@@ -132,6 +132,6 @@ def samples_figure(
         ax.set_yticks([])
         for s in ax.spines.values():
             s.set_visible(False)
-        ax.set_title(label, fontsize=9, loc="left")
+        ax.set_title(label, fontsize=8, loc="left")
     fig.tight_layout()
     return fig
