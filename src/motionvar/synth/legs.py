@@ -46,7 +46,9 @@ CEILING_RAMP_S = 0.04  # a contact's ceiling fades in / out over this time
 ROLL_MAX_DEG = 75.0  # heel rise cap (foot-floor angle at toe-off ≈ 50-65° in walking)
 LIFT_RANGE_CM = (1.5, 40.0)  # range of the swing lift
 LAND_SPEED_FRAC = 0.2  # horizontal foot speed at touchdown / mean swing speed
-LAND_DROP_CM_S = 15  # vertical foot speed at touchdown
+LAND_MIN_CM_S = 70.0  # ... but at least this (heel speed at initial contact ≈ 0.4-1 m/s), so that
+# short steps (gait initiation, closing step, slow walks) still touch down rather than creep in
+LAND_DROP_CM_S = 15.0  # vertical foot speed at touchdown
 DORSI_MAX_DEG = 20.0  # swing: ankle dorsiflexion limit (neutral to ≈ 10-20° in swing)
 PLANTAR_MAX_DEG = 35.0  # swing: ankle plantarflexion limit (≈ 15-30° after toe-off)
 TOE_CLEAR_CM = 1.2  # swing: the toe base stays at least this far above the floor (minimum toe
@@ -245,7 +247,10 @@ def _swing(
     else:  # a virtual contact outside the plan (runs start and end in the air)
         p0, v0, q0, w0, toe0 = a.ankle, np.zeros(3), 0.0, 0.0, 0.0
     p1 = b.ankle
-    v1 = LAND_SPEED_FRAC * (p1 - p0) / dur
+    step = (p1 - p0) * np.array([1.0, 0.0, 1.0])
+    mean_speed = np.linalg.norm(step) / dur
+    land_speed = min(max(LAND_SPEED_FRAC * mean_speed, LAND_MIN_CM_S), 0.8 * mean_speed)
+    v1 = step / max(np.linalg.norm(step), 1e-9) * land_speed
     v1[1] = -LAND_DROP_CM_S
     u = (np.arange(lo, hi) - f0) / (f1 - f0)
     path = _hermite(u, p0, p1, v0 * dur, v1 * dur)
