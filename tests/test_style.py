@@ -11,7 +11,7 @@ from motionvar.style import (
     ConvAutoencoder, FeatureScaler, FeatureSpace, MotionVAE, TrainConfig, content_loss, diagonal_minima,
     diversity, features_to_positions, gram, gram_distance, gram_distance_maps, heading_angles, kl_loss, load_vae, motion_features,
     motions_features, positions_to_features, sample_features, save_vae, sliding_windows, step_lengths,
-    style_distance, style_distance_matrix, style_joints, train_autoencoder, train_vae,
+    style_distance, style_distance_matrix, style_joints, style_loss, train_autoencoder, train_vae,
 )
 
 CMU_21 = (
@@ -201,6 +201,12 @@ def test_gram_distance_from_maps_equals_the_explicit_one():
     assert ref.shape == (3, 5)
     assert torch.allclose(gram_distance_maps(a, b), ref, rtol=1e-10)
     assert float(style_distance(a[0], b)) == pytest.approx(float(ref[0].mean()))
+    # Eq. 5.10 as printed: the Frobenius norm of the Gram difference
+    fro = torch.linalg.matrix_norm(gram(a) - gram(b)).mean()
+    assert float(style_loss(a, b, 2.0)) == pytest.approx(2.0 * float(fro), rel=1e-6)
+    assert float(style_loss(a, b, 2.0, norm="mean_squared")) == pytest.approx(2.0 * float(ref.mean()))
+    with pytest.raises(ValueError, match="norm must be"):
+        style_loss(a, b, 2.0, norm="l1")
 
 
 # ---------------------------------------------------------------- training

@@ -23,6 +23,7 @@ def main(snakemake) -> None:
     train_cfg = TrainConfig(ccfg["epochs"], ccfg["lr"], ccfg["batch_size"], cfg["seed"])
     cvae, history = train_vae(
         maps, train_cfg, n_samples=cfg["vae"]["samples_per_input"], style_maps=example, alpha=ccfg["alpha"],
+        style_norm=ccfg["style_norm"],
         init=neutral if ccfg["init_from_neutral"] else None, latent=cfg["vae"]["latent"],
     )
     logging.info("trained in %.1f s; final loss %.4g (style %.4g)", history["seconds"].iloc[-1],

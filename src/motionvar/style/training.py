@@ -23,7 +23,7 @@ import numpy as np
 import pandas as pd
 import torch
 
-from .losses import content_loss, kl_loss, style_loss
+from .losses import STYLE_NORMS, content_loss, kl_loss, style_loss
 from .networks import ConvAutoencoder, MotionVAE
 
 
@@ -79,13 +79,15 @@ def train_vae(
     n_samples: int = 10,
     style_maps: torch.Tensor | np.ndarray | None = None,
     alpha: float = 200.0,
+    style_norm: str = "frobenius",
     init: MotionVAE | None = None,
     hidden: tuple[int, ...] = (512, 256, 128),
     latent: int = 32,
 ) -> tuple[MotionVAE, pd.DataFrame]:
     """Train a primitive's VAE on its clips' feature maps (N, K, T') (Eq. 5.6, L =
     ``n_samples`` draws of z per input, Eq. 5.7); with ``style_maps`` (K, T_s), the
-    encoded style example, a CVAE with the loss of Eq. 5.11 and style weight ``alpha``.
+    encoded style example, a CVAE with the loss of Eq. 5.11, style weight ``alpha`` and the
+    norm ``style_norm`` of Eq. 5.10 (:func:`~.losses.style_loss`).
     ``init`` copies a trained VAE's weights first. History columns: epoch, loss, content,
     kl, style, seconds (per-epoch means over the inputs)."""
     maps = torch.as_tensor(maps, dtype=torch.float32)
@@ -102,6 +104,8 @@ def train_vae(
         if init.hparams != model.hparams:
             raise ValueError(f"train_vae: init VAE has {init.hparams}, expected {model.hparams}")
         model.load_state_dict(init.state_dict())
+    if style_norm not in STYLE_NORMS:
+        raise ValueError(f"train_vae: style_norm must be one of {STYLE_NORMS}; got {style_norm!r}")
     if style_maps is not None:
         style_maps = torch.as_tensor(style_maps, dtype=torch.float32)
         if style_maps.ndim != 2 or style_maps.shape[0] != K:
@@ -116,7 +120,7 @@ def train_vae(
             eps = torch.randn((n_samples, len(idx), model.latent), generator=gen)
             recon = model.decode(model.reparameterize(mu, logvar, eps))
             c, k = content_loss(recon, yb), kl_loss(mu, logvar)
-            s = style_loss(recon.reshape(n_samples, len(idx), K, Tf), style_maps, alpha) if style_maps is not None else torch.zeros(())
+            s = style_loss(recon.reshape(n_samples, len(idx), K, Tf), style_maps, alpha, style_norm) if style_maps is not None else torch.zeros(())
             loss = c + k + s
             opt.zero_grad()
             loss.backward()
