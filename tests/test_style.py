@@ -308,3 +308,44 @@ def test_diversity_by_hand():
     assert d["step_sd"] == pytest.approx(np.std([3.0, 6.0, 9.0], ddof=1))  # 3 real steps a clip
     with pytest.raises(ValueError, match="features must be"):
         diversity(np.zeros((3, 4, 10)), J)
+
+
+# ---------------------------------------------------------------- data selection (Sec. 5.4.1, 5.4.3)
+
+@pytest.fixture(scope="module")
+def prim_dataset(tmp_path_factory):
+    from motionvar.io import load_dataset, save_dataset
+
+    motions = [toy_walk(n_frames=50 + 5 * k, seed=k) for k in range(6)]
+    meta = pd.DataFrame({
+        "clip_id": [f"c{k}" for k in range(6)],
+        "primitive": ["walk_leftStance"] * 5 + ["run_rightStance"],
+        "style": ["neutral", "neutral", "proud", "proud", "proud", "neutral"],
+        "variant": ["forward", "left", "left", "forward", "forward", "forward"],
+        "turn_deg": [0.0, 30.0, 2.0, -8.0, 4.0, 0.0],
+    })
+    path = tmp_path_factory.mktemp("prims")
+    save_dataset(path, motions, meta)
+    return load_dataset(path)
+
+
+def test_primitive_features_and_style_example(prim_dataset, layout):
+    from motionvar.style.data import dataset_layout, primitive_features, select_style_example, training_windows
+
+    assert dataset_layout(prim_dataset, cmu_joint_map()).names == layout.names
+    rows, feats = primitive_features(prim_dataset, layout, "walk_leftStance", "neutral", 60)
+    assert list(rows["clip_id"]) == ["c0", "c1"] and feats.shape == (2, 60, 66)
+    # the straightest forward clip of the style (not the straighter left-turning one)
+    assert select_style_example(prim_dataset.metadata, "walk_leftStance", "proud") == "c4"
+    assert training_windows(prim_dataset, layout, 60, 30).shape == (4, 60, 66)  # 4 clips of 60..75 frames
+
+
+def test_primitive_selection_errors_name_what_is_missing(prim_dataset):
+    from motionvar.style.data import primitive_mask, select_style_example
+
+    with pytest.raises(ValueError, match="no clips of primitive 'walk_leftStance' with style 'old'.*primitives"):
+        primitive_mask(prim_dataset.metadata, "walk_leftStance", "old")
+    with pytest.raises(ValueError, match="no column 'style'"):
+        primitive_mask(prim_dataset.metadata.drop(columns="style"), "walk_leftStance", "neutral")
+    with pytest.raises(ValueError, match="no clips of primitive 'pick_reach'"):
+        select_style_example(prim_dataset.metadata, "pick_reach", "proud")

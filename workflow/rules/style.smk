@@ -30,7 +30,7 @@ rule style_autoencoder:
         model=f"{STYLE_MODELS}/autoencoder.pt",
         history=f"{STYLE_MODELS}/autoencoder_history.csv",
     params:
-        cfg=STYLE_CFG,
+        cfg=style_params(["seed", "canonical_frames", "autoencoder"]),
         joint_map=lambda wc: joint_map_path(wc.dataset),
     log:
         ev_log("style_autoencoder"),
@@ -57,7 +57,7 @@ rule style_vae:
         model=f"{STYLE_MODELS}/vae/{{primitive}}.pt",
         history=f"{STYLE_MODELS}/vae/{{primitive}}_history.csv",
     params:
-        cfg=STYLE_CFG,
+        cfg=style_params(["seed", "canonical_frames", "vae"]),
         joint_map=lambda wc: joint_map_path(wc.dataset),
     log:
         ev_log("style_vae", "{primitive}"),
@@ -86,7 +86,7 @@ rule style_cvae:
         model=f"{STYLE_MODELS}/cvae/{{primitive}}/{{style}}.pt",
         history=f"{STYLE_MODELS}/cvae/{{primitive}}/{{style}}_history.csv",
     params:
-        cfg=STYLE_CFG,
+        cfg=style_params(["seed", "canonical_frames", "vae", "cvae"]),
         joint_map=lambda wc: joint_map_path(wc.dataset),
     log:
         ev_log("style_cvae", "{primitive}_{style}"),
@@ -114,7 +114,7 @@ rule du2022_table5_1:
         figure=in_report(ev_figure("du2022_table5_1"), "du2022", "../report/du2022_table5_1.rst", figure="Table 5.1"),
         claims=ev_claims("du2022_table5_1"),
     params:
-        cfg=STYLE_CFG,
+        cfg=style_params(["seed", "canonical_frames", "distance_primitive", "distance_samples"]),
         joint_map=lambda wc: joint_map_path(wc.dataset),
     log:
         ev_log("du2022_table5_1"),
@@ -142,7 +142,7 @@ rule du2022_table5_2:
         figure=in_report(ev_figure("du2022_table5_2"), "du2022", "../report/du2022_table5_2.rst", figure="Tables 5.2-5.3"),
         claims=ev_claims("du2022_table5_2"),
     params:
-        cfg=STYLE_CFG,
+        cfg=style_params(["seed", "canonical_frames", "style_primitives", "diversity_samples", "pose_sd_tolerance"]),
         joint_map=lambda wc: joint_map_path(wc.dataset),
     log:
         ev_log("du2022_table5_2"),
@@ -178,7 +178,7 @@ rule du2022_fig5_4:
             figure="Fig. 5.5 animation",
         ),
     params:
-        cfg=STYLE_CFG,
+        cfg=style_params(["seed", "canonical_frames", "figure_samples", "gif_panel_px"]),
         joint_map=lambda wc: joint_map_path(wc.dataset),
     log:
         ev_log("du2022_fig5_4"),
