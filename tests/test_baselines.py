@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 from motionvar.baselines.dbn import LauDBN
-from motionvar.baselines.gplvm import GPLVM, helix_trajectory
+from motionvar.baselines.gplvm import helix_trajectory
 from motionvar.baselines.perlin import add_rotation_noise, perlin_noise
 from motionvar.baselines.rbf import RBFInterpolation, cubic_bspline
 
@@ -43,16 +43,14 @@ def test_rbf_interpolates_with_a_linear_term():
     assert cubic_bspline(np.array([0.0]))[0] == pytest.approx(2 / 3) and cubic_bspline(np.array([2.0]))[0] == 0
 
 
-def test_gplvm_reconstructs_a_loop_and_the_helix_stays_in_it():
-    t = np.linspace(0, 2 * np.pi, 30, endpoint=False)
+def test_helix_circles_the_latent_cloud_and_rises_along_its_third_axis():
     rng = np.random.default_rng(1)
-    y = np.stack([np.cos(t), np.sin(t), np.cos(2 * t), 0.5 * np.sin(t)], 1) @ rng.normal(size=(4, 12))
-    g = GPLVM(latent_dim=2, n_iter=100, seed=0).fit(y)
-    assert np.sqrt(np.mean((g.predict(g.latent_) - y) ** 2)) < 0.2 * y.std()
-    path = helix_trajectory(g.latent_, 50, n_turns=2.0)
-    assert path.shape == (50, 2)
-    with pytest.raises(ValueError, match="N > latent_dim"):
-        GPLVM(latent_dim=3).fit(np.zeros((2, 4)))
+    t = np.linspace(0, 2 * np.pi, 200, endpoint=False)
+    cloud = np.stack([10 * np.cos(t), 10 * np.sin(t), rng.uniform(-1, 1, 200)], 1) + [5.0, -2.0, 0.0]
+    path = helix_trajectory(cloud, 100, n_turns=2.0)
+    assert path.shape == (100, 3)
+    assert np.allclose(np.linalg.norm(path[:, :2] - [5.0, -2.0], axis=1), 10.0, rtol=0.05)
+    assert path[-1, 2] - path[0, 2] == pytest.approx(np.ptp(cloud[:, 2]), rel=0.05)
 
 
 def test_dbn_learns_an_ar2_process_and_unrolls():

@@ -57,3 +57,13 @@ def test_discontinuities_flag_a_jump():
     pos[15:, 0, 0] += 10
     assert peak_acceleration(pos, 1.0).max() == pytest.approx(10)
     assert count_discontinuities(pos, 1.0, threshold=5.0) == 2
+
+
+def test_stride_footprints_do_not_depend_on_the_exact_boundary():
+    t = np.arange(60)
+    feet = np.zeros((60, 2, 3))
+    feet[:, 0, 0] = np.clip((t - 20) * 6.0, 0, 120)  # left still until 20, swings to 120 by 40
+    feet[:, 1, 0] = 60.0
+    for b0, b1 in ((0, 59), (18, 45), (22, 38)):  # boundaries inside the swing: footprints still found
+        assert stride_lengths(feet, np.array([b0, b1]), footprint_window=5)[0] == pytest.approx(120.0)
+    assert stride_lengths(feet, np.array([22, 38]))[0] < 120.0  # without footprints: the swing is cut short

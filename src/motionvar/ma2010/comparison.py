@@ -13,10 +13,11 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..baselines.dbn import LauDBN
-from ..baselines.gplvm import GPLVM, helix_trajectory
+from ..baselines.gplvm import helix_trajectory
 from ..baselines.kriging import StyleClipInterpolation
 from ..baselines.perlin import add_rotation_noise
 from ..core.motion import Motion
+from ..fda.gplvm import BayesianGPLVM
 from ..metrics.discontinuities import count_discontinuities, peak_acceleration
 from ..metrics.foot_skating import foot_skating
 from ..metrics.jerk import mean_jerk
@@ -66,10 +67,10 @@ def example_pose_sequences(clips: ClipSet) -> list[np.ndarray]:
 
 
 def gplvm_sequence(
-    gplvm: GPLVM, codec: PoseCodec, n_frames: int, n_turns: float, solver: RootSolver, fps: float, phase: float = 0.0, radius_scale: float = 1.0
+    gplvm: BayesianGPLVM, codec: PoseCodec, n_frames: int, n_turns: float, solver: RootSolver, fps: float, phase: float = 0.0, radius_scale: float = 1.0
 ) -> Motion:
     """GPLVM [Law03]: poses along a helix in its latent space (Sec. 7.4)."""
-    path = helix_trajectory(gplvm.latent_, n_frames, n_turns, phase, radius_scale)
+    path = helix_trajectory(gplvm.latent_mean_, n_frames, n_turns, phase, radius_scale)
     return solver.motion(codec.decode(gplvm.predict(path)), fps)
 
 

@@ -18,6 +18,7 @@ from .examples import normalized_strides
 from .representation import ClipSet
 from .svi import ClipPrediction, StyleVariationModel
 from .synthesis import RootSolver, sequence_motion
+from .variation import joint_variation
 
 
 def prediction_key_frames(key_times: np.ndarray, fps: float, n_frames: int) -> np.ndarray:
@@ -64,7 +65,8 @@ def leave_one_out(
 ) -> pd.DataFrame:
     """Fig. 6 protocol: each clip in turn is held out, every model is fitted to the rest
     and asked for the held-out clip's style. One row per clip: the true strides, ours
-    (xi sampled from the network, and xi at the network's conditional mean), Kriging on
+    with the held-out clip's own latent variation (Eq. 7-9 with the training tau), with xi
+    sampled from the network, and with xi at the network's conditional mean, Kriging on
     style only (MK05) and RBF (RBC98): predicted strides and pose error to the truth.
     ``held_out`` limits the folds to those clips (default: all)."""
     rng = np.random.default_rng(seed)
@@ -74,8 +76,11 @@ def leave_one_out(
         truth = clips.rotations[i : i + 1]
         c = clips.style[i : i + 1]
         model = StyleVariationModel(groups, structure, variogram_model).fit(train)
+        delta = joint_variation(truth)
+        own_xi = {g: delta[:, j] for g, j in model.tau_.items()}
         preds = {
-            "ours": model.synthesize_clips(c, rng=rng)[0],
+            "ours": model.predict(c, own_xi),
+            "ours_sampled_xi": model.synthesize_clips(c, rng=rng)[0],
             "ours_mean_xi": model.synthesize_clips(c, noise=False)[0],
             "kriging": mk05_kriging(variogram_model).fit(train).predict(c),
             "rbf": rose98_rbf().fit(train).predict(c),

@@ -65,12 +65,18 @@ def root_solver(skeleton: Skeleton, joint_map: JointMap, flight_threshold: float
     return RootSolver(skeleton, feet, planted, flight_threshold)
 
 
+FOOTPRINT_WINDOW_S = 0.1
+
+
 def support_strides(motion: Motion, key_frames: np.ndarray, solver: RootSolver) -> np.ndarray:
     """Stride length (cm) of the left and the right support phase of one cycle: the
-    horizontal displacement of the swing ankle between key frames 0-2 and 2-4."""
+    horizontal displacement of the swing ankle between its footprints at key frames 0-2
+    and 2-4 (each foot's stillest frame within 0.1 s of the key frame: the key frames lag
+    foot strikes a little, and a foot in toe-off moves fast)."""
     pos = motion.positions()
     feet = pos[:, [solver.left_foot, solver.right_foot]]
-    return stride_lengths(feet, np.asarray(key_frames)[[0, 2, 4]])
+    window = int(round(FOOTPRINT_WINDOW_S * motion.fps))
+    return stride_lengths(feet, np.asarray(key_frames)[[0, 2, 4]], footprint_window=window)
 
 
 def normalized_strides(rotations: np.ndarray, key_frames: np.ndarray, solver: RootSolver, fps: float) -> np.ndarray:

@@ -12,7 +12,9 @@ from __future__ import annotations
 import numpy as np
 
 
-def stride_lengths(foot_positions: np.ndarray, boundaries: np.ndarray, up_axis: int = 1) -> np.ndarray:
+def stride_lengths(
+    foot_positions: np.ndarray, boundaries: np.ndarray, up_axis: int = 1, footprint_window: int = 0
+) -> np.ndarray:
     """Horizontal displacement of the swing foot in each phase, in the input's units.
 
     Args:
@@ -21,6 +23,9 @@ def stride_lengths(foot_positions: np.ndarray, boundaries: np.ndarray, up_axis: 
         boundaries: (P + 1,) increasing frame indices; phase p runs from boundaries[p] to
             boundaries[p + 1].
         up_axis: index of the vertical axis.
+        footprint_window: if > 0, each foot's position at a boundary is taken where that
+            foot moves least horizontally within +- this many frames (its footprint), so
+            that the measure does not depend on the exact boundary frame.
 
     Returns:
         (P,) stride length of each phase.
@@ -33,5 +38,13 @@ def stride_lengths(foot_positions: np.ndarray, boundaries: np.ndarray, up_axis: 
         raise ValueError(f"stride_lengths: boundaries must increase within [0, {len(p) - 1}]; got {b.tolist()}")
     horizontal = [a for a in range(3) if a != up_axis]
     h = p[:, :, horizontal]
-    disp = np.linalg.norm(h[b[1:]] - h[b[:-1]], axis=-1)  # (P, F)
+    if footprint_window > 0:
+        speed = np.linalg.norm(np.diff(h, axis=0, append=h[-1:]), axis=-1)  # (T, F)
+        offsets = np.arange(-footprint_window, footprint_window + 1)
+        frames = np.clip(b[:, None] + offsets[None, :], 0, len(p) - 1)  # (B, W)
+        still = frames[np.arange(len(b))[:, None], np.argmin(speed[frames], axis=1)]  # (B, F)
+        at = h[still, np.arange(h.shape[1])[None, :]]  # (B, F, 2)
+    else:
+        at = h[b]
+    disp = np.linalg.norm(at[1:] - at[:-1], axis=-1)  # (P, F)
     return disp.max(axis=1)
