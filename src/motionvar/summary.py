@@ -37,8 +37,10 @@ h1 { font-size: 1.4em; } h2 { font-size: 1.15em; margin-top: 1.6em; }
 table { border-collapse: collapse; width: 100%; font-size: 0.9em; }
 th, td { border: 1px solid #ccc; padding: 0.35em 0.5em; text-align: left; vertical-align: top; }
 th { background: #f0f0f0; }
-td.verdict { font-weight: bold; white-space: nowrap; }
-.id { font-family: monospace; font-size: 0.85em; }
+table.claims { table-layout: fixed; }
+td.verdict { font-weight: bold; font-size: 0.85em; }
+td.note { font-size: 0.85em; color: #444; }
+.id { font-family: monospace; font-size: 0.75em; overflow-wrap: anywhere; color: #555; }
 .counts span { display: inline-block; padding: 0.15em 0.6em; margin-right: 0.5em; border-radius: 0.3em; }
 p.none { color: #666; font-style: italic; }
 """
@@ -79,7 +81,9 @@ def claims_html(
         rows = table[table["paper"] == paper].sort_values("claim_id", kind="stable")
         parts.append(f'<h2 id="{esc(paper)}">{esc(titles.get(paper, paper))}</h2>')
         parts.append(
-            "<table><tr><th>source</th><th>statement</th><th>published</th><th>measured</th>"
+            '<table class="claims"><colgroup><col style="width:13%"><col style="width:22%">'
+            '<col style="width:14%"><col style="width:18%"><col style="width:12%"><col style="width:21%">'
+            "</colgroup><tr><th>source</th><th>statement</th><th>published</th><th>measured</th>"
             "<th>verdict</th><th>note</th></tr>"
         )
         for r in rows.itertuples(index=False):
@@ -87,7 +91,7 @@ def claims_html(
                 f'<tr><td>{esc(r.source)}<br><span class="id">{esc(r.claim_id)}</span></td>'
                 f"<td>{esc(r.statement)}</td><td>{esc(r.published)}</td><td>{esc(r.measured)}</td>"
                 f'<td class="verdict" style="background:{VERDICT_COLOURS[r.verdict]}">{esc(r.verdict)}</td>'
-                f"<td>{esc(r.note)}</td></tr>"
+                f'<td class="note">{esc(r.note)}</td></tr>'
             )
         parts.append("</table>")
     return "\n".join(parts + ["</body></html>"]) + "\n"
