@@ -19,6 +19,7 @@ from motionvar.fda import (
     NormalizedFPCA,
     ObservationObjective,
     TopEigenvectors,
+    WeightedFPCA,
     align_quaternion_signs,
     bspline_fit_rmse,
     choose_n_basis,
@@ -93,9 +94,10 @@ def test_bspline_bad_input():
 def test_choose_n_basis_cut_off_rule():
     ks = np.array([5, 10, 15, 20, 25])
     rmse = np.array([4.0, 1.0, 0.5, 0.48, 0.47])
-    assert choose_n_basis(ks, rmse, 0.1) == 15  # 15 -> 20 drops only 4 %
-    assert choose_n_basis(ks, rmse, 0.6) == 10  # 10 -> 15 drops 50 %
+    assert choose_n_basis(ks, rmse, 0.02) == 15  # 15 -> 20 drops 4 %, 0.8 % per added function
+    assert choose_n_basis(ks, rmse, 0.12) == 10  # 10 -> 15 drops 50 %, 10 % per added function
     assert choose_n_basis(ks, rmse, 0.0) == 25
+    assert choose_n_basis(np.array([5, 6]), np.array([1.0, 0.9]), 0.12) == 5  # 10 % for one function
     with pytest.raises(ValueError, match="ascending"):
         choose_n_basis(ks[::-1], rmse, 0.1)
 
@@ -278,6 +280,37 @@ def test_observation_objective_value_and_gradient(data):
         num = (obj.value(w + e) - obj.value(w - e)) / 2e-5
         assert math.isclose(grad[d], num, rel_tol=1e-4, abs_tol=1e-6)
     assert abs(obj.value(3.7 * w) - value) < 1e-8 * value  # invariant to a global scale
+
+
+def test_observation_objective_scatter_path_and_constant_functions():
+    """More clips than coefficients: the objective decomposes the scatter matrix instead of
+    the Gram matrix; a function constant over all clips is left out and has no gradient."""
+    clips, _ = make_clips(120, seed=5)
+    fd = FunctionalMotions.from_motions(clips, n_basis=4)
+    fd.coefs[:, :, 7] = 0.25  # one constant function
+    obj = ObservationObjective(fd, 3, dtype=torch.float64)
+    assert obj.scatter is not None and 7 not in obj.active_functions
+    coefs = FPCA(3).fit(fd).reconstruct(fd)
+    ref = np.mean(np.sum((fd.positions() - fd.positions(coefs)) ** 2, -1))
+    value, grad = obj.value_and_grad(np.ones(fd.layout.n_functions))
+    assert math.isclose(value, ref, rel_tol=1e-8) and grad[7] == 0.0
+    model = SFPCA(3, max_iter=3).fit(fd)
+    assert np.all(np.isfinite(model.function_weights_)) and model.loss_ <= model.loss_raw_ + 1e-9
+
+
+def test_nested_reconstruction_and_weighted_fpca(data):
+    fd, _, _ = data
+    big = FPCA(8).fit(fd)
+    assert np.allclose(big.reconstruct(fd, 3), FPCA(3).fit(fd).reconstruct(fd), atol=1e-8)
+    with pytest.raises(ValueError, match="n_components must be in"):
+        big.reconstruct(fd, 9)
+    s = SFPCA(3, max_iter=3).fit(fd)
+    w = WeightedFPCA(6, s.function_weights_).fit(fd)
+    assert np.allclose(w.reconstruct(fd, 3), s.reconstruct(fd), atol=1e-8)
+    with pytest.raises(ValueError, match="positive finite"):
+        WeightedFPCA(3, -s.function_weights_).fit(fd)
+    with pytest.raises(ValueError, match="reference positions"):
+        observation_error(fd, fd.coefs, reference=np.zeros((2, 3)))
 
 
 def test_sfpca_improves_observation_error(data):

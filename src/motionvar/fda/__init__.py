@@ -23,9 +23,10 @@ API:
   joint 0's being the root orientation); per-clip bone offsets for forward kinematics;
   ``from_motions``, ``values``, ``motion_arrays``, ``positions`` (FK), ``to_motions``,
   ``subset``, ``with_coefs``. :func:`bspline_fit_rmse`: joint-space RMSE of the fit.
-- :class:`FPCA`, :class:`NormalizedFPCA`, :class:`SFPCA` (sklearn-style):
+- :class:`FPCA`, :class:`NormalizedFPCA`, :class:`SFPCA`, :class:`WeightedFPCA` (given
+  weights) (sklearn-style):
   ``fit(fd)``, ``transform(fd or coefs) -> (N, n)``, ``inverse_transform(z) -> (N, K, D)``,
-  ``reconstruct``, ``to_motions(z, fps, skeleton=None)``, ``save(path)``,
+  ``reconstruct(fd, n_components=None)`` (nested: any smaller dimension), ``to_motions(z, fps, skeleton=None)``, ``save(path)``,
   ``FPCA.load(path)`` (returns the saved class). Fitted attributes end in ``_``:
   ``mean_``, ``function_weights_``, ``components_``, ``eigenfunctions_``,
   ``explained_variance_ratio_``, ...; SFPCA adds ``init_``, ``loss_``, ``n_iter_``,
@@ -38,14 +39,14 @@ API:
 
 from .bspline import BSplineBasis, choose_n_basis, frame_times
 from .evaluation import feature_error, knn_accuracy, latent_separation, observation_error
-from .fpca import FPCA, NormalizedFPCA, functional_std, zscore_weights
+from .fpca import FPCA, NormalizedFPCA, WeightedFPCA, functional_std, zscore_weights
 from .functions import FunctionalMotions, FunctionLayout, align_quaternion_signs, bspline_fit_rmse
 from .gplvm import BayesianGPLVM, FunctionalGPLVM
 from .sfpca import SFPCA, ObservationObjective, TopEigenvectors
 
 __all__ = [
     "BSplineBasis", "BayesianGPLVM", "FPCA", "FunctionLayout", "FunctionalGPLVM", "FunctionalMotions",
-    "NormalizedFPCA", "ObservationObjective", "SFPCA", "TopEigenvectors", "align_quaternion_signs",
+    "NormalizedFPCA", "ObservationObjective", "SFPCA", "TopEigenvectors", "WeightedFPCA", "align_quaternion_signs",
     "bspline_fit_rmse", "choose_n_basis", "feature_error", "frame_times", "functional_std", "knn_accuracy",
     "latent_separation", "observation_error", "zscore_weights",
 ]

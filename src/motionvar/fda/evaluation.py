@@ -19,12 +19,17 @@ def feature_error(X: FunctionalMotions, coefs_hat: np.ndarray) -> float:
     return float(np.mean(np.sqrt(np.maximum(sq, 0.0))))
 
 
-def observation_error(X: FunctionalMotions, coefs_hat: np.ndarray, n_frames: int | None = None) -> float:
+def observation_error(
+    X: FunctionalMotions, coefs_hat: np.ndarray, n_frames: int | None = None, reference: np.ndarray | None = None
+) -> float:
     """Average Euclidean reconstruction error in observation space (cm): the mean
     distance between the joint positions f_k(Y) and f_k(Y^) (Eq. 3.7) over clips,
-    canonical frames and joints."""
-    a = X.positions(n_frames=n_frames)
+    canonical frames and joints. ``reference`` may pass f_k(Y) (``X.positions(n_frames=...)``)
+    computed once for many reconstructions."""
+    a = X.positions(n_frames=n_frames) if reference is None else reference
     b = X.positions(coefs_hat, n_frames=n_frames)
+    if a.shape != b.shape:
+        raise ValueError(f"observation_error: reference positions {a.shape} do not match {b.shape}")
     return float(np.mean(np.linalg.norm(a - b, axis=-1)))
 
 

@@ -138,9 +138,17 @@ class FPCA:
         z = (scores @ self.components_).reshape(-1, K, D) / self.function_weights_
         return self.mean_ + np.einsum("kl,nld->nkd", self._gram_isqrt, z)
 
-    def reconstruct(self, X: FunctionalMotions | np.ndarray) -> np.ndarray:
-        """Coefficients after projection to the latent space and back."""
-        return self.inverse_transform(self.transform(X))
+    def reconstruct(self, X: FunctionalMotions | np.ndarray, n_components: int | None = None) -> np.ndarray:
+        """Coefficients after projection to the latent space and back; with
+        ``n_components`` only the leading ones of the fitted eigenfunctions (they are
+        nested, so one fit serves every smaller dimension)."""
+        n = self.components_.shape[0] if n_components is None else int(n_components)
+        if not 1 <= n <= self.components_.shape[0]:
+            raise ValueError(f"n_components must be in [1, {self.components_.shape[0]}]; got {n_components}")
+        scores = self._scaled(self._coefs(X)) @ self.components_[:n].T
+        K, D = self.mean_.shape
+        z = (scores @ self.components_[:n]).reshape(-1, K, D) / self.function_weights_
+        return self.mean_ + np.einsum("kl,nld->nkd", self._gram_isqrt, z)
 
     def to_motions(
         self, scores: np.ndarray, fps: float, skeleton: Skeleton | None = None, joint_names: tuple[str, ...] | None = None
@@ -225,3 +233,22 @@ class NormalizedFPCA(FPCA):
 
     def _weights(self, X: FunctionalMotions) -> np.ndarray:
         return zscore_weights(functional_std(X))
+
+
+@register_saved
+class WeightedFPCA(FPCA):
+    """FPCA of functions scaled by given weights (e.g. SFPCA weights optimised for another
+    number of components): diag(w) Y(t), back-projected with diag(w)^(-1) (Eq. 3.8)."""
+
+    def __init__(self, n_components: int = 20, function_weights: np.ndarray | None = None) -> None:
+        super().__init__(n_components)
+        self.function_weights = function_weights
+
+    def _weights(self, X: FunctionalMotions) -> np.ndarray:
+        w = np.asarray(self.function_weights, dtype=float) if self.function_weights is not None else None
+        if w is None or w.shape != (X.layout.n_functions,) or not np.all(np.isfinite(w) & (w > 0)):
+            raise ValueError(f"WeightedFPCA: function_weights must be {X.layout.n_functions} positive finite numbers")
+        return w
+
+    def _restore_params(self) -> None:
+        self.function_weights = self.function_weights_

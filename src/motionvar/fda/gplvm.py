@@ -67,6 +67,22 @@ def rbf_ard(X1, X2, sf2, ell):
     return sf2 * torch.exp(-0.5 * (d**2).sum(-1))
 
 
+def jitter_cholesky(A, jitter: float, tries: int = 6):
+    """Cholesky factor of A, adding jitter * mean(diag A) to the diagonal (times 10 per
+    failed try) when A is numerically not positive definite (GPy's ``jitchol``)."""
+    torch = _torch()
+    L, info = torch.linalg.cholesky_ex(A)
+    if int(info) == 0:
+        return L
+    eye = torch.eye(A.shape[0], dtype=A.dtype)
+    scale = torch.diagonal(A).mean().detach()
+    for k in range(tries):
+        L, info = torch.linalg.cholesky_ex(A + (jitter * 10.0**k) * scale * eye)
+        if int(info) == 0:
+            return L
+    raise torch.linalg.LinAlgError("matrix not positive definite even with jitter")
+
+
 def discriminative_log_prior(mu, onehot, sigma2: float):
     """GPy ``DGPLVM`` prior (Urtasun & Darrell 2007): -(1/sigma2) tr((S_b + 0.1 I)^-1 S_w)."""
     torch = _torch()
@@ -108,7 +124,7 @@ class BayesianGPLVM:
         noise_init: float = 0.01,
         discriminative_sigma2: float | None = None,
         random_state: int = 0,
-        jitter: float = 1e-6,
+        jitter: float = 1e-4,
     ) -> None:
         self.n_components = n_components
         self.n_inducing = n_inducing
@@ -145,14 +161,14 @@ class BayesianGPLVM:
         Z = p["Z"]
         M = Z.shape[0]
         psi0, psi1, psi2 = psi_statistics(mu, S, Z, sf2, ell)
-        Kuu = rbf_ard(Z, Z, sf2, ell) + self.jitter * torch.eye(M, dtype=Y.dtype)
-        L = torch.linalg.cholesky(Kuu)
+        Kuu = rbf_ard(Z, Z, sf2, ell) + (self.jitter * sf2) * torch.eye(M, dtype=Y.dtype)
+        L = jitter_cholesky(Kuu, self.jitter)
         sigma = torch.sqrt(noise)
         A = torch.linalg.solve_triangular(L, psi1.T, upper=False) / sigma
         tmp = torch.linalg.solve_triangular(L, psi2, upper=False)
         AAT = torch.linalg.solve_triangular(L, tmp.T, upper=False) / noise
         B = AAT + torch.eye(M, dtype=Y.dtype)
-        LB = torch.linalg.cholesky(B)
+        LB = jitter_cholesky(B, self.jitter)
         c = torch.linalg.solve_triangular(LB, A @ Y, upper=False) / sigma
         bound = -0.5 * N * D * torch.log(2 * math.pi * noise)
         bound = bound - D * torch.log(torch.diagonal(LB)).sum()
@@ -194,14 +210,16 @@ class BayesianGPLVM:
                 i += n
             return out
 
+        scale = 1.0 / (N * P)  # the bound per output value: same optimum, O(1) numbers
+
         def fun(theta):
             t = torch.as_tensor(theta, dtype=torch.float64).requires_grad_(True)
             try:
                 bound, _ = self._bound(unpack(t), Yt, YY, onehot)
             except torch.linalg.LinAlgError:
-                return np.inf, np.zeros_like(theta)
-            (g,) = torch.autograd.grad(-bound, t)
-            return float(-bound.detach()), g.numpy()
+                return 1e300, np.zeros_like(theta)
+            (g,) = torch.autograd.grad(-bound * scale, t)
+            return float(-bound.detach()) * scale, g.numpy()
 
         theta0 = np.concatenate([init[k].ravel() for k in names])
         # keep variances, lengthscales and noise in a sane range (GPy constrains them positive)
@@ -224,6 +242,8 @@ class BayesianGPLVM:
         self.noise_variance_ = math.exp(float(p["log_noise"][0]))
         self.bound_ = float(bound)
         self.n_iter_ = int(res.nit)
+        self.converged_ = bool(res.success)
+        self.message_ = str(res.message)
         self._predict_weights = w.numpy()
         return self
 

@@ -97,10 +97,20 @@ class ObservationObjective:
         self.n_components = int(n_components)
         T = int(n_eval_frames or X.n_frames)
         N, K, D = X.coefs.shape
-        self.shape = (N, K, D)
+        # Functions that are the same in every clip (e.g. joints a rig never moves) have a
+        # zero column in the data: their weights change nothing, so the PCA leaves them out
+        # (an exact shortcut) and they are reconstructed as their mean.
+        std = functional_std(X)
+        self.active = torch.as_tensor(np.flatnonzero(std > 1e-12 * max(float(std.max()), 1e-300)))
+        Da = len(self.active)
+        self.shape = (N, K, D, Da)
         gram_sqrt, gram_isqrt = X.basis.gram_sqrt()
         mean = X.coefs.mean(axis=0)
-        self.centred = torch.as_tensor(np.einsum("kl,nld->nkd", gram_sqrt, X.coefs - mean), dtype=torch.float64)
+        centred = np.einsum("kl,nld->nkd", gram_sqrt, X.coefs - mean)[:, :, self.active.numpy()]
+        self.centred = torch.as_tensor(centred.reshape(N, K * Da), dtype=torch.float64)
+        # with more clips than active coefficients, diag(w) C0 diag(w) is the (small) scatter
+        # matrix to decompose, and C0 is computed once
+        self.scatter = self.centred.T @ self.centred if N > K * Da else None
         design = X.basis.design_frames(T)
         self.eval_matrix = torch.as_tensor(design @ gram_isqrt, dtype=self.dtype)
         self.mean_values = torch.as_tensor(design @ mean, dtype=self.dtype)
@@ -109,20 +119,29 @@ class ObservationObjective:
         self.parents = np.asarray(X.parents)
         self.n_joints = X.layout.n_joints
 
+    @property
+    def active_functions(self) -> np.ndarray:
+        """Indices of the functions that vary between clips (the others have no effect)."""
+        return self.active.numpy()
+
     def loss(self, w):
         """Torch scalar objective for torch weights ``w`` (D,) (differentiable)."""
         from ..core.kinematics import fk_torch
 
         torch = self.torch
-        N, K, D = self.shape
-        z = (self.centred * w).reshape(N, K * D)
-        if N <= K * D:  # leading eigenvectors of the smaller Gram matrix
-            u = TopEigenvectors.apply(z @ z.T, self.n_components)
-            z_hat = u @ (u.T @ z)
-        else:
-            v = TopEigenvectors.apply(z.T @ z, self.n_components)
+        N, K, D, Da = self.shape
+        wa = w[self.active]
+        w_rep = wa.repeat(K)  # per (k, d) coefficient, flattened k-major like the data
+        z = self.centred * w_rep
+        n = min(self.n_components, min(N, K * Da))
+        if self.scatter is not None:
+            v = TopEigenvectors.apply(self.scatter * torch.outer(w_rep, w_rep), n)
             z_hat = (z @ v) @ v.T
-        c_hat = (z_hat.reshape(N, K, D) / w).to(self.dtype)
+        else:  # leading eigenvectors of the smaller Gram matrix
+            u = TopEigenvectors.apply(z @ z.T, n)
+            z_hat = u @ (u.T @ z)
+        c_active = (z_hat / w_rep).reshape(N, K, Da).to(self.dtype)
+        c_hat = torch.zeros((N, K, D), dtype=self.dtype).index_copy(2, self.active, c_active)
         values = torch.einsum("tk,nkd->ntd", self.eval_matrix, c_hat) + self.mean_values
         root = values[..., :3]
         quats = values[..., 3:].reshape(N, values.shape[1], self.n_joints, 4)
@@ -222,8 +241,13 @@ class SFPCA(FPCA):
         else:
             self.init_, w0 = "normalized", normalized
 
+        # only groups with a function that varies between clips have an effect (exact shortcut)
+        free = np.unique(groups[objective.active_functions])
+
         def weights(u: np.ndarray) -> np.ndarray:
-            return w0 * u[groups]
+            scale = np.ones(n_params)
+            scale[free] = u
+            return w0 * scale[groups]
 
         if fd:
             def fun(u):
@@ -232,11 +256,11 @@ class SFPCA(FPCA):
         else:
             def fun(u):
                 value, grad_w = objective.value_and_grad(weights(u))
-                return value, np.bincount(groups, weights=grad_w * w0, minlength=n_params)
+                return value, np.bincount(groups, weights=grad_w * w0, minlength=n_params)[free]
             jac = True
         result = minimize(
-            fun, np.ones(n_params), jac=jac, method="L-BFGS-B",
-            bounds=[self.bounds] * n_params,
+            fun, np.ones(len(free)), jac=jac, method="L-BFGS-B",
+            bounds=[self.bounds] * len(free),
             options={"maxiter": int(self.max_iter), "ftol": float(self.tol)},
         )
         w = weights(result.x)
