@@ -9,7 +9,7 @@ from motionvar.core import Motion, cmu_skeleton
 from motionvar.core.quaternions import qidentity, quat_about_axis
 from motionvar.io import load_dataset, save_dataset
 from motionvar.plots import (
-    KeyFrameRow, animate_motions, dataset_overview, key_frame_grid, overview_clips, project, view_axis, write_gif,
+    KeyFrameRow, animate_motions, dataset_overview, gif_page, key_frame_grid, overview_clips, project, view_axis, write_gif,
 )
 from motionvar.plots.stick import joint_sides
 
@@ -114,3 +114,14 @@ def test_write_gif_over_the_size_limit_leaves_no_file(tmp_path):
     with pytest.raises(ValueError, match="big.gif"):
         write_gif(out, noise, max_bytes=1000)
     assert list(tmp_path.iterdir()) == []
+
+
+def test_gif_page_inlines_the_gif_and_rejects_other_files(tmp_path):
+    gif = tmp_path / "a.gif"
+    animate_motions(gif, [swinging_clip(n_frames=20)], labels=["walk"])
+    page = gif_page(gif, title="walk <1>")
+    assert "data:image/gif;base64," in page and "walk &lt;1&gt;" in page
+    png = tmp_path / "b.gif"
+    png.write_bytes(b"\x89PNG\r\n\x1a\n")
+    with pytest.raises(ValueError, match="b.gif: not a GIF"):
+        gif_page(png)

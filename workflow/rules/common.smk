@@ -135,14 +135,33 @@ def ev_benchmark(rule_name, extra=""):
     return f"results/{{dataset}}/benchmarks/{rule_name}.tsv"
 
 
+# GIF path pattern -> (paper, caption, labels): the report shows HTML pages of them
+# (rules gif_page_* in report.smk), since Snakemake's report cannot display a GIF itself.
+GIF_PAGES = {}
+
+
 def in_report(path, paper, caption, **labels):
     """``path`` as a report output of ``paper`` (a key of PAPER_CATEGORY, or "summary"),
-    subcategory the dataset, with ``labels`` shown as columns of the report's table."""
+    subcategory the dataset, with ``labels`` shown as columns of the report's table.
+
+    A ``.gif`` stays a plain output; the report gets ``<path>.html``, a page that plays
+    it (same caption, category and labels), built by a rule of report.smk and added to
+    the default target."""
     category = SUMMARY_CATEGORY if paper == "summary" else PAPER_CATEGORY[paper]
+    if path.endswith(".gif"):
+        if path in GIF_PAGES:
+            raise ValueError(f"{path} given to in_report twice")
+        GIF_PAGES[path] = (category, caption, labels)
+        return path
     return report(
         path, caption=caption, category=category, subcategory="{dataset}",
         labels={"dataset": "{dataset}", **labels} if labels else None,
     )
+
+
+def gif_pages(dataset):
+    """The report pages of the GIFs whose paths vary only with the dataset."""
+    return [f"{p}.html".format(dataset=dataset) for p in GIF_PAGES if re.fullmatch(r"[^{}]*(\{dataset\}[^{}]*)*", p)]
 
 
 def register_evaluation(ev, paper, extra=()):
@@ -176,6 +195,7 @@ def default_outputs(dataset):
         f"results/{dataset}/figures/dataset_overview.png",
         f"results/{dataset}/figures/dataset_animation.gif",
         *evaluation_outputs(dataset),
+        *gif_pages(dataset),
         f"results/{dataset}/claims.csv",
         f"results/{dataset}/claims_summary.html",
     ]

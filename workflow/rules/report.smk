@@ -104,3 +104,38 @@ rule claims_summary:
         ENV
     script:
         "../scripts/claims_summary.py"
+
+
+# One page per GIF given to in_report (common.smk): the GIF inlined in a small HTML page,
+# which the report shows (it cannot show a GIF file itself). Defined last, after every
+# rule file has registered its GIFs.
+for _gif, (_category, _caption, _labels) in GIF_PAGES.items():
+    _stem = re.sub(r"\W+", "_", os.path.basename(_gif)[: -len(".gif")]).strip("_")
+    _name = f"gif_page_{_stem}"
+
+    rule:
+        name:
+            _name
+        input:
+            _gif,
+        output:
+            report(
+                f"{_gif}.html",
+                caption=_caption,
+                category=_category,
+                subcategory="{dataset}",
+                labels={"dataset": "{dataset}", **_labels} if _labels else None,
+            ),
+        params:
+            title=_labels.get("figure", os.path.basename(_gif)),
+        log:
+            ev_log(_name),
+        benchmark:
+            ev_benchmark(_name)
+        threads: 1
+        resources:
+            mem_mb=500,
+        conda:
+            ENV
+        script:
+            "../scripts/gif_page.py"

@@ -5,15 +5,15 @@
   :func:`key_frame_grid` (a figure, one clip per row, shared scale).
 - :mod:`.animation`: :func:`animate_motions` (GIF of clips side by side),
   :func:`render_frames` and :func:`write_gif` for positions that are not Motions
-  (e.g. a model's output).
+  (e.g. a model's output), :func:`gif_page` (an HTML page playing a GIF, for the report).
 - :mod:`.overview`: :func:`dataset_overview`, key frames per behaviour and per walk style.
 """
 
-from .animation import animate_motions, render_frames, write_gif
+from .animation import animate_motions, gif_page, render_frames, write_gif
 from .overview import dataset_overview, overview_clips
 from .stick import KeyFrameRow, draw_pose, evenly_spaced_frames, key_frame_grid, plot_key_frames, project, view_axis
 
 __all__ = [
-    "KeyFrameRow", "animate_motions", "dataset_overview", "draw_pose", "evenly_spaced_frames",
+    "KeyFrameRow", "animate_motions", "dataset_overview", "gif_page", "draw_pose", "evenly_spaced_frames",
     "key_frame_grid", "overview_clips", "plot_key_frames", "project", "render_frames", "view_axis", "write_gif",
 ]

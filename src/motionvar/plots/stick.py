@@ -196,15 +196,17 @@ def plot_key_frames(
         spacing = key_frame_spacing(positions)
     xy = project(positions, screen_x, elevation_deg, azimuth_deg)
     ground = float(xy[..., 1].min())
-    for k, f in enumerate(frames):
-        pose = xy[f].copy()
-        pose[:, 0] += k * spacing - pose[0, 0]
+    poses = xy[frames].copy()
+    poses[..., 0] += (np.arange(len(frames)) * spacing - poses[:, 0, 0])[:, None]
+    for pose in poses:
         draw_pose(ax, pose, parents, names, linewidth=linewidth)
     ax.axhline(ground, color="0.6", linewidth=1.0, zorder=0)
     ax.set_xticks([k * spacing for k in range(len(frames))])
     ax.set_xticklabels([f"{f / fps:.2f} s" if fps else f"frame {f}" for f in frames])
     ax.set_aspect("equal")
-    ax.set_xlim(-0.5 * spacing, (len(frames) - 0.5) * spacing)
+    # half a spacing either side, wider where a pose reaches further (a long stride)
+    pad = 0.02 * spacing
+    ax.set_xlim(min(-0.5 * spacing, poses[..., 0].min() - pad), max((len(frames) - 0.5) * spacing, poses[..., 0].max() + pad))
     if title:
         ax.set_title(title, fontsize=10)
 
@@ -265,6 +267,7 @@ def key_frame_grid(
         n_rows, columns, squeeze=False,
         figsize=(columns * (plot_w + 0.75), n_rows * row_height_in + (0.4 if title else 0.1)),
     )
+    drawn_axes = []
     for i, row in enumerate(rows):
         ax = axes[i % n_rows, i // n_rows]
         if row is None:
@@ -278,8 +281,11 @@ def key_frame_grid(
         ax.set_title(row.label, fontsize=9, loc="left")
         ax.tick_params(labelsize=7)
         ax.set_ylim(*ylim)
-        ax.set_xlim(*xlim)
         ax.set_ylabel("height (cm)", fontsize=7)
+        xlim = (min(xlim[0], ax.get_xlim()[0]), max(xlim[1], ax.get_xlim()[1]))
+        drawn_axes.append(ax)
+    for ax in drawn_axes:  # one scale for all panels, wide enough for every pose
+        ax.set_xlim(*xlim)
     for j in range(len(rows), n_rows * columns):
         axes[j % n_rows, j // n_rows].set_visible(False)
     if title:

@@ -1,0 +1,91 @@
+"""End to end: the whole workflow on config/ci.yaml in a temporary working directory,
+through the default profile (so it ends with the report), within the CI time budget;
+and `snakemake --lint` is clean."""
+
+import re
+import resource
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pandas as pd
+import pytest
+
+from motionvar.claims import CLAIM_COLUMNS
+
+ROOT = Path(__file__).resolve().parents[1]
+SNAKEFILE = str(ROOT / "Snakefile")
+CI_CONFIG = str(ROOT / "config" / "ci.yaml")
+# The CI run, all papers' rules included, must stay under 5 minutes on 2 cores. Wall time
+# on a shared machine says more about the neighbours than about the pipeline, so the test
+# bounds the CPU time of the whole process tree (contention does not inflate it): at most
+# 2 cores x 300 s at 80 % parallel efficiency. The wall time is printed and loosely bounded.
+CI_BUDGET_S = 300
+CI_CPU_BUDGET_S = 2 * CI_BUDGET_S * 0.8
+WALL_GUARD_S = 3 * CI_BUDGET_S
+
+
+def snakemake(*args, cwd, timeout=900):
+    return subprocess.run(
+        [sys.executable, "-m", "snakemake", "-s", SNAKEFILE, *args],
+        cwd=cwd, capture_output=True, text=True, timeout=timeout,
+    )
+
+
+@pytest.fixture(scope="module")
+def ci_run(tmp_path_factory):
+    work = tmp_path_factory.mktemp("ci_run")
+    (work / "reports").mkdir()  # the default profile writes reports/replication.html
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    start = time.perf_counter()
+    result = snakemake("-d", str(work), "--configfile", CI_CONFIG, "--cores", "2", cwd=work)
+    wall = time.perf_counter() - start
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+    print(f"CI pipeline: wall {wall:.1f} s, CPU {cpu:.1f} s")
+    assert result.returncode == 0, result.stdout[-4000:] + result.stderr[-8000:]
+    return work, wall, cpu, result
+
+
+@pytest.mark.e2e
+def test_ci_pipeline_fits_the_budget(ci_run):
+    _, wall, cpu, _ = ci_run
+    assert cpu < CI_CPU_BUDGET_S, (
+        f"CI pipeline used {cpu:.0f} CPU-s, budget {CI_CPU_BUDGET_S:.0f} (5 min on 2 cores): reduce sizes in config/ci.yaml"
+    )
+    assert wall < WALL_GUARD_S, f"CI pipeline took {wall:.0f} s wall (CPU {cpu:.0f} s)"
+
+
+@pytest.mark.e2e
+def test_report_holds_the_data_figures_and_the_claims(ci_run):
+    work, _, _, _ = ci_run
+    report = work / "reports" / "replication.html"
+    assert report.is_file()
+    html = report.read_text(encoding="utf-8", errors="replace")
+    for name in ("dataset_overview.png", "dataset_animation.gif.html", "claims_summary.html", "claims.csv"):
+        assert name in html, f"{name} missing from the report"
+    page = (work / "results" / "synthetic" / "figures" / "dataset_animation.gif.html").read_text()
+    assert "data:image/gif;base64," in page  # the report plays the animation through this page
+    claims = pd.read_csv(work / "results" / "synthetic" / "claims.csv")
+    assert list(claims.columns) == list(CLAIM_COLUMNS)
+    assert (work / "results" / "synthetic" / "figures" / "dataset_animation.gif").stat().st_size < 3_000_000
+
+
+@pytest.mark.e2e
+def test_every_rule_has_a_benchmark_and_a_log(ci_run):
+    work, _, _, result = ci_run
+    ran = set(re.findall(r"^(?:local)?rule (\w+):", result.stdout + result.stderr, flags=re.M)) - {"all"}
+    assert {"data", "preprocess", "dataset_overview", "animation", "claims", "claims_summary"} <= ran
+    results = work / "results" / "synthetic"
+    for rule in sorted(ran):
+        bench = [results / "benchmarks" / f"{rule}.tsv", results / "benchmarks" / rule]
+        assert any(p.is_file() or (p.is_dir() and any(p.iterdir())) for p in bench), f"rule {rule}: no benchmark"
+        logs = [results / "logs" / f"{rule}.log", results / "logs" / rule]
+        assert any(p.exists() for p in logs), f"rule {rule}: no log"
+
+
+@pytest.mark.e2e
+def test_lint_is_clean(tmp_path):
+    result = snakemake("--lint", cwd=ROOT, timeout=120)
+    assert result.returncode == 0, result.stdout + result.stderr
