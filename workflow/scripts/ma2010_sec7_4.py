@@ -87,13 +87,18 @@ def main(snakemake) -> None:
     ref = NaturalnessReference.from_examples(examples, feet, o["contact_height_cm"], o["discontinuity_factor"])
     example_jerk = float(np.mean([mean_jerk(m.positions(), m.fps) for m in examples]))
     rows = []
+    full = o["comparison_seconds"] - 1.0 / five.fps
     for method, motions in out.items():
-        var = variation_between(motions)
+        diverged = any(m.duration < full for m in motions)
+        var = np.inf if diverged else variation_between(motions)
         for s, m in enumerate(motions):
             meas = naturalness(m, ref)
-            rows.append({"method": method, "sequence": s + 1, "seconds": m.duration, **meas,
-                         **naturalness_scores(meas, example_jerk), "variation_between_sequences_cm": var})
-            logging.info("%s %d: %s", method, s + 1, meas)
+            scores = naturalness_scores(meas, example_jerk)
+            if m.duration < full:  # the sequence broke down before its end: unusable, least natural
+                scores = {k: np.inf for k in scores}
+            rows.append({"method": method, "sequence": s + 1, "seconds": m.duration, **meas, **scores,
+                         "variation_between_sequences_cm": var})
+            logging.info("%s %d: %.1f s, %s", method, s + 1, m.duration, meas)
     for s, m in enumerate(examples):  # reference: the examples themselves, root-solved alike
         meas = naturalness(m, ref)
         rows.append({"method": "examples", "sequence": s + 1, "seconds": m.duration, **meas,
@@ -108,11 +113,17 @@ def main(snakemake) -> None:
     colours = plt.get_cmap("tab10").colors
     shown = [*METHODS, "examples"]
     for ax, key in zip(axes, [*NATURALNESS_SCORES, "variation_between_sequences_cm"]):
-        vals = [float(np.nan_to_num(means.loc[m, key])) for m in shown]
+        raw = [float(means.loc[m, key]) for m in shown]
+        finite = [v for v in raw if np.isfinite(v)]
+        top = 1.5 * max(finite) if finite else 1.0
+        vals = [v if np.isfinite(v) else (top if v > 0 else 0.0) for v in raw]
         ax.bar(range(len(shown)), vals, color=[*colours[: len(METHODS)], "0.75"], hatch=[""] * len(METHODS) + ["//"])
         ax.set_xticks(range(len(shown)))
         ax.set_xticklabels([LABELS.get(m, "examples (reference)") for m in shown], rotation=40, ha="right", fontsize=8)
-        ax.set_title(NATURALNESS_SCORES.get(key, "variation between the 3 sequences (cm)"), fontsize=9)
+        for i, v in enumerate(raw):
+            if np.isinf(v):
+                ax.text(i, top, "diverged", rotation=90, ha="center", va="top", fontsize=7, color="white")
+        ax.set_title(NATURALNESS_SCORES.get(key, f"variation between the {o['comparison_sequences']} sequences (cm)"), fontsize=9)
         positive = sorted(v for v in vals if v > 0)
         if positive and positive[-1] > 20 * positive[0]:  # a method far off the others: log axis
             ax.set_yscale("symlog", linthresh=positive[0])
@@ -141,7 +152,11 @@ def main(snakemake) -> None:
                              + (" (ours best)" if best[k] else "") for k in NATURALNESS_SCORES)
                  + f"; variation between ours' sequences {variation['ours']:.2f} cm",
         verdict=verdict_from_fraction(n_best, len(best), full=1.0, partial=0.5),
-        note="The paper judges naturalness by eye; here four measures stand in for it (all four best: reproduced; at "
+        note=("Diverged (unrolled process left the rotation range before the end): "
+              + ", ".join(f"{LABELS[m]} after {min(x.duration for x in out[m]):.1f} s" for m in METHODS
+                          if any(x.duration < full for x in out[m])) + ". " if any(
+                  x.duration < full for m in METHODS for x in out[m]) else "")
+             + "The paper judges naturalness by eye; here four measures stand in for it (all four best: reproduced; at "
              "least two: partial). RBF and Kriging make identical sequences (variation 0) and are not rivals. Perlin "
              f"amplitude {o['perlin_amplitude_rad']:g} rad at {o['perlin_frequency_hz']:g} Hz (set by hand, as in the "
              f"paper). {PROTOCOL}",

@@ -75,8 +75,14 @@ def gplvm_sequence(
 
 
 def dbn_sequence(dbn: LauDBN, codec: PoseCodec, n_frames: int, solver: RootSolver, fps: float, rng: np.random.Generator) -> Motion:
-    """DBN [LBJK09]: the transition network unrolled for n_frames frames."""
-    return solver.motion(codec.decode(dbn.sample(n_frames, rng)), fps)
+    """DBN [LBJK09]: the transition network unrolled for n_frames frames. When the
+    unrolled process diverges (a tangent vector beyond pi, i.e. no rotation any more, or
+    not finite) the motion stops at the last valid frame: callers compare its length with
+    the requested one."""
+    vectors = dbn.sample(n_frames, rng)
+    bad = ~np.all(np.isfinite(vectors) & (np.abs(vectors) < np.pi), axis=1)
+    stop = int(np.argmax(bad)) if bad.any() else n_frames
+    return solver.motion(codec.decode(vectors[: max(stop, 4)]), fps)
 
 
 @dataclass(frozen=True)
