@@ -6,7 +6,11 @@ over joints only). Prints frames per second for numpy (float64) and torch (float
 float32, CPU, no autograd), the ratio torch / numpy, and the largest difference between
 the two results.
 
-    python benchmarks/fk_throughput.py [--clips 1000] [--frames 120] [--repeats 3]
+    python benchmarks/fk_throughput.py [--clips 1000] [--frames 120] [--repeats 3] [--torch-threads N]
+
+numpy runs on one core; torch uses its default thread count unless --torch-threads is
+given (1 compares like with like). On a shared machine the best of --repeats runs is
+still noisy: compare ratios from the same run.
 """
 
 from __future__ import annotations
@@ -35,7 +39,10 @@ def main() -> None:
     parser.add_argument("--clips", type=int, default=1000)
     parser.add_argument("--frames", type=int, default=120)
     parser.add_argument("--repeats", type=int, default=3)
+    parser.add_argument("--torch-threads", type=int, default=None)
     args = parser.parse_args()
+    if args.torch_threads:
+        torch.set_num_threads(args.torch_threads)
 
     sk = cmu_skeleton()
     rng = np.random.default_rng(0)
