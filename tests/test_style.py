@@ -248,6 +248,9 @@ def test_vae_and_cvae_training(tiny):
     cvae, chist = train_vae(maps, cfg, n_samples=3, style_maps=example, alpha=200.0, init=vae,
                             hidden=(64, 32, 16), latent=4)
     assert chist["style"].iloc[-1] < chist["style"].iloc[0]
+    from motionvar.style import active_units
+
+    assert 0 <= active_units(vae, maps) <= 4
     d_vae = float(style_distance(space.reencode(vae.sample(200, torch.Generator().manual_seed(1)).reshape(200, 16, 30)), example))
     d_cvae = float(style_distance(space.reencode(cvae.sample(200, torch.Generator().manual_seed(1)).reshape(200, 16, 30)), example))
     assert d_cvae < d_vae

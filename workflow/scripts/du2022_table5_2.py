@@ -10,7 +10,7 @@ def main(snakemake) -> None:
     import pandas as pd
 
     from motionvar.claims import Claim, verdict_from_fraction, write_claims
-    from motionvar.style import diversity, load_vae, sample_features
+    from motionvar.style import active_units, diversity, load_vae, sample_features
     from motionvar.style.data import primitive_features
     from motionvar.style.figures import diversity_figure
     from motionvar.style.published import diversity_tables
@@ -25,9 +25,11 @@ def main(snakemake) -> None:
     for k, primitive in enumerate(cfg["style_primitives"]):
         _, train = primitive_features(dataset, layout, primitive, "neutral", cfg["canonical_frames"])
         rows.append({"primitive": primitive, "model": "training data", "n": len(train), **diversity(train, J)})
+        train_maps = space.encode(train)
         for j, (vae, shape, info) in enumerate(m for m in models if m[2]["primitive"] == primitive):
             feats = sample_features(vae, shape, space, n, cfg["seed"] + 1000 * k + j)
-            rows.append({"primitive": primitive, "model": info["style"], "n": n, **diversity(feats, J)})
+            rows.append({"primitive": primitive, "model": info["style"], "n": n, **diversity(feats, J),
+                         "active_latents": active_units(vae, train_maps)})
     table = pd.DataFrame(rows)
     pub = diversity_tables().rename(columns={c: f"published_{c}" for c in ("pose_sd", "v_sd", "step_sd")})
     table = table.merge(pub, on=["primitive", "model"], how="left")
@@ -45,7 +47,9 @@ def main(snakemake) -> None:
     step = {p: (t.loc[(p, "neutral"), "step_sd"], t.loc[(p, "training data"), "step_sd"]) for p in prims}
     styles = [m for m in t.index.get_level_values("model").unique() if m not in ("training data", "neutral")]
     lower = [(p, s) for p in prims for s in styles if t.loc[(p, s), "pose_sd"] < t.loc[(p, "neutral"), "pose_sd"]]
-    note = f"{n} samples a model; synthetic data, CMU 21-joint subset, reduced training budgets (see the caption)."
+    neutral_active = ", ".join(f"{p}: {int(t.loc[(p, 'neutral'), 'active_latents'])}" for p in prims)
+    note = (f"{n} samples a model; synthetic data, CMU 21-joint subset, reduced training budgets (see the caption); "
+            f"latent dimensions in use by the neutral VAE (of {models[0][0].latent}): {neutral_active}.")
     write_claims(snakemake.output.claims, [
         Claim(
             claim_id="du2022.table5_2.neutral_pose_sd_close_to_training", paper="du2022", source="Tables 5.2-5.3",

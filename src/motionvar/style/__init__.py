@@ -31,13 +31,13 @@ from .features import (
 )
 from .losses import content_loss, gram, gram_distance, gram_distance_maps, kl_loss, style_distance, style_loss, vae_loss
 from .model import (
-    FeatureSpace, diagonal_minima, load_vae, sample_features, sample_maps, save_vae, style_distance_matrix,
+    FeatureSpace, active_units, active_units, diagonal_minima, load_vae, sample_features, sample_maps, save_vae, style_distance_matrix,
 )
 from .networks import ConvAutoencoder, MotionVAE
 from .training import TrainConfig, train_autoencoder, train_vae
 
 __all__ = [
-    "ConvAutoencoder", "FeatureLayout", "FeatureScaler", "FeatureSpace", "MotionVAE", "TrainConfig",
+    "ConvAutoencoder", "FeatureLayout", "active_units", "FeatureScaler", "FeatureSpace", "MotionVAE", "TrainConfig",
     "content_loss", "diagonal_minima", "diversity", "features_to_positions", "gram", "gram_distance",
     "heading_angles", "kl_loss", "load_vae", "motion_features", "motions_features", "pose_sd",
     "positions_to_features", "sample_features", "sample_maps", "save_vae", "sliding_windows",

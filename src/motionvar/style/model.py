@@ -145,6 +145,15 @@ def style_distance_matrix(
     return table
 
 
+@torch.no_grad()
+def active_units(vae: MotionVAE, maps: torch.Tensor, threshold: float = 0.01) -> int:
+    """Latent dimensions in use (Burda et al. 2016): Cov over the inputs of E[z | y] above
+    ``threshold``; a VAE whose posterior collapsed to the prior uses few (its samples
+    then vary little)."""
+    mu, _ = vae.encode(torch.as_tensor(maps, dtype=torch.float32).reshape(len(maps), -1))
+    return int((mu.var(dim=0) > threshold).sum())
+
+
 def diagonal_minima(table: pd.DataFrame) -> list[str]:
     """Rows whose smallest entry lies in the column of the same name."""
     return [r for r in table.index if r in table.columns and table.loc[r].idxmin() == r]
