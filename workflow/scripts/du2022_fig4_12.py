@@ -45,6 +45,7 @@ def main(snakemake) -> None:
                                fontsize=7)
             ax.set_yscale("log")
             ax.yaxis.set_major_formatter(matplotlib.ticker.FormatStrFormatter("%g"))
+            ax.yaxis.set_minor_locator(matplotlib.ticker.LogLocator(subs=(2.0, 5.0)))
             ax.yaxis.set_minor_formatter(matplotlib.ticker.FormatStrFormatter("%g"))
             ax.tick_params(axis="y", labelsize=7)
             ax.grid(axis="y", alpha=0.3)
