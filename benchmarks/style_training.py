@@ -35,6 +35,8 @@ from motionvar.style import (
 
 
 def timed(fn, repeats: int) -> float:
+    """Best of ``repeats`` timings after one untimed warm-up call."""
+    fn()
     best = float("inf")
     for _ in range(repeats):
         t = time.perf_counter()
