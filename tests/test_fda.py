@@ -98,14 +98,17 @@ def test_choose_n_basis_cut_off_rule():
     assert choose_n_basis(ks, rmse, 0.12) == 10  # 10 -> 15 drops 50 %, 10 % per added function
     assert choose_n_basis(ks, rmse, 0.0) == 25
     assert choose_n_basis(np.array([5, 6]), np.array([1.0, 0.9]), 0.12) == 5  # 10 % for one function
+    # a flat first step followed by a steep one is not the cut-off
+    assert choose_n_basis(np.array([5, 6, 8, 10]), np.array([1.35, 1.32, 0.85, 0.84]), 0.05) == 8
     with pytest.raises(ValueError, match="ascending"):
         choose_n_basis(ks[::-1], rmse, 0.1)
 
 
 def test_bspline_rmse_decreases_with_k(data):
     _, _, clips = data
-    rmse = [bspline_fit_rmse(clips, k) for k in (4, 6, 10, 14)]
+    rmse = bspline_fit_rmse(clips, [4, 6, 10, 14])
     assert all(a > b for a, b in zip(rmse, rmse[1:]))
+    assert bspline_fit_rmse(clips, 6) == pytest.approx(rmse[1])
     assert rmse[-1] < 0.1  # cm: smooth clips are represented almost exactly
 
 
@@ -174,6 +177,20 @@ def test_fpca_matches_dense_quadrature_reference(data):
     fd, _, _ = data
     model = FPCA(10).fit(fd)
     assert np.allclose(model.explained_variance_ratio_, reference_explained_variance_ratio(fd, 10), atol=1e-6)
+
+
+def test_fpca_matches_scikit_fda_when_installed(data):
+    """scikit-fda is not a dependency (it needs multimethod<2); checked where it is installed."""
+    pytest.importorskip("skfda")
+    from skfda.preprocessing.dim_reduction import FPCA as SkFPCA
+    from skfda.representation.basis import BSplineBasis as SkBSpline
+    from skfda.representation.basis import FDataBasis, VectorValuedBasis
+
+    fd, _, _ = data
+    K, D = fd.coefs.shape[1:]
+    basis = VectorValuedBasis([SkBSpline(domain_range=(0, 1), n_basis=K, order=4)] * D)
+    sk = SkFPCA(n_components=8).fit(FDataBasis(basis, fd.coefs.transpose(0, 2, 1).reshape(fd.n_clips, -1)))
+    assert np.allclose(FPCA(8).fit(fd).explained_variance_ratio_, sk.explained_variance_ratio_, atol=1e-6)
 
 
 def test_fpca_eigenfunctions_orthonormal_and_full_rank_round_trip(data):

@@ -109,7 +109,7 @@ def test_constraints_objective_and_errors(prim, joints):
     for kind, js in (("position", [joints["right_hand"]]), ("orientation", [joints["right_hand"]]), ("pose", pose)):
         c = random_constraints(prim, kind, 1, js, last, 3)[0]  # met by the same sample s
         obj = Objective(prim, [c])
-        assert obj(s)[0] == pytest.approx(0.0, abs=1e-6)
+        assert obj(s)[0] == pytest.approx(0.0, abs=1e-4)  # cm; float32 forward kinematics
         assert obj(prim.sample(10, 9)).shape == (10,) and obj.n_evals == 11
     moved = Constraint("position", last, (joints["hips"],), np.zeros((1, 3)), mask=np.array([1.0, 0.0, 1.0]))
     pos, _ = prim.key_frame_pose(s, [last], [joints["hips"]])

@@ -3,25 +3,7 @@
 # dimensions per primitive (Table 3.1). Options: config.fda (config/schema.yaml). Inputs:
 # the aligned primitives of results/{dataset}/prep/, warped to a canonical timeline here.
 
-FDA = "results/{dataset}/models/du2022_fda"
-FDA_METHODS = ["fpca", "normalized_fpca", "sfpca", "gplvm"]
-# the curves of one primitive are computed in two jobs that can run side by side
-FDA_PARTS = {"pca": ["fpca", "normalized_fpca", "sfpca"], "gplvm": ["gplvm"]}
-
-register_evaluation("du2022_fig3_9", paper="du2022")
-register_evaluation("du2022_fig3_10", paper="du2022")
-register_evaluation("du2022_fig3_11", paper="du2022")
-register_evaluation("du2022_table3_1", paper="du2022")
-
-
-def fda_curve_files():
-    """The curves and latents of Fig. 3.10/3.11 per primitive and part ({dataset} left open)."""
-    return expand(
-        f"{FDA}/curves/{{primitive}}_{{part}}.npz",
-        primitive=config["fda"]["reconstruction"]["primitives"],
-        part=list(FDA_PARTS),
-        allow_missing=True,
-    )
+include: "fda_helpers.smk"
 
 
 rule du2022_fda_canonical:
@@ -46,15 +28,35 @@ rule du2022_fda_canonical:
         "../scripts/du2022_fda_canonical.py"
 
 
-rule du2022_fig3_9:
+rule du2022_fda_basis:
     input:
         clips=f"{FDA}/canonical/clips.npz",
         metadata=f"{FDA}/canonical/metadata.csv",
     output:
+        rmse=f"{FDA}/basis_rmse.csv",
+        n_basis=f"{FDA}/n_basis.csv",
+    params:
+        options=config["fda"],
+    log:
+        ev_log("du2022_fda_basis"),
+    benchmark:
+        ev_benchmark("du2022_fda_basis")
+    threads: 1
+    resources:
+        mem_mb=3000,
+    conda:
+        ENV
+    script:
+        "../scripts/du2022_fda_basis.py"
+
+
+rule du2022_fig3_9:
+    input:
+        rmse=f"{FDA}/basis_rmse.csv",
+    output:
         table=in_report(ev_table("du2022_fig3_9"), "du2022", "../report/du2022_fig3_9.rst", figure="Fig. 3.9", kind="table"),
         figure=in_report(ev_figure("du2022_fig3_9"), "du2022", "../report/du2022_fig3_9.rst", figure="Fig. 3.9", kind="figure"),
         claims=ev_claims("du2022_fig3_9"),
-        n_basis=f"{FDA}/n_basis.csv",
     params:
         options=config["fda"],
     log:
@@ -63,7 +65,7 @@ rule du2022_fig3_9:
         ev_benchmark("du2022_fig3_9")
     threads: 1
     resources:
-        mem_mb=3000,
+        mem_mb=1000,
     conda:
         ENV
     script:

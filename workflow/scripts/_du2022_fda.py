@@ -73,6 +73,16 @@ def sfpca(options, fd, n_components: int):
                  tol=sf["tol"], n_eval_frames=n_eval)
 
 
+def plain_log_ticks(ax, axis: str = "y") -> None:
+    """Ticks of a log axis at 1, 2, 5 x 10^k, labelled as plain numbers (0.2, 0.5, 1, 2)."""
+    from matplotlib.ticker import FuncFormatter, LogLocator, NullFormatter
+
+    target = ax.yaxis if axis == "y" else ax.xaxis
+    target.set_major_locator(LogLocator(base=10, subs=(1.0, 2.0, 5.0)))
+    target.set_major_formatter(FuncFormatter(lambda v, _: f"{v:g}"))
+    target.set_minor_formatter(NullFormatter())
+
+
 def save(fig, path) -> None:
     import matplotlib.pyplot as plt
 

@@ -30,7 +30,7 @@ def main(snakemake) -> None:
     import matplotlib.pyplot as plt
     import numpy as np
 
-    from _du2022_fda import METHOD_LABELS, METHOD_STYLES, save
+    from _du2022_fda import METHOD_LABELS, METHOD_STYLES, plain_log_ticks, save
     from motionvar.claims import Claim, verdict_from_fraction, write_claims
 
     o = snakemake.params.options["reconstruction"]
@@ -51,6 +51,7 @@ def main(snakemake) -> None:
             ax.set(title=f"{primitive} ({n} clips, K={int(sub['n_basis'].iloc[0])}): {label.split(':')[0]}",
                    xlabel="number of latent dimensions", ylabel=label, yscale="log")
             ax.grid(alpha=0.3, which="both")
+            plain_log_ticks(ax)
             ax.legend(fontsize=8)
     fig.suptitle("Du 2022 Fig. 3.10: average reconstruction error vs latent dimensions", fontsize=11)
     fig.tight_layout()
@@ -115,22 +116,22 @@ def main(snakemake) -> None:
             verdict=verdict_from_fraction(ok, len(w), full=more_than_half, partial=0.25),
             note="Reproduced: at more than half the dimensions; partial: at least a quarter.",
         ))
-    monotone, curves = [], 0
+    not_monotone, curves = [], 0
     for (primitive, method), g in table[table["method"].isin(linear)].groupby(["primitive", "method"]):
         for col in ("feature_error", "observation_error_cm"):
             v = g.sort_values("dims")[col].to_numpy()
             curves += 1
             if not np.all(np.diff(v) <= 1e-9 * v[:-1]):
-                monotone.append(f"{primitive}/{method}/{col.split('_')[0]}")
+                not_monotone.append(f"{primitive}/{method}/{col.split('_')[0]}")
     claims.append(Claim(
         claim_id="du2022.fig3_10.errors_decrease_with_dims",
         paper="du2022", source="Fig. 3.10",
         statement="For FPCA and its two scaled variants the reconstruction error decreases monotonically with "
         "the number of dimensions, in both spaces.",
         published="monotone decrease for FPCA, normalized FPCA and SFPCA",
-        measured=f"{curves - len(monotone)}/{curves} curves monotone"
-        + (f"; not monotone: {', '.join(monotone)}" if monotone else ""),
-        verdict=verdict_from_fraction(curves - len(monotone), curves),
+        measured=f"{curves - len(not_monotone)}/{curves} curves monotone"
+        + (f"; not monotone: {', '.join(not_monotone)}" if not_monotone else ""),
+        verdict=verdict_from_fraction(curves - len(not_monotone), curves),
         note="SFPCA's weights are optimised separately for every dimension (Sec. 3.3.4), so its curve "
         "need not be monotone by construction.",
     ))

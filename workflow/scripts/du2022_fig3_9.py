@@ -1,6 +1,6 @@
 """Rule du2022_fig3_9 (Du 2022 Fig. 3.9, Sec. 3.3.3): joint-space RMSE between the B-spline
 functions and the canonical frames for an increasing number of basis functions K, per
-behaviour; K per primitive by the cut-off rule (written to n_basis.csv for the other rules)."""
+behaviour and per primitive with the K chosen by the cut-off rule (from du2022_fda_basis)."""
 
 
 def main(snakemake) -> None:
@@ -11,27 +11,12 @@ def main(snakemake) -> None:
     import numpy as np
     import pandas as pd
 
-    from _du2022_fda import canonical, primitive_motions, save
+    from _du2022_fda import plain_log_ticks, save
     from motionvar.claims import Claim, verdict_from_fraction, write_claims
-    from motionvar.fda import bspline_fit_rmse, choose_n_basis
 
     o = snakemake.params.options["basis"]
-    dataset = canonical(snakemake)
-    rows, chosen = [], []
-    for primitive in sorted(dataset.metadata["primitive"].unique()):
-        motions, meta = primitive_motions(dataset, primitive)
-        T = motions[0].n_frames
-        ks = [k for k in o["n_basis"] if k <= T]
-        if not ks:
-            raise ValueError(f"config fda.basis.n_basis: every K exceeds the {T} canonical frames of {primitive}")
-        rmse = [bspline_fit_rmse(motions, k) for k in ks]
-        K = choose_n_basis(np.array(ks), np.array(rmse), o["min_relative_drop"])
-        chosen.append({"primitive": primitive, "behaviour": meta["behaviour"].iloc[0], "n_basis": K,
-                       "n_clips": len(motions), "canonical_frames": T})
-        rows += [{"primitive": primitive, "behaviour": meta["behaviour"].iloc[0], "n_clips": len(motions),
-                  "canonical_frames": T, "n_basis": k, "rmse_cm": r, "chosen": k == K} for k, r in zip(ks, rmse)]
-    table = pd.DataFrame(rows)
-    pd.DataFrame(chosen).to_csv(snakemake.output.n_basis, index=False)
+    table = pd.read_csv(snakemake.input.rmse)
+    chosen = table[table["chosen"]].to_dict("records")
 
     # per behaviour: RMSE pooled over its primitives' clips and frames
     table["weight"] = table["n_clips"] * table["canonical_frames"]
@@ -49,15 +34,18 @@ def main(snakemake) -> None:
     axes[0].set(title="Per behaviour (pooled over its primitives)", xlabel="number of basis functions K",
                 ylabel="joint-space RMSE (cm)", yscale="log")
     axes[0].legend(fontsize=8)
-    for primitive, g in table.groupby("primitive"):
-        line, = axes[1].plot(g["n_basis"], g["rmse_cm"], marker=".", lw=1, label=primitive)
+    palette = plt.cm.tab20.colors  # dark tones first, then the light ones: 20 distinct colours
+    for i, (primitive, g) in enumerate(table.groupby("primitive")):
+        color = palette[(2 * i) % 20 + (2 * i // 20) % 2]
+        axes[1].plot(g["n_basis"], g["rmse_cm"], marker=".", lw=1, label=primitive, color=color)
         c = g[g["chosen"]]
-        axes[1].plot(c["n_basis"], c["rmse_cm"], "o", ms=9, mfc="none", color=line.get_color())
-    axes[1].set(title=f"Per primitive (circle: chosen K, cut-off {o['min_relative_drop']:.0%} drop)",
+        axes[1].plot(c["n_basis"], c["rmse_cm"], "o", ms=9, mfc="none", color=color)
+    axes[1].set(title=f"Per primitive (circle: chosen K, cut-off {o['min_relative_drop']:.0%} per added function)",
                 xlabel="number of basis functions K", ylabel="joint-space RMSE (cm)", yscale="log")
     axes[1].legend(fontsize=7, ncol=2)
     for ax in axes:
         ax.grid(alpha=0.3, which="both")
+        plain_log_ticks(ax)
     fig.suptitle("Du 2022 Fig. 3.9: cubic B-spline representation of canonical clips", fontsize=11)
     fig.tight_layout()
     save(fig, snakemake.output.figure)

@@ -41,7 +41,7 @@ def main(snakemake) -> None:
     import numpy as np
     import pandas as pd
 
-    from _du2022_fda import canonical, primitive_motions, save, setup_threads, sfpca
+    from _du2022_fda import canonical, plain_log_ticks, primitive_motions, save, setup_threads, sfpca
     from motionvar.claims import write_claims
     from motionvar.fda import FPCA, FunctionalMotions, WeightedFPCA, observation_error
 
@@ -87,6 +87,8 @@ def main(snakemake) -> None:
         ax.set(title=f"{title}: observation-space error vs dimensions", xlabel="latent dimensions", yscale="log",
                xscale="log", ylim=(1e-2, None))  # d = clips - 1 reconstructs exactly: below the axis
         ax.grid(alpha=0.3, which="both")
+        plain_log_ticks(ax, "y")
+        plain_log_ticks(ax, "x")
     axes[0].set_ylabel("mean joint error (cm)")
     axes[1].legend(fontsize=7, ncol=2)
     fig.suptitle("Du 2022 Table 3.1: latent dimensions per motion primitive", fontsize=11)

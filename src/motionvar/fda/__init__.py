@@ -24,13 +24,15 @@ API:
   ``from_motions``, ``values``, ``motion_arrays``, ``positions`` (FK), ``to_motions``,
   ``subset``, ``with_coefs``. :func:`bspline_fit_rmse`: joint-space RMSE of the fit.
 - :class:`FPCA`, :class:`NormalizedFPCA`, :class:`SFPCA`, :class:`WeightedFPCA` (given
-  weights) (sklearn-style):
-  ``fit(fd)``, ``transform(fd or coefs) -> (N, n)``, ``inverse_transform(z) -> (N, K, D)``,
-  ``reconstruct(fd, n_components=None)`` (nested: any smaller dimension), ``to_motions(z, fps, skeleton=None)``, ``save(path)``,
-  ``FPCA.load(path)`` (returns the saved class). Fitted attributes end in ``_``:
-  ``mean_``, ``function_weights_``, ``components_``, ``eigenfunctions_``,
-  ``explained_variance_ratio_``, ...; SFPCA adds ``init_``, ``loss_``, ``n_iter_``,
-  ``fit_time_s_``.
+  weights), sklearn-style: ``fit(fd)``, ``transform(fd or coefs) -> (N, n)``,
+  ``inverse_transform(z) -> (N, K, D)``, ``reconstruct(fd, n_components=None)`` (the
+  eigenfunctions are nested: one fit serves every smaller dimension),
+  ``to_motions(z, fps, skeleton=None)``, ``save(path)``, ``FPCA.load(path)`` (returns the
+  saved class). Fitted attributes end in ``_``: ``mean_``, ``function_weights_``,
+  ``components_``, ``eigenfunctions_``, ``explained_variance_ratio_``, ...; SFPCA adds
+  ``init_``, ``loss_``, ``n_iter_``, ``fit_time_s_``. SFPCA's options: ``gradient``
+  ("autograd" or the thesis' "finite_difference"), ``weight_groups``, ``max_iter``,
+  ``n_eval_frames`` (frames at which its objective runs forward kinematics).
 - :class:`BayesianGPLVM` (arrays) and :class:`FunctionalGPLVM` (functional data): the
   nonlinear baseline (Titsias & Lawrence 2010, optional discriminative prior).
 - :mod:`.evaluation`: :func:`feature_error`, :func:`observation_error`,

@@ -91,10 +91,12 @@ def frame_times(n_frames: int) -> np.ndarray:
 
 def choose_n_basis(n_basis: np.ndarray, rmse: np.ndarray, min_relative_drop: float) -> int:
     """Cut-off rule of Sec. 3.3.3 ("increasing the number of basis functions will not
-    significantly reduce the root mean squared error in joint space"): the first K whose
-    next candidate lowers the RMSE by no more than ``min_relative_drop`` of the current
-    RMSE per added basis function (so the rule does not depend on the spacing of the
-    candidates). ``n_basis`` ascending; returns the largest K if the RMSE keeps dropping."""
+    significantly reduce the root mean squared error in joint space"): the smallest K from
+    which on every further candidate lowers the RMSE by no more than ``min_relative_drop``
+    of the current RMSE per added basis function (per function, so that the rule does not
+    depend on the spacing of the candidates; "from which on", so that a flat step followed
+    by a steep one is not taken for the cut-off). ``n_basis`` ascending; returns the
+    largest K if the last step still drops significantly."""
     n_basis = np.asarray(n_basis)
     rmse = np.asarray(rmse, dtype=float)
     if n_basis.ndim != 1 or n_basis.shape != rmse.shape or len(n_basis) == 0:
@@ -103,8 +105,6 @@ def choose_n_basis(n_basis: np.ndarray, rmse: np.ndarray, min_relative_drop: flo
         raise ValueError(f"choose_n_basis: n_basis must be strictly ascending; got {n_basis.tolist()}")
     if not 0.0 <= min_relative_drop < 1.0:
         raise ValueError(f"choose_n_basis: min_relative_drop must be in [0, 1); got {min_relative_drop}")
-    for i in range(len(n_basis) - 1):
-        drop = (rmse[i] - rmse[i + 1]) / max(rmse[i], 1e-300) / (n_basis[i + 1] - n_basis[i])
-        if drop <= min_relative_drop:
-            return int(n_basis[i])
-    return int(n_basis[-1])
+    drops = (rmse[:-1] - rmse[1:]) / np.maximum(rmse[:-1], 1e-300) / np.diff(n_basis)
+    significant = np.flatnonzero(drops > min_relative_drop)
+    return int(n_basis[significant[-1] + 1]) if len(significant) else int(n_basis[0])

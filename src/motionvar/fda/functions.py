@@ -185,17 +185,21 @@ class FunctionalMotions:
         return [Motion(skeleton=skeleton, root_pos=r, rotations=q, fps=fps) for r, q in zip(root, quats)]
 
 
-def bspline_fit_rmse(motions: Sequence[Motion], n_basis: int, degree: int = 3) -> float:
+def bspline_fit_rmse(motions: Sequence[Motion], n_basis: int | Sequence[int], degree: int = 3) -> np.ndarray:
     """Joint-space RMSE (cm) between each clip's frames and its B-spline representation
     evaluated at the same frames (Fig. 3.9): sqrt of the mean squared joint distance over
-    clips, frames and joints."""
-    fd = FunctionalMotions.from_motions(motions, n_basis, degree=degree)
+    clips, frames and joints; one value per entry of ``n_basis`` (a float for an int)."""
+    ks = np.atleast_1d(n_basis)
     lengths = np.array([m.n_frames for m in motions])
-    sq_sum, count = 0.0, 0
-    for T in np.unique(lengths):
-        idx = np.flatnonzero(lengths == T)
-        fitted = fd.subset(idx).positions(n_frames=int(T))
-        original = np.stack([motions[i].positions() for i in idx])
-        sq_sum += float(np.sum((fitted - original) ** 2))
-        count += fitted.shape[0] * fitted.shape[1] * fitted.shape[2]
-    return float(np.sqrt(sq_sum / count))
+    groups = [np.flatnonzero(lengths == T) for T in np.unique(lengths)]
+    original = [np.stack([motions[i].positions() for i in idx]) for idx in groups]  # once for every K
+    rmse = np.empty(len(ks))
+    for j, k in enumerate(ks):
+        fd = FunctionalMotions.from_motions(motions, int(k), degree=degree)
+        sq_sum, count = 0.0, 0
+        for idx, orig in zip(groups, original):
+            fitted = fd.subset(idx).positions(n_frames=orig.shape[1])
+            sq_sum += float(np.sum((fitted - orig) ** 2))
+            count += orig.shape[0] * orig.shape[1] * orig.shape[2]
+        rmse[j] = np.sqrt(sq_sum / count)
+    return rmse if np.ndim(n_basis) else float(rmse[0])

@@ -81,7 +81,12 @@ def save_dataset(directory: str | Path, motions: Sequence[Motion], metadata: pd.
     meta = metadata.copy()
     meta["n_frames"] = lengths
     meta["fps"] = arrays["fps"]
-    _atomic_write(directory / CLIPS_FILE, lambda tmp: np.savez(open(tmp, "wb"), **arrays))
+
+    def write_clips(tmp: Path) -> None:
+        with open(tmp, "wb") as fh:  # a file object: np.savez would append .npz to the temporary name
+            np.savez(fh, **arrays)
+
+    _atomic_write(directory / CLIPS_FILE, write_clips)
     _atomic_write(directory / METADATA_FILE, lambda tmp: meta.to_csv(tmp, index=False))
 
 
