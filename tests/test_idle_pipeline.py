@@ -103,6 +103,20 @@ def test_evaluations_on_toy_subjects(fitted):
     assert np.median(pooled["generated variations (Sec. 6)"]) < 0.99
     assert claim.verdict in ("reproduced", "partial", "not reproduced")
 
+    # windows longer than half the recorded rests: those are left out, the rest is still measured
+    table, pooled, claim = repetition(
+        model, recordings, RepetitionParams(sequence_s=60.0, window_s=25.0, fps=10.0, loop_clip_s=5.0), 0
+    )
+    short = table[table["source"] == "recorded rest variations"]
+    left_out = short["windows"] == 0
+    assert left_out.any() and short.loc[left_out, "median_best_ncc"].isna().all()
+    assert len(pooled["generated variations (Sec. 6)"]) == 3 * (60 // 25)
+    assert f"{(~left_out).sum()} of them with recorded resting segments" in claim.note
+    table, pooled, claim = repetition(
+        model, recordings, RepetitionParams(sequence_s=60.0, window_s=29.0, fps=10.0, loop_clip_s=5.0), 0
+    )
+    assert len(pooled["recorded rest variations"]) == 0 and claim.verdict in ("partial", "not reproduced")
+
     table, example, claim = fitting(model, FittingParams(pairs=4, sequence_s=20.0, between_s=10.0), 0)
     assert table[["max_start_error_cm", "max_end_error_cm"]].to_numpy().max() < 1e-6
     assert claim.verdict in ("reproduced", "partial") and "01" in example

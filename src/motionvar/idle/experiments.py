@@ -209,18 +209,27 @@ def repetition(
         window = int(round(params.window_s * fps / step))
         stride = max(1, int(round(params.stride_s * fps / step)))
         for source, x in seqs.items():
-            best = window_best_match(x[::step, :P], window, stride)
+            x = x[::step, :P]
+            # a recording too short for two windows has nothing to repeat: left out (windows 0)
+            best = window_best_match(x, window, stride) if len(x) >= 2 * window else np.empty(0)
             pooled[source].append(best)
             rows.append({
-                "subject": s, "source": source, "seconds": len(x) / fps, "windows": len(best),
-                "median_best_ncc": float(np.median(best)), "max_best_ncc": float(best.max()),
+                "subject": s, "source": source, "seconds": len(x) * step / fps, "windows": len(best),
+                "median_best_ncc": float(np.median(best)) if len(best) else np.nan,
+                "max_best_ncc": float(best.max()) if len(best) else np.nan,
             })
     table = pd.DataFrame(rows)
     pooled = {k: np.concatenate(v) for k, v in pooled.items()}
-    med = {k: float(np.median(v)) for k, v in pooled.items()}
+    med = {k: float(np.median(v)) if len(v) else np.nan for k, v in pooled.items()}
     gen, cut, rec, loop = med[GEN_VAR], med[GEN_VAR_CUT], med[REC_VAR], med[LOOP_VAR]
-    verdict = verdict_threshold(cut, rec, "<=", params.tolerance) if gen < loop else "not reproduced"
-    rec_s = table.loc[table.source == REC_VAR, "seconds"].mean()
+    measured_rec = table[(table.source == REC_VAR) & (table.windows > 0)]
+    if gen >= loop:
+        verdict = "not reproduced"
+    elif measured_rec.empty:  # less repetition than a loop, but no recorded rest long enough to compare
+        verdict = "partial"
+    else:
+        verdict = verdict_threshold(cut, rec, "<=", params.tolerance)
+    rec_s = measured_rec["seconds"].mean()
     claim = Claim(
         claim_id=f"{PAPER}.sec6.variations_show_little_repetition",
         paper=PAPER, source="Sec. 6.2",
@@ -238,7 +247,9 @@ def repetition(
             "Repetition = for each non-overlapping window, the highest normalised cross-correlation with any other "
             "non-overlapping window of the same sequence (1 = an exact repeat). Reproduced = generated variations "
             "repeat less than a loop and, at the same length, no more than the recorded resting variations "
-            f"(partial: within {params.tolerance:.0%}). {len(subjects)} subjects."
+            f"(partial: within {params.tolerance:.0%}, or no recorded rest long enough to compare). "
+            f"{len(subjects)} subjects, {len(measured_rec)} of them with recorded resting segments of at least two "
+            f"{params.window_s:g}-s windows (the others are left out of the recorded comparison)."
         ),
     )
     return table, pooled, claim
