@@ -160,6 +160,9 @@ def test_category_graph_counts_transitions_and_times():
     assert g.shortest_route(0, 0, rng) == [0, 1, 0]  # the shortest cycle
     with pytest.raises(ValueError, match="no outgoing"):
         g.shortest_route(2, 0, rng)
+    assert g.routable_pairs().tolist() == [[0, 0], [0, 1], [0, 2], [1, 0], [1, 1], [1, 2]]
+    for start, end in g.routable_pairs():
+        assert g.shortest_route(start, end, rng)[-1] == end
     with pytest.raises(ValueError, match="one stay duration"):
         CategoryGraph.from_sequences(("a",), [[0, 0]], [[1.0]])
 

@@ -306,9 +306,9 @@ def fitting(model: IdleModel, params: FittingParams, seed: int) -> tuple[pd.Data
                 "max_junction_accel_ratio": float(j_acc.max(initial=0) / acc_q),
             })
         starts, ends, fit_s, fit_e, steps, accs = [], [], [], [], [], []
-        for _ in range(max(1, params.pairs // 10)):
-            p0 = random_posture(db, rng.integers(db.graph.n), rng)
-            p1 = random_posture(db, rng.integers(db.graph.n), rng)
+        routes = db.graph.routable_pairs()
+        for c0, c1 in routes[rng.integers(len(routes), size=max(1, params.pairs // 10))]:
+            p0, p1 = random_posture(db, c0, rng), random_posture(db, c1, rng)
             out, events = idle_between(db, p0, p1, int(round(params.between_s * db.fps)) + 1, rng)
             starts.append(p0), ends.append(p1), fit_s.append(out[0]), fit_e.append(out[-1])
             cuts = np.array([e.start for e in events] + [e.stop for e in events])

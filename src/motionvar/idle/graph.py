@@ -64,6 +64,16 @@ class CategoryGraph:
         unreachable), along edges with P > 0."""
         return shortest_path((self.probabilities > 0).astype(float), directed=True, unweighted=True)
 
+    def routable_pairs(self) -> np.ndarray:
+        """(m, 2) (start, end) category pairs that :meth:`shortest_route` can join: at
+        least one transition out of start, then a path to end (a subject whose recordings
+        never go from one category to another has no such path)."""
+        adj = self.probabilities > 0
+        hops = self.hops()
+        reach = np.array([[np.isfinite(hops[np.flatnonzero(adj[c]), e]).any() for e in range(self.n)]
+                          for c in range(self.n)])
+        return np.argwhere(reach)
+
     def shortest_route(self, start: int, end: int, rng: np.random.Generator) -> list[int]:
         """Categories on a shortest path from ``start`` to ``end`` (both included); the
         shortest cycle when ``start == end`` (Sec. 7.1). Ties are broken at random."""
