@@ -185,7 +185,9 @@ class FunctionalMotions:
         return [Motion(skeleton=skeleton, root_pos=r, rotations=q, fps=fps) for r, q in zip(root, quats)]
 
 
-def bspline_fit_rmse(motions: Sequence[Motion], n_basis: int | Sequence[int], degree: int = 3) -> np.ndarray:
+def bspline_fit_rmse(
+    motions: Sequence[Motion], n_basis: int | Sequence[int], degree: int = 3
+) -> float | np.ndarray:
     """Joint-space RMSE (cm) between each clip's frames and its B-spline representation
     evaluated at the same frames (Fig. 3.9): sqrt of the mean squared joint distance over
     clips, frames and joints; one value per entry of ``n_basis`` (a float for an int)."""

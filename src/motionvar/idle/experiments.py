@@ -209,12 +209,12 @@ def repetition(
         window = int(round(params.window_s * fps / step))
         stride = max(1, int(round(params.stride_s * fps / step)))
         for source, x in seqs.items():
-            x = x[::step, :P]
+            y = x[::step, :P]
             # a recording too short for two windows has nothing to repeat: left out (windows 0)
-            best = window_best_match(x, window, stride) if len(x) >= 2 * window else np.empty(0)
+            best = window_best_match(y, window, stride) if len(y) >= 2 * window else np.empty(0)
             pooled[source].append(best)
             rows.append({
-                "subject": s, "source": source, "seconds": len(x) * step / fps, "windows": len(best),
+                "subject": s, "source": source, "seconds": len(x) / fps, "windows": len(best),
                 "median_best_ncc": float(np.median(best)) if len(best) else np.nan,
                 "max_best_ncc": float(best.max()) if len(best) else np.nan,
             })

@@ -68,11 +68,9 @@ class CategoryGraph:
         """(m, 2) (start, end) category pairs that :meth:`shortest_route` can join: at
         least one transition out of start, then a path to end (a subject whose recordings
         never go from one category to another has no such path)."""
-        adj = self.probabilities > 0
-        hops = self.hops()
-        reach = np.array([[np.isfinite(hops[np.flatnonzero(adj[c]), e]).any() for e in range(self.n)]
-                          for c in range(self.n)])
-        return np.argwhere(reach)
+        first_step = (self.probabilities > 0).astype(int)
+        then_reach = np.isfinite(self.hops()).astype(int)
+        return np.argwhere(first_step @ then_reach > 0)
 
     def shortest_route(self, start: int, end: int, rng: np.random.Generator) -> list[int]:
         """Categories on a shortest path from ``start`` to ``end`` (both included); the
