@@ -31,14 +31,13 @@ include: "workflow/rules/data.smk"
 include: "workflow/rules/prep.smk"
 
 
-# One rule file per paper stage; each is included when it exists, so a stage can be
-# added without editing this file.
-for _stage in PAPER_RULE_FILES:
-    if os.path.exists(os.path.join(workflow.basedir, "workflow/rules", _stage)):
-
-        include: f"workflow/rules/{_stage}"
-
-
+# One rule file per paper (Du 2022 in three, one per chapter), each included by name: a
+# renamed or missing file stops the run instead of silently dropping a paper.
+include: "workflow/rules/du2022_fda.smk"
+include: "workflow/rules/du2022_graph.smk"
+include: "workflow/rules/du2022_style.smk"
+include: "workflow/rules/ma2010.smk"
+include: "workflow/rules/egges2004.smk"
 include: "workflow/rules/report.smk"
 
 

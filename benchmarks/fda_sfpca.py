@@ -1,4 +1,4 @@
-"""Benchmark of Du 2022 ch. 3 functional PCA (motionvar.fda), printed as ratios against
+"""Benchmark of Du 2022 ch. 3 functional PCA (motionvar.du2022.fda), printed as ratios against
 baselines measured in the same run:
 
 1. SFPCA fit (Eq. 3.8) with torch-autograd gradients vs scipy's finite differences (the
@@ -26,7 +26,7 @@ import torch
 
 from motionvar.core import Motion, cmu_skeleton
 from motionvar.core.quaternions import quat_about_axis
-from motionvar.fda import FPCA, SFPCA, FunctionalMotions
+from motionvar.du2022.fda import FPCA, SFPCA, FunctionalMotions
 
 
 def random_clips(n: int, seed: int = 0, frames=(50, 70)) -> list[Motion]:

@@ -19,9 +19,9 @@ import time
 import numpy as np
 
 from motionvar.core import cmu_joint_map
-from motionvar.graph import KeyFramePositionIndex, MotionPrimitive, Objective, PrimitiveOptions, SpacePartitioningTree
-from motionvar.graph import brute_force, random_constraints
-from motionvar.graph.dense import dense_pick_clips
+from motionvar.du2022.graph import KeyFramePositionIndex, MotionPrimitive, Objective, PrimitiveOptions, SpacePartitioningTree
+from motionvar.du2022.graph import brute_force, random_constraints
+from motionvar.du2022.graph.dense import dense_pick_clips
 
 
 def main() -> None:

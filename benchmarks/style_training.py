@@ -1,4 +1,4 @@
-"""Benchmark of Du 2022 ch. 5 (motionvar.style) on 2 CPU threads, printed as times and as
+"""Benchmark of Du 2022 ch. 5 (motionvar.du2022.style) on 2 CPU threads, printed as times and as
 ratios against baselines measured in the same run:
 
 1. Training seconds per epoch of each model at the full config's sizes: the conv
@@ -28,7 +28,7 @@ import numpy as np
 import torch
 
 from motionvar.core import cmu_joint_map, cmu_skeleton
-from motionvar.style import (
+from motionvar.du2022.style import (
     FeatureScaler, FeatureSpace, TrainConfig, features_to_positions, gram, gram_distance, gram_distance_maps,
     sample_features, style_joints, train_autoencoder, train_vae,
 )
@@ -99,7 +99,7 @@ def main() -> None:
     print(f"\n4. autoencoder epoch, depool-then-conv (Holden) / conv-then-depool (Eq. 5.2): "
           f"{ae_holden / ae_faithful:.2f}x ({ae_holden:.2f} s vs {ae_faithful:.2f} s)")
 
-    from motionvar.style import MotionVAE
+    from motionvar.du2022.style import MotionVAE
 
     vae = MotionVAE(256 * (T // 2)).eval()
     n = args.samples

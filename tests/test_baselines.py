@@ -3,10 +3,11 @@
 import numpy as np
 import pytest
 
-from motionvar.baselines.dbn import LauDBN
-from motionvar.baselines.gplvm import helix_trajectory
-from motionvar.baselines.perlin import add_rotation_noise, perlin_noise
-from motionvar.baselines.rbf import RBFInterpolation, cubic_bspline
+from motionvar.ma2010.baselines.dbn import LauDBN
+from motionvar.ma2010.baselines.gplvm import helix_trajectory
+from motionvar.core.noise import perlin_noise
+from motionvar.ma2010.baselines.perlin import add_rotation_noise
+from motionvar.ma2010.baselines.rbf import RBFInterpolation, cubic_bspline
 
 
 def test_perlin_noise_is_seeded_bounded_and_smooth():

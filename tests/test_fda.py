@@ -9,7 +9,7 @@ from scipy.integrate import simpson
 
 from motionvar.core import Motion, Skeleton
 from motionvar.core.quaternions import qmul, quat_about_axis
-from motionvar.fda import (
+from motionvar.du2022.fda import (
     FPCA,
     SFPCA,
     BayesianGPLVM,

@@ -11,14 +11,14 @@ import pytest
 from graph_toy import toy_clips
 
 from motionvar.core import cmu_joint_map
-from motionvar.graph import (
+from motionvar.du2022.graph import (
     Constraint, KeyFramePositionIndex, MorphableGraph, MotionPrimitive, Objective, Path2D, PrimitiveOptions,
     SpacePartitioningTree, WalkSettings, brute_force, concatenate_steps, follow_path, optimize_map, place_motion,
     random_constraints, random_search, select_gmm,
 )
-from motionvar.graph.evaluation import SearchSettings, coverage, search_comparison, summarize_search
-from motionvar.graph.kinematics import ancestors, chain_fk
-from motionvar.graph.morphable_graph import _to_local
+from motionvar.du2022.graph.evaluation import SearchSettings, coverage, search_comparison, summarize_search
+from motionvar.du2022.graph.kinematics import ancestors, chain_fk
+from motionvar.du2022.graph.morphable_graph import _to_local
 
 OPT = PrimitiveOptions(n_basis=8, n_components=5, gmm_components=(1, 3), sfpca_max_iter=0)
 
@@ -237,7 +237,7 @@ def test_search_comparison_table(prim, joints):
 
 
 def test_dense_pick_clips_are_aligned_pick_reaches():
-    from motionvar.graph.dense import dense_pick_clips
+    from motionvar.du2022.graph.dense import dense_pick_clips
 
     clips, meta = dense_pick_clips(1, 0, 2, cmu_joint_map())
     assert len(clips) == 2 and (meta["primitive"] == "pick_reach").all() and (meta["variant"] == "dense").all()
@@ -247,7 +247,7 @@ def test_dense_pick_clips_are_aligned_pick_reaches():
 
 
 def test_fig4_12_verdicts_follow_the_numbers():
-    from motionvar.graph.verdicts import compactness_claim, fig4_12_claims
+    from motionvar.du2022.graph.verdicts import compactness_claim, fig4_12_claims
 
     rows = []
     for kind in ("position", "orientation", "pose"):

@@ -9,7 +9,7 @@ import pytest
 from graph_toy import toy_clips
 from test_workflow_scripts import FakeSnakemake, Named, script
 
-from motionvar.graph import MotionPrimitive, PrimitiveOptions
+from motionvar.du2022.graph import MotionPrimitive, PrimitiveOptions
 from motionvar.io import save_dataset
 
 GRAPH_OPTIONS = {

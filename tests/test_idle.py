@@ -7,14 +7,14 @@ import pytest
 from idle_toy import toy_recording
 from motionvar.core import Motion, cmu_joint_map, cmu_skeleton
 from motionvar.core.quaternions import qangle, qidentity, quat_about_axis
-from motionvar.idle import (
+from motionvar.egges2004 import (
     CategoryGraph, IdleSettings, PosturePCA, add_variations, analyse_recording, blend_motions,
     build_database, extrema_pairs, find_extrema, fit_anim, fit_anim_part, fit_variation_model,
     generate_idle, idle_between, joint_mask, posture_distance, static_segments, synthesize_balance,
 )
-from motionvar.idle.categories import frame_labels, parse_postures, segment_agreement
-from motionvar.idle.fitting import best_fitting_animation
-from motionvar.idle.pca import continuous_rotvecs
+from motionvar.egges2004.categories import frame_labels, parse_postures, segment_agreement
+from motionvar.egges2004.fitting import best_fitting_animation
+from motionvar.egges2004.pca import continuous_rotvecs
 
 SEQ = ["left", "both", "right", "both", "left", "right", "left"]
 RESTS = [4, 3, 5, 3, 6, 4, 3]
@@ -254,7 +254,7 @@ def test_generated_idle_is_a_motion_with_the_subjects_postures(toy):
     recs, pca, _, db = toy
     m = generate_idle(db, pca, recs[0][0].skeleton, 20.0, np.random.default_rng(0))
     assert m.n_frames == 601 and m.fps == 30.0
-    from motionvar.idle import support_ratio
+    from motionvar.egges2004 import support_ratio
 
     lam = support_ratio(m, cmu_joint_map())
     assert lam.min() < 0.42 and lam.max() > 0.58
@@ -288,7 +288,7 @@ def test_blend_with_masks_and_add_variations(toy):
 
 
 def test_window_features_sets():
-    from motionvar.idle.evaluation import window_features
+    from motionvar.egges2004.evaluation import window_features
 
     rng = np.random.default_rng(0)
     pcs, lam = rng.normal(size=(1200, 12)), rng.uniform(0.3, 0.7, 1200)
@@ -303,8 +303,8 @@ def test_window_features_sets():
 
 
 def test_window_best_match_sees_a_loop():
-    from motionvar.idle.baselines import loop_frames
-    from motionvar.idle.evaluation import window_best_match
+    from motionvar.egges2004.baselines import loop_frames
+    from motionvar.egges2004.evaluation import window_best_match
 
     rng = np.random.default_rng(0)
     clip = np.cumsum(rng.normal(size=(130, 3)), axis=0)
@@ -316,7 +316,7 @@ def test_window_best_match_sees_a_loop():
 
 
 def test_junction_steps():
-    from motionvar.idle.evaluation import all_steps, junction_steps
+    from motionvar.egges2004.evaluation import all_steps, junction_steps
 
     x = np.concatenate([np.zeros(5), np.arange(1, 6) * 2.0])[:, None]
     step, accel = junction_steps(x, np.array([4, 0, 9]), np.ones(1))
@@ -325,7 +325,7 @@ def test_junction_steps():
 
 
 def test_idle_baselines():
-    from motionvar.idle.baselines import loop_frames, perlin_pcs
+    from motionvar.egges2004.baselines import loop_frames, perlin_pcs
 
     assert loop_frames(np.arange(3), 7).tolist() == [0, 1, 2, 0, 1, 2, 0]
     base, sds = np.arange(6.0), np.array([0.5, 0.1])
@@ -345,7 +345,7 @@ def test_figures_draw(toy):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    from motionvar.idle.figures import plot_category_graph, plot_fitted_animation, plot_pc_extrema
+    from motionvar.egges2004.figures import plot_category_graph, plot_fitted_animation, plot_pc_extrema
 
     _, _, _, db = toy
     fig, axes = plt.subplots(1, 3)

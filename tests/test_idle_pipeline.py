@@ -14,11 +14,11 @@ import yaml
 
 from idle_toy import toy_recording
 from motionvar.core import cmu_joint_map
-from motionvar.idle import IdleSettings
-from motionvar.idle.experiments import (
+from motionvar.egges2004 import IdleSettings
+from motionvar.egges2004.experiments import (
     FittingParams, IdentificationParams, RepetitionParams, SpeedParams, fitting, identification, repetition, speed,
 )
-from motionvar.idle.pipeline import (
+from motionvar.egges2004.pipeline import (
     category_check, fit_idle_model, idle_clips, load_model, model_recordings, save_model, split_clips,
 )
 from motionvar.io import load_dataset, save_dataset

@@ -1,4 +1,4 @@
-"""Du 2022 ch. 5 (motionvar.style): features, networks, losses, training, diversity."""
+"""Du 2022 ch. 5 (motionvar.du2022.style): features, networks, losses, training, diversity."""
 
 import numpy as np
 import pandas as pd
@@ -7,7 +7,7 @@ import torch
 
 from motionvar.core import JointMap, Motion, cmu_joint_map, cmu_skeleton
 from motionvar.core import quaternions as Q
-from motionvar.style import (
+from motionvar.du2022.style import (
     ConvAutoencoder, FeatureScaler, FeatureSpace, MotionVAE, TrainConfig, content_loss, diagonal_minima,
     diversity, features_to_positions, gram, gram_distance, gram_distance_maps, heading_angles, kl_loss, load_vae, motion_features,
     motions_features, positions_to_features, sample_features, save_vae, sliding_windows, step_lengths,
@@ -248,7 +248,7 @@ def test_vae_and_cvae_training(tiny):
     cvae, chist = train_vae(maps, cfg, n_samples=3, style_maps=example, alpha=200.0, init=vae,
                             hidden=(64, 32, 16), latent=4)
     assert chist["style"].iloc[-1] < chist["style"].iloc[0]
-    from motionvar.style import active_units
+    from motionvar.du2022.style import active_units
 
     assert 0 <= active_units(vae, maps) <= 4
     d_vae = float(style_distance(space.reencode(vae.sample(200, torch.Generator().manual_seed(1)).reshape(200, 16, 30)), example))
@@ -333,7 +333,7 @@ def prim_dataset(tmp_path_factory):
 
 
 def test_primitive_features_and_style_example(prim_dataset, layout):
-    from motionvar.style.data import dataset_layout, primitive_features, select_style_example, training_windows
+    from motionvar.du2022.style.data import dataset_layout, primitive_features, select_style_example, training_windows
 
     assert dataset_layout(prim_dataset, cmu_joint_map()).names == layout.names
     rows, feats = primitive_features(prim_dataset, layout, "walk_leftStance", "neutral", 60)
@@ -344,7 +344,7 @@ def test_primitive_features_and_style_example(prim_dataset, layout):
 
 
 def test_primitive_selection_errors_name_what_is_missing(prim_dataset):
-    from motionvar.style.data import primitive_mask, select_style_example
+    from motionvar.du2022.style.data import primitive_mask, select_style_example
 
     with pytest.raises(ValueError, match="no clips of primitive 'walk_leftStance' with style 'old'.*primitives"):
         primitive_mask(prim_dataset.metadata, "walk_leftStance", "old")

@@ -12,8 +12,6 @@ from snakemake.utils import validate
 
 ENV = "../envs/motionvar.yaml"
 
-# Rule files of the paper stages, included by the Snakefile when present.
-PAPER_RULE_FILES = ["fda.smk", "graph.smk", "style.smk", "ma2010.smk", "idle.smk"]
 
 PAPER_CATEGORY = {
     "data": "Data",
@@ -58,6 +56,20 @@ def validate_config(schema_path):
             f"Invalid configuration: run_datasets names {missing}, not in datasets "
             f"({', '.join(config['datasets'])})"
         )
+
+
+def config_params(section, keys):
+    """The keys of ``config[section]`` a rule reads, for its ``params:`` (so that editing
+    another key of the section does not rerun it). A dotted key ("search.beam") reaches
+    into a subsection and is returned under its last part."""
+    part = config[section]
+    out = {}
+    for key in keys:
+        value = part
+        for k in key.split("."):
+            value = value[k]
+        out[key.split(".")[-1]] = value
+    return out
 
 
 def run_datasets():

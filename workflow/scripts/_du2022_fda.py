@@ -56,7 +56,7 @@ def n_basis_of(path, primitive: str) -> int:
 
 def functional(snakemake, primitive: str):
     """(FunctionalMotions, metadata) of one primitive with its chosen number of basis functions."""
-    from motionvar.fda import FunctionalMotions
+    from motionvar.du2022.fda import FunctionalMotions
 
     motions, meta = primitive_motions(canonical(snakemake), primitive)
     return FunctionalMotions.from_motions(motions, n_basis_of(snakemake.input.n_basis, primitive)), meta
@@ -64,7 +64,7 @@ def functional(snakemake, primitive: str):
 
 def sfpca(options, fd, n_components: int):
     """An unfitted SFPCA with the settings of config fda.sfpca for the clips ``fd``."""
-    from motionvar.fda import SFPCA
+    from motionvar.du2022.fda import SFPCA
 
     sf = options["sfpca"]
     per_basis = sf["eval_frames_per_basis"]

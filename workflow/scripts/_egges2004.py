@@ -14,14 +14,14 @@ def joint_map(snakemake):
 
 
 def model(snakemake):
-    from motionvar.idle.pipeline import load_model
+    from motionvar.egges2004.pipeline import load_model
 
     return load_model(snakemake.input.model)
 
 
 def recordings(snakemake, idle_model):
     """(training, held-out) analysed recordings per subject, from the prep dataset."""
-    from motionvar.idle.pipeline import model_recordings
+    from motionvar.egges2004.pipeline import model_recordings
     from motionvar.io import load_dataset
 
     folder = Path(snakemake.input.clips).parent

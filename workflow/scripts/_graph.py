@@ -15,7 +15,7 @@ def joint_map(snakemake):
 
 
 def primitive_options(options: dict):
-    from motionvar.graph import PrimitiveOptions
+    from motionvar.du2022.graph import PrimitiveOptions
 
     m = options["model"]
     return PrimitiveOptions(
@@ -48,7 +48,7 @@ def semantic_index(jm, skeleton, semantic: str, key: str) -> int:
 
 
 def load_model(path: str):
-    from motionvar.graph import MotionPrimitive
+    from motionvar.du2022.graph import MotionPrimitive
 
     return MotionPrimitive.load(path)
 

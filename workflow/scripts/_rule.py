@@ -11,6 +11,7 @@ Errors that mean bad input (ValueError and its subclasses such as DatasetError,
 OSError, KeyError) print ``ERROR rule <name>: <message>`` on the console and in the
 log (with the traceback in the log only) and exit with status 1; Snakemake then removes
 the rule's outputs. Any other exception is a bug and propagates with its traceback.
+It also selects matplotlib's file backend (Agg) for the script.
 """
 
 from __future__ import annotations
@@ -24,6 +25,9 @@ BAD_INPUT = (ValueError, OSError, KeyError)
 
 
 def run(snakemake, main) -> None:
+    import matplotlib
+
+    matplotlib.use("Agg")  # figures are files; the library never chooses a backend
     with open(snakemake.log[0], "w") as log:
         logging.basicConfig(
             level=logging.INFO, format="%(asctime)s %(levelname)s %(message)s",

@@ -15,8 +15,8 @@ def load_inputs(snakemake):
     from motionvar.core import cmu_joint_map
     from motionvar.io import load_dataset
     from motionvar.io.joint_map_file import load_joint_map
-    from motionvar.style import FeatureSpace
-    from motionvar.style.data import dataset_layout
+    from motionvar.du2022.style import FeatureSpace
+    from motionvar.du2022.style.data import dataset_layout
 
     torch.set_num_threads(snakemake.threads)
     path = snakemake.params.joint_map

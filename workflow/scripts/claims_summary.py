@@ -5,7 +5,7 @@ verdicts coloured (results/{dataset}/claims_summary.html)."""
 def main(snakemake) -> None:
     from pathlib import Path
 
-    from motionvar.summary import claims_html, read_claims_table
+    from motionvar.report.summary import claims_html, read_claims_table
 
     table = read_claims_table(snakemake.input.claims)
     html = claims_html(table, paper_titles=snakemake.params.categories,

@@ -9,7 +9,7 @@ def main(snakemake) -> None:
     import pandas as pd
 
     from _du2022_fda import canonical, primitive_motions
-    from motionvar.fda import bspline_fit_rmse, choose_n_basis
+    from motionvar.du2022.fda import bspline_fit_rmse, choose_n_basis
 
     o = snakemake.params.options["basis"]
     dataset = canonical(snakemake)

@@ -20,7 +20,7 @@ def curves(method, fd, reference, dims, latent_dim, o):
     import time
 
     from _du2022_fda import sfpca
-    from motionvar.fda import FPCA, FunctionalGPLVM, NormalizedFPCA, feature_error, observation_error
+    from motionvar.du2022.fda import FPCA, FunctionalGPLVM, NormalizedFPCA, feature_error, observation_error
 
     def errors(coefs):
         return feature_error(fd, coefs), observation_error(fd, coefs, reference=reference)

@@ -15,7 +15,7 @@ def main(snakemake) -> None:
 
     from _du2022_fda import METHOD_LABELS, save
     from motionvar.claims import Claim, verdict_from_fraction, write_claims
-    from motionvar.fda import latent_separation
+    from motionvar.du2022.fda import latent_separation
 
     o = snakemake.params.options
     methods = snakemake.params.methods

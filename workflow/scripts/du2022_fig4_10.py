@@ -18,7 +18,7 @@ def main(snakemake) -> None:
 
     from _graph import joint_map, load_model, save, semantic_index
     from motionvar.claims import Claim, verdict_from_fraction, verdict_threshold
-    from motionvar.graph import (
+    from motionvar.du2022.graph import (
         Constraint, MorphableGraph, Path2D, SpacePartitioningTree, WalkSettings, concatenate_steps, follow_path,
         synthesize_step,
     )

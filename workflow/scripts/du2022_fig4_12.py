@@ -18,8 +18,8 @@ def main(snakemake) -> None:
 
     from _graph import save
     from motionvar.claims import write_claims
-    from motionvar.graph.evaluation import CONSTRAINT_KINDS, METHODS, summarize_search
-    from motionvar.graph.verdicts import fig4_12_claims
+    from motionvar.du2022.graph.evaluation import CONSTRAINT_KINDS, METHODS, summarize_search
+    from motionvar.du2022.graph.verdicts import fig4_12_claims
 
     queries = pd.concat([pd.read_csv(p) for p in snakemake.input.queries], ignore_index=True)
     summary = summarize_search(queries).drop(columns="mean_time_ms")

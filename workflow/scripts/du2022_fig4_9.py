@@ -18,8 +18,8 @@ def main(snakemake) -> None:
 
     from _graph import joint_map, load_model, primitive_clips, save, semantic_index
     from motionvar.claims import write_claims
-    from motionvar.graph.evaluation import coverage
-    from motionvar.graph.verdicts import fig4_9_claim
+    from motionvar.du2022.graph.evaluation import coverage
+    from motionvar.du2022.graph.verdicts import fig4_9_claim
 
     o = snakemake.params.options
     d = o["diversity"]

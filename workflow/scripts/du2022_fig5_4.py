@@ -12,9 +12,9 @@ def main(snakemake) -> None:
 
     from motionvar.claims import write_claims
     from motionvar.plots import render_frames, write_gif
-    from motionvar.style import diversity, features_to_positions, load_vae, sample_features
-    from motionvar.style.data import example_features, primitive_mask
-    from motionvar.style.figures import samples_figure
+    from motionvar.du2022.style import diversity, features_to_positions, load_vae, sample_features
+    from motionvar.du2022.style.data import example_features, primitive_mask
+    from motionvar.du2022.style.figures import samples_figure
     from _style import load_inputs
 
     cfg, dataset, layout, space = load_inputs(snakemake)

@@ -12,8 +12,8 @@ def main(snakemake) -> None:
 
     from _graph import save
     from motionvar.claims import write_claims
-    from motionvar.graph.evaluation import motion_bytes
-    from motionvar.graph.verdicts import compactness_claim
+    from motionvar.du2022.graph.evaluation import motion_bytes
+    from motionvar.du2022.graph.verdicts import compactness_claim
 
     models = [p for p in snakemake.input.models if p.endswith(".npz")]
     meta = pd.read_csv(snakemake.input.metadata)

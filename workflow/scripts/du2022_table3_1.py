@@ -43,7 +43,7 @@ def main(snakemake) -> None:
 
     from _du2022_fda import canonical, plain_log_ticks, primitive_motions, save, setup_threads, sfpca
     from motionvar.claims import write_claims
-    from motionvar.fda import FPCA, FunctionalMotions, WeightedFPCA, observation_error
+    from motionvar.du2022.fda import FPCA, FunctionalMotions, WeightedFPCA, observation_error
 
     setup_threads(snakemake)
     o = snakemake.params.options

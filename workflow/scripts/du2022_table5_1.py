@@ -8,10 +8,10 @@ def main(snakemake) -> None:
     import matplotlib.pyplot as plt
 
     from motionvar.claims import Claim, verdict_from_fraction, write_claims
-    from motionvar.style import diagonal_minima, load_vae, style_distance_matrix
-    from motionvar.style.data import example_features, primitive_features
-    from motionvar.style.figures import distance_heatmap
-    from motionvar.style.published import table5_1
+    from motionvar.du2022.style import diagonal_minima, load_vae, style_distance_matrix
+    from motionvar.du2022.style.data import example_features, primitive_features
+    from motionvar.du2022.style.figures import distance_heatmap
+    from motionvar.du2022.style.published import table5_1
     from _style import load_inputs
 
     cfg, dataset, layout, space = load_inputs(snakemake)

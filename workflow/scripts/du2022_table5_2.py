@@ -10,10 +10,10 @@ def main(snakemake) -> None:
     import pandas as pd
 
     from motionvar.claims import Claim, verdict_from_fraction, write_claims
-    from motionvar.style import active_units, diversity, load_vae, sample_features
-    from motionvar.style.data import primitive_features
-    from motionvar.style.figures import diversity_figure
-    from motionvar.style.published import diversity_tables
+    from motionvar.du2022.style import active_units, diversity, load_vae, sample_features
+    from motionvar.du2022.style.data import primitive_features
+    from motionvar.du2022.style.figures import diversity_figure
+    from motionvar.du2022.style.published import diversity_tables
     from _style import load_inputs
 
     cfg, dataset, layout, space = load_inputs(snakemake)

@@ -6,8 +6,8 @@ def main(snakemake) -> None:
     import logging
 
     from _egges2004 import figure_subjects, model
-    from motionvar.idle import generate_idle
-    from motionvar.idle.experiments import subject_rng
+    from motionvar.egges2004 import generate_idle
+    from motionvar.egges2004.experiments import subject_rng
     from motionvar.plots import animate_motions
 
     o = snakemake.params.options

@@ -11,9 +11,9 @@ def main(snakemake) -> None:
 
     from _egges2004 import model, save
     from motionvar.claims import write_claims
-    from motionvar.idle import fit_anim_part, synthesize_balance
-    from motionvar.idle.experiments import FittingParams, fitting, subject_rng
-    from motionvar.idle.figures import plot_fitted_animation
+    from motionvar.egges2004 import fit_anim_part, synthesize_balance
+    from motionvar.egges2004.experiments import FittingParams, fitting, subject_rng
+    from motionvar.egges2004.figures import plot_fitted_animation
 
     o = snakemake.params.options
     m = model(snakemake)

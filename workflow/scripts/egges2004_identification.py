@@ -12,8 +12,8 @@ def main(snakemake) -> None:
 
     from _egges2004 import joint_map, model, recordings, save
     from motionvar.claims import write_claims
-    from motionvar.idle.experiments import IdentificationParams, identification
-    from motionvar.idle.figures import plot_identification
+    from motionvar.egges2004.experiments import IdentificationParams, identification
+    from motionvar.egges2004.figures import plot_identification
 
     o = snakemake.params.options
     m = model(snakemake)

@@ -13,9 +13,9 @@ def main(snakemake) -> None:
     import matplotlib.pyplot as plt
 
     from _egges2004 import figure_subjects, joint_map, save
-    from motionvar.idle import IdleSettings
-    from motionvar.idle.figures import plot_category_graph
-    from motionvar.idle.pipeline import category_check, fit_idle_model, idle_clips, save_model, split_clips
+    from motionvar.egges2004 import IdleSettings
+    from motionvar.egges2004.figures import plot_category_graph
+    from motionvar.egges2004.pipeline import category_check, fit_idle_model, idle_clips, save_model, split_clips
     from motionvar.io import load_dataset
 
     o = snakemake.params.options

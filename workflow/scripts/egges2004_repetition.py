@@ -12,9 +12,9 @@ def main(snakemake) -> None:
 
     from _egges2004 import figure_subjects, model, recordings, save
     from motionvar.claims import write_claims
-    from motionvar.idle import find_extrema
-    from motionvar.idle.experiments import RepetitionParams, repetition
-    from motionvar.idle.figures import plot_pc_extrema, plot_repetition
+    from motionvar.egges2004 import find_extrema
+    from motionvar.egges2004.experiments import RepetitionParams, repetition
+    from motionvar.egges2004.figures import plot_pc_extrema, plot_repetition
 
     o = snakemake.params.options
     m = model(snakemake)

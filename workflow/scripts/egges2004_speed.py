@@ -10,8 +10,8 @@ def main(snakemake) -> None:
 
     from _egges2004 import model, save
     from motionvar.claims import write_claims
-    from motionvar.idle.experiments import SpeedParams, speed
-    from motionvar.idle.figures import plot_speed
+    from motionvar.egges2004.experiments import SpeedParams, speed
+    from motionvar.egges2004.figures import plot_speed
 
     o = snakemake.params.options
     table, claim = speed(model(snakemake), SpeedParams(**o["speed"]), o["seed"])

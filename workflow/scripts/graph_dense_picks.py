@@ -7,7 +7,7 @@ def main(snakemake) -> None:
     from pathlib import Path
 
     from _graph import joint_map
-    from motionvar.graph.dense import dense_pick_clips
+    from motionvar.du2022.graph.dense import dense_pick_clips
     from motionvar.io import save_dataset
     from motionvar.prep import PrepOptions
 

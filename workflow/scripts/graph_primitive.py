@@ -7,7 +7,7 @@ def main(snakemake) -> None:
     from pathlib import Path
 
     from _graph import primitive_clips, primitive_options
-    from motionvar.graph import MotionPrimitive
+    from motionvar.du2022.graph import MotionPrimitive
 
     name = snakemake.wildcards.primitive
     # the dense-grid picks (graph_dense_picks) are pick_reach clips modelled as pick_reach_dense

@@ -7,7 +7,7 @@ def main(snakemake) -> None:
     import logging
 
     from _graph import joint_map, load_model, semantic_index
-    from motionvar.graph.evaluation import SearchSettings, search_comparison
+    from motionvar.du2022.graph.evaluation import SearchSettings, search_comparison
 
     o = snakemake.params.options
     s = o["search"]

@@ -39,7 +39,7 @@ def main(snakemake) -> None:
     import pandas as pd
 
     from _ma2010 import PAPER, PROTOCOL, PUBLISHED_MAX_STRIDE_ERROR_CM, load_walks, model
-    from motionvar.baselines.kriging import mk05_kriging, rose98_rbf
+    from motionvar.ma2010.baselines.mukai_kuriyama import mk05_kriging, rose98_rbf
     from motionvar.claims import Claim, verdict_from_bool, verdict_from_fraction, write_claims
     from motionvar.ma2010.correspondence import retime
     from motionvar.ma2010.evaluation import (

@@ -16,9 +16,9 @@ def sequences(data, five, o, rng_seed):
     import numpy as np
 
     from _ma2010 import structure
-    from motionvar.baselines.dbn import LauDBN
-    from motionvar.fda.gplvm import BayesianGPLVM
-    from motionvar.baselines.kriging import mk05_kriging, rose98_rbf
+    from motionvar.ma2010.baselines.dbn import LauDBN
+    from motionvar.models.bayesian_gplvm import BayesianGPLVM
+    from motionvar.ma2010.baselines.mukai_kuriyama import mk05_kriging, rose98_rbf
     from motionvar.ma2010 import StyleVariationModel
     from motionvar.ma2010.comparison import (
         clips_for_duration, dbn_sequence, example_pose_sequences, gplvm_sequence, interpolation_sequence,

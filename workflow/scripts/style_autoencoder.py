@@ -7,8 +7,8 @@ def main(snakemake) -> None:
 
     import numpy as np
 
-    from motionvar.style import FeatureScaler, FeatureSpace, TrainConfig, train_autoencoder
-    from motionvar.style.data import training_windows
+    from motionvar.du2022.style import FeatureScaler, FeatureSpace, TrainConfig, train_autoencoder
+    from motionvar.du2022.style.data import training_windows
     from _style import load_inputs
 
     cfg, dataset, layout, space = load_inputs(snakemake)

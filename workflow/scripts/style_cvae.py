@@ -6,8 +6,8 @@ Eq. 5.10 (weight alpha); starts from the neutral VAE when cvae.init_from_neutral
 def main(snakemake) -> None:
     import logging
 
-    from motionvar.style import TrainConfig, load_vae, save_vae, train_vae
-    from motionvar.style.data import example_features, primitive_features, select_style_example
+    from motionvar.du2022.style import TrainConfig, load_vae, save_vae, train_vae
+    from motionvar.du2022.style.data import example_features, primitive_features, select_style_example
     from _style import load_inputs
 
     cfg, dataset, layout, space = load_inputs(snakemake)

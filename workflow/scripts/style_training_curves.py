@@ -8,7 +8,7 @@ def main(snakemake) -> None:
     import matplotlib.pyplot as plt
     import pandas as pd
 
-    from motionvar.style.figures import training_curves
+    from motionvar.du2022.style.figures import training_curves
 
     def name(f):
         p = Path(f)

@@ -5,8 +5,8 @@ loss Eq. 5.6) in the autoencoder's feature space, trained on its neutral clips."
 def main(snakemake) -> None:
     import logging
 
-    from motionvar.style import TrainConfig, save_vae, train_vae
-    from motionvar.style.data import primitive_features
+    from motionvar.du2022.style import TrainConfig, save_vae, train_vae
+    from motionvar.du2022.style.data import primitive_features
     from _style import load_inputs
 
     cfg, dataset, layout, space = load_inputs(snakemake)

@@ -12,12 +12,12 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..baselines.dbn import LauDBN
-from ..baselines.gplvm import helix_trajectory
-from ..baselines.kriging import StyleClipInterpolation
-from ..baselines.perlin import add_rotation_noise
+from .baselines.dbn import LauDBN
+from .baselines.gplvm import helix_trajectory
+from .baselines.mukai_kuriyama import StyleClipInterpolation
+from .baselines.perlin import add_rotation_noise
 from ..core.motion import Motion
-from ..fda.gplvm import BayesianGPLVM
+from ..models.bayesian_gplvm import BayesianGPLVM
 from ..metrics.discontinuities import count_discontinuities, peak_acceleration
 from ..metrics.foot_skating import foot_skating
 from ..metrics.jerk import mean_jerk

@@ -11,7 +11,7 @@ import numpy as np
 import pandas as pd
 from scipy.spatial import cKDTree
 
-from ..baselines.kriging import StyleClipInterpolation, mk05_kriging, rose98_rbf
+from .baselines.mukai_kuriyama import StyleClipInterpolation, mk05_kriging, rose98_rbf
 from ..core.kinematics import fk
 from .correspondence import retime
 from .examples import normalized_strides

@@ -23,10 +23,6 @@ import re
 from collections.abc import Sequence
 from dataclasses import dataclass
 
-import matplotlib
-
-matplotlib.use("Agg")  # figures are files; never open a window
-
 import matplotlib.pyplot as plt
 import numpy as np
 from matplotlib.axes import Axes

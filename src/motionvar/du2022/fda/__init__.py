@@ -1,0 +1,55 @@
+"""Functional data analysis of motion clips (Du 2022, ch. 3): cubic B-spline functions
+(Eq. 3.1-3.2), FPCA (Eq. 3.3-3.5), normalised FPCA, scaled FPCA (SFPCA, Eq. 3.6-3.8) and
+a Bayesian GPLVM baseline (Fig. 3.10-3.11).
+
+Typical use (one motion primitive, e.g. the aligned walk_leftStance clips)::
+
+    from motionvar.du2022.fda import FunctionalMotions, SFPCA
+
+    fd = FunctionalMotions.from_motions(motions, n_basis=10)   # (N, K, D) coefficients
+    model = SFPCA(n_components=20).fit(fd)                      # weights by L-BFGS-B
+    z = model.transform(fd)                                     # (N, 20) latent scores
+    coefs = model.inverse_transform(z)                          # (N, K, D) back
+    clips = model.to_motions(z, fps=120, skeleton=skeleton)     # back to Motions
+    model.save("walk_leftStance.npz"); model = SFPCA.load("walk_leftStance.npz")
+
+API:
+
+- :class:`BSplineBasis` (n_basis, degree=3): equally spaced clamped knots on [0, 1];
+  ``design``, ``gram`` (int phi_k phi_l), ``gram_sqrt``, ``fit`` (least squares),
+  ``evaluate``. :func:`choose_n_basis`: the cut-off rule for K (Sec. 3.3.3).
+- :class:`FunctionalMotions`: N clips as coefficients (N, K, D) with D = 3 + 4J
+  functions (root translation in cm, then one sign-continuous unit quaternion per joint,
+  joint 0's being the root orientation); per-clip bone offsets for forward kinematics;
+  ``from_motions``, ``values``, ``motion_arrays``, ``positions`` (FK), ``to_motions``,
+  ``subset``, ``with_coefs``. :func:`bspline_fit_rmse`: joint-space RMSE of the fit.
+- :class:`FPCA`, :class:`NormalizedFPCA`, :class:`SFPCA`, :class:`WeightedFPCA` (given
+  weights), sklearn-style: ``fit(fd)``, ``transform(fd or coefs) -> (N, n)``,
+  ``inverse_transform(z) -> (N, K, D)``, ``reconstruct(fd, n_components=None)`` (the
+  eigenfunctions are nested: one fit serves every smaller dimension),
+  ``to_motions(z, fps, skeleton=None)``, ``save(path)``, ``FPCA.load(path)`` (returns the
+  saved class). Fitted attributes end in ``_``: ``mean_``, ``function_weights_``,
+  ``components_``, ``eigenfunctions_``, ``explained_variance_ratio_``, ...; SFPCA adds
+  ``init_``, ``loss_``, ``n_iter_``, ``fit_time_s_``. SFPCA's options: ``gradient``
+  ("autograd" or the thesis' "finite_difference"), ``weight_groups``, ``max_iter``,
+  ``n_eval_frames`` (frames at which its objective runs forward kinematics).
+- :class:`BayesianGPLVM` (arrays) and :class:`FunctionalGPLVM` (functional data): the
+  nonlinear baseline (Titsias & Lawrence 2010, optional discriminative prior).
+- :mod:`.evaluation`: :func:`feature_error`, :func:`observation_error`,
+  :func:`latent_separation` (silhouette, leave-one-out k-NN accuracy).
+"""
+
+from .bspline import BSplineBasis, choose_n_basis, frame_times
+from .evaluation import feature_error, knn_accuracy, latent_separation, observation_error
+from .fpca import FPCA, NormalizedFPCA, WeightedFPCA, functional_std, zscore_weights
+from .functions import FunctionalMotions, FunctionLayout, align_quaternion_signs, bspline_fit_rmse
+from ...models.bayesian_gplvm import BayesianGPLVM
+from .functional_gplvm import FunctionalGPLVM
+from .sfpca import SFPCA, ObservationObjective, TopEigenvectors
+
+__all__ = [
+    "BSplineBasis", "BayesianGPLVM", "FPCA", "FunctionLayout", "FunctionalGPLVM", "FunctionalMotions",
+    "NormalizedFPCA", "ObservationObjective", "SFPCA", "TopEigenvectors", "WeightedFPCA", "align_quaternion_signs",
+    "bspline_fit_rmse", "choose_n_basis", "feature_error", "frame_times", "functional_std", "knn_accuracy",
+    "latent_separation", "observation_error", "zscore_weights",
+]

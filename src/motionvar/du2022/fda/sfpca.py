@@ -1,0 +1,273 @@
+"""Scaled Functional PCA (SFPCA, Du 2022, Sec. 3.3.4, Eq. 3.6-3.8).
+
+SFPCA scales every function of the motion (root translation channels, quaternion
+components) by one weight w_d and runs FPCA on the scaled functions diag(w) Y(t). The
+weights minimise the reconstruction error in observation space, i.e. of the joint
+positions computed by forward kinematics f_k (Eq. 3.8):
+
+    argmin_w (1/N) || f_k(Y(t)) - f_k(diag(w)^-1 V' V'^T diag(w) Y(t)) ||_F^2,
+
+where V' are the leading eigenfunctions of diag(w) Y(t), recomputed at every evaluation.
+As in the thesis the weights are found by L-BFGS-B (scipy), starting from the better of
+the raw (w = 1) and the z-scored (w = 1 / sigma) functions.
+
+Gradients: ``gradient="autograd"`` (default) differentiates the whole objective in torch:
+forward kinematics (:func:`motionvar.core.fk_torch`) and the eigen-decomposition, through
+the projector onto the leading eigenvectors (:class:`TopEigenvectors`, exact when the
+n-th and (n+1)-th eigenvalues differ). ``gradient="finite_difference"`` is the thesis'
+setting: scipy's L-BFGS-B with its own 2-point finite differences of the objective (one
+evaluation per weight per gradient; float64 so that the difference quotients are not
+rounding noise). Both minimise the same objective; ``benchmarks/fda_sfpca.py`` measures them.
+"""
+
+from __future__ import annotations
+
+import time
+
+import numpy as np
+from scipy.optimize import minimize
+
+from .fpca import FPCA, functional_std, register_saved, zscore_weights
+from .functions import FunctionalMotions
+
+
+def _torch():
+    import torch
+
+    return torch
+
+
+class TopEigenvectors:
+    """The ``n`` leading eigenvectors (columns) of a symmetric matrix, differentiable for
+    losses that depend only on the subspace they span (such as the reconstruction V V^T z
+    of Eq. 3.3): the backward pass keeps only the cross terms between kept and dropped
+    eigenvectors, 1 / (lambda_kept - lambda_dropped). Unlike differentiating
+    ``torch.linalg.eigh`` itself it stays finite when dropped eigenvalues repeat (the zero
+    eigenvalues of a rank-deficient data matrix) or kept ones are close."""
+
+    _fn = None
+
+    @classmethod
+    def apply(cls, A, n: int):
+        if cls._fn is None:
+            torch = _torch()
+
+            class _Top(torch.autograd.Function):
+                @staticmethod
+                def forward(ctx, A, n):
+                    evals, evecs = torch.linalg.eigh(A)
+                    ctx.save_for_backward(evals, evecs)
+                    ctx.n = n
+                    return evecs[:, -n:]
+
+                @staticmethod
+                def backward(ctx, grad):
+                    evals, evecs = ctx.saved_tensors
+                    n = ctx.n
+                    if n >= evals.shape[0]:
+                        return torch.zeros_like(evecs), None
+                    kept, dropped = evecs[:, -n:], evecs[:, :-n]
+                    gap = evals[-n:][None, :] - evals[:-n][:, None]
+                    floor = 1e-12 * torch.clamp(evals.abs().max(), min=1e-300)
+                    coupling = (dropped.T @ grad) / torch.clamp(gap, min=floor)
+                    gA = dropped @ coupling @ kept.T
+                    return 0.5 * (gA + gA.T), None
+
+            cls._fn = _Top
+        return cls._fn.apply(A, n)
+
+
+class ObservationObjective:
+    """Eq. 3.8 as a function of the function weights w: the mean squared joint-position
+    error (cm^2, over clips, frames and joints) of the FPCA reconstruction of diag(w) Y(t)
+    with ``n_components`` eigenfunctions.
+
+    Args:
+        X: the clips' functional data.
+        n_components: latent dimension.
+        n_eval_frames: canonical frames at which f_k is evaluated (default ``X.n_frames``).
+        dtype: torch dtype of the forward kinematics (float32 is 2x faster, STACK.md);
+            the eigen-decomposition is always float64.
+    """
+
+    def __init__(self, X: FunctionalMotions, n_components: int, n_eval_frames: int | None = None, dtype=None) -> None:
+        torch = _torch()
+        self.torch = torch
+        self.dtype = dtype or torch.float32
+        self.n_components = int(n_components)
+        T = int(n_eval_frames or X.n_frames)
+        N, K, D = X.coefs.shape
+        # Functions that are the same in every clip (e.g. joints a rig never moves) have a
+        # zero column in the data: their weights change nothing, so the PCA leaves them out
+        # (an exact shortcut) and they are reconstructed as their mean.
+        std = functional_std(X)
+        self.active = torch.as_tensor(np.flatnonzero(std > 1e-12 * max(float(std.max()), 1e-300)))
+        Da = len(self.active)
+        self.shape = (N, K, D, Da)
+        gram_sqrt, gram_isqrt = X.basis.gram_sqrt()
+        mean = X.coefs.mean(axis=0)
+        centred = np.einsum("kl,nld->nkd", gram_sqrt, X.coefs - mean)[:, :, self.active.numpy()]
+        self.centred = torch.as_tensor(centred.reshape(N, K * Da), dtype=torch.float64)
+        # with more clips than active coefficients, diag(w) C0 diag(w) is the (small) scatter
+        # matrix to decompose, and C0 is computed once
+        self.scatter = self.centred.T @ self.centred if N > K * Da else None
+        design = X.basis.design_frames(T)
+        self.eval_matrix = torch.as_tensor(design @ gram_isqrt, dtype=self.dtype)
+        self.mean_values = torch.as_tensor(design @ mean, dtype=self.dtype)
+        self.target = torch.as_tensor(X.positions(n_frames=T), dtype=self.dtype)
+        self.offsets = torch.as_tensor(X.offsets[:, None], dtype=self.dtype)
+        self.parents = np.asarray(X.parents)
+        self.n_joints = X.layout.n_joints
+
+    @property
+    def active_functions(self) -> np.ndarray:
+        """Indices of the functions that vary between clips (the others have no effect)."""
+        return self.active.numpy()
+
+    def loss(self, w):
+        """Torch scalar objective for torch weights ``w`` (D,) (differentiable)."""
+        from ...core.kinematics import fk_torch
+
+        torch = self.torch
+        N, K, D, Da = self.shape
+        wa = w[self.active]
+        w_rep = wa.repeat(K)  # per (k, d) coefficient, flattened k-major like the data
+        z = self.centred * w_rep
+        n = min(self.n_components, min(N, K * Da))
+        if self.scatter is not None:
+            v = TopEigenvectors.apply(self.scatter * torch.outer(w_rep, w_rep), n)
+            z_hat = (z @ v) @ v.T
+        else:  # leading eigenvectors of the smaller Gram matrix
+            u = TopEigenvectors.apply(z @ z.T, n)
+            z_hat = u @ (u.T @ z)
+        c_active = (z_hat / w_rep).reshape(N, K, Da).to(self.dtype)
+        c_hat = torch.zeros((N, K, D), dtype=self.dtype).index_copy(2, self.active, c_active)
+        values = torch.einsum("tk,nkd->ntd", self.eval_matrix, c_hat) + self.mean_values
+        root = values[..., :3]
+        quats = values[..., 3:].reshape(N, values.shape[1], self.n_joints, 4)
+        quats = quats * torch.rsqrt((quats * quats).sum(-1, keepdim=True))
+        pos = fk_torch(quats, root, self.offsets, self.parents)
+        return ((pos - self.target) ** 2).sum(-1).mean()
+
+    def value(self, w: np.ndarray) -> float:
+        with self.torch.no_grad():
+            return float(self.loss(self.torch.as_tensor(w, dtype=self.torch.float64)))
+
+    def value_and_grad(self, w: np.ndarray) -> tuple[float, np.ndarray]:
+        wt = self.torch.as_tensor(w, dtype=self.torch.float64).requires_grad_(True)
+        loss = self.loss(wt)
+        (grad,) = self.torch.autograd.grad(loss, wt)
+        return float(loss.detach()), grad.numpy().astype(float)
+
+
+@register_saved
+class SFPCA(FPCA):
+    """Scaled FPCA (Eq. 3.8), sklearn-style.
+
+    Args:
+        n_components: latent dimension (weights are optimised for this number of
+            eigenfunctions, as in the thesis).
+        weight_groups: ``"function"`` (faithful: one weight per function, D = 3 + 4J) or
+            ``"joint"`` (one weight for the root translation and one per joint quaternion,
+            as DFKI's implementation).
+        gradient: ``"autograd"`` or ``"finite_difference"`` (thesis; see module docstring).
+        max_iter: L-BFGS-B iterations.
+        tol: L-BFGS-B ``ftol`` (relative reduction of the objective).
+        bounds: (low, high) of the weights relative to the initial weights.
+        n_eval_frames: canonical frames for f_k in the objective (default: all).
+        init: ``"best"`` (thesis: the better of raw and z-scored), ``"raw"`` or ``"normalized"``.
+
+    Fitted attributes (besides FPCA's): ``init_`` ("raw" or "normalized"), ``loss_raw_``,
+    ``loss_normalized_``, ``loss_`` (objective at the optimum, cm^2), ``n_iter_``,
+    ``n_evals_``, ``fit_time_s_``, ``converged_``.
+    """
+
+    _EXTRA_SAVED = ("init_", "loss_raw_", "loss_normalized_", "loss_", "n_iter_")
+
+    def __init__(
+        self,
+        n_components: int = 20,
+        weight_groups: str = "function",
+        gradient: str = "autograd",
+        max_iter: int = 100,
+        tol: float = 1e-6,
+        bounds: tuple[float, float] = (1e-3, 1e3),
+        n_eval_frames: int | None = None,
+        init: str = "best",
+    ) -> None:
+        super().__init__(n_components)
+        self.weight_groups = weight_groups
+        self.gradient = gradient
+        self.max_iter = max_iter
+        self.tol = tol
+        self.bounds = bounds
+        self.n_eval_frames = n_eval_frames
+        self.init = init
+
+    def _restore_params(self) -> None:
+        SFPCA.__init__(self, self.n_components)
+
+    def _check_params(self) -> None:
+        choices = {"weight_groups": ("function", "joint"), "gradient": ("autograd", "finite_difference"),
+                   "init": ("best", "raw", "normalized")}
+        for name, allowed in choices.items():
+            if getattr(self, name) not in allowed:
+                raise ValueError(f"SFPCA: {name} must be one of {allowed}; got {getattr(self, name)!r}")
+        lo, hi = self.bounds
+        if not 0 < lo <= 1 <= hi:
+            raise ValueError(f"SFPCA: bounds must satisfy 0 < low <= 1 <= high; got {self.bounds}")
+        if int(self.max_iter) < 0:
+            raise ValueError(f"SFPCA: max_iter must be >= 0; got {self.max_iter}")
+
+    def fit(self, X: FunctionalMotions, y=None) -> "SFPCA":
+        self._check_fit_input(X)
+        self._check_params()
+        torch = _torch()
+        start = time.perf_counter()
+        fd = self.gradient == "finite_difference"
+        objective = ObservationObjective(X, self.n_components, self.n_eval_frames,
+                                         dtype=torch.float64 if fd else torch.float32)
+        groups = (np.arange(X.layout.n_functions) if self.weight_groups == "function"
+                  else X.layout.function_groups())
+        n_params = int(groups.max()) + 1
+        raw = np.ones(X.layout.n_functions)
+        # z-scoring per weight group: sigma_g^2 = mean variance of the group's functions
+        group_var = np.bincount(groups, weights=functional_std(X) ** 2) / np.bincount(groups)
+        normalized = zscore_weights(np.sqrt(group_var))[groups]
+        self.loss_raw_ = objective.value(raw) if self.init != "normalized" else np.nan
+        self.loss_normalized_ = objective.value(normalized) if self.init != "raw" else np.nan
+        if self.init == "raw" or (self.init == "best" and self.loss_raw_ <= self.loss_normalized_):
+            self.init_, w0 = "raw", raw
+        else:
+            self.init_, w0 = "normalized", normalized
+
+        # only groups with a function that varies between clips have an effect (exact shortcut)
+        free = np.unique(groups[objective.active_functions])
+
+        def weights(u: np.ndarray) -> np.ndarray:
+            scale = np.ones(n_params)
+            scale[free] = u
+            return w0 * scale[groups]
+
+        if fd:
+            def fun(u):
+                return objective.value(weights(u))
+            jac = None
+        else:
+            def fun(u):
+                value, grad_w = objective.value_and_grad(weights(u))
+                return value, np.bincount(groups, weights=grad_w * w0, minlength=n_params)[free]
+            jac = True
+        result = minimize(
+            fun, np.ones(len(free)), jac=jac, method="L-BFGS-B",
+            bounds=[self.bounds] * len(free),
+            options={"maxiter": int(self.max_iter), "ftol": float(self.tol)},
+        )
+        w = weights(result.x)
+        self.loss_ = float(result.fun) if np.isfinite(result.fun) else objective.value(w)
+        self.n_iter_ = int(result.nit)
+        self.n_evals_ = int(result.nfev)
+        self.converged_ = bool(result.success)
+        self._fit_weighted(X, w / np.exp(np.mean(np.log(w))))  # scale-free: geometric mean 1
+        self.fit_time_s_ = time.perf_counter() - start
+        return self

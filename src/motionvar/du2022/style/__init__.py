@@ -1,0 +1,46 @@
+"""Du 2022 ch. 5: stylistic motion primitives from a convolutional motion autoencoder,
+a VAE per primitive and a CVAE per style with a Gram-matrix style loss.
+
+Typical use (one primitive, clips resampled to the canonical 60 frames)::
+
+    from motionvar.du2022.style import (FeatureScaler, FeatureSpace, TrainConfig, motions_features,
+                                 sliding_windows, style_joints, train_autoencoder, train_vae)
+
+    layout = style_joints(skeleton, joint_map)                 # 21 joints (Sec. 5.2)
+    windows = sliding_windows([motion_features(m, layout) for m in all_clips])  # 60 / 30
+    scaler = FeatureScaler.fit(windows, layout.n_joints)
+    ae, hist = train_autoencoder(scaler.transform(windows), TrainConfig(20, 1e-3, 64))
+    space = FeatureSpace(ae, scaler)                           # Eq. 5.1-5.2
+    maps = space.encode(motions_features(neutral_clips, layout))
+    vae, hist = train_vae(maps, TrainConfig(200, 1e-3, 32))    # Eq. 5.6-5.8
+    cvae, hist = train_vae(maps, cfg, style_maps=space.encode(example[None])[0],
+                           alpha=200, init=vae)                # Eq. 5.9-5.11
+    samples = sample_features(cvae, maps.shape[1:], space, n=1000, seed=0)
+    diversity(samples, layout.n_joints)                        # Eq. 5.13-5.15
+
+Modules: :mod:`.features` (Sec. 5.2 representation, windows, scaling),
+:mod:`.networks` (Eq. 5.1-5.2, Fig. 5.3), :mod:`.losses` (Eq. 5.6-5.12),
+:mod:`.training`, :mod:`.model` (feature space, save/load, sampling, Table 5.1),
+:mod:`.diversity` (Eq. 5.13-5.15).
+"""
+
+from .diversity import diversity, pose_sd, step_lengths, step_sd, velocity_sd
+from .features import (
+    FeatureLayout, FeatureScaler, features_to_positions, heading_angles, motion_features, motions_features,
+    positions_to_features, sliding_windows, split_features, style_joints,
+)
+from .losses import content_loss, gram, gram_distance, gram_distance_maps, kl_loss, style_distance, style_loss, vae_loss
+from .model import (
+    FeatureSpace, active_units, active_units, diagonal_minima, load_vae, sample_features, sample_maps, save_vae, style_distance_matrix,
+)
+from .networks import ConvAutoencoder, MotionVAE
+from .training import TrainConfig, train_autoencoder, train_vae
+
+__all__ = [
+    "ConvAutoencoder", "FeatureLayout", "active_units", "FeatureScaler", "FeatureSpace", "MotionVAE", "TrainConfig",
+    "content_loss", "diagonal_minima", "diversity", "features_to_positions", "gram", "gram_distance",
+    "heading_angles", "kl_loss", "load_vae", "motion_features", "motions_features", "pose_sd",
+    "positions_to_features", "sample_features", "sample_maps", "save_vae", "sliding_windows",
+    "split_features", "step_lengths", "step_sd", "style_distance", "style_distance_matrix", "style_joints",
+    "style_loss", "train_autoencoder", "train_vae", "vae_loss", "velocity_sd",
+]

@@ -1,0 +1,133 @@
+"""Figures of the Du 2022 ch. 5 evaluations: the style-distance heat map (Table 5.1),
+the diversity bars (Tables 5.2-5.3), training curves, and random samples as stick
+figures (Fig. 5.4-5.5: the last frame of each sample, characters started in a line).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping, Sequence
+
+import matplotlib.pyplot as plt
+import numpy as np
+import pandas as pd
+from matplotlib.figure import Figure
+
+from ...plots.stick import draw_pose, project
+
+
+def _heat(ax, table: pd.DataFrame, title: str) -> None:
+    values = table.to_numpy(dtype=float)
+    im = ax.imshow(values, cmap="viridis_r")
+    ax.set_xticks(range(values.shape[1]), table.columns, rotation=45, ha="right", fontsize=8)
+    ax.set_yticks(range(values.shape[0]), table.index, fontsize=8)
+    ax.set_xlabel("style example s", fontsize=9)
+    ax.set_ylabel("model m", fontsize=9)
+    ax.set_title(title, fontsize=10)
+    mid = np.nanmean(values)
+    for i in range(values.shape[0]):
+        j_min = int(np.nanargmin(values[i]))
+        for j in range(values.shape[1]):
+            txt = f"{values[i, j]:.3g}"
+            ax.text(j, i, txt, ha="center", va="center", fontsize=6.5,
+                    color="white" if values[i, j] > mid else "black",
+                    fontweight="bold" if j == j_min else "normal")
+        ax.add_patch(plt.Rectangle((j_min - 0.5, i - 0.5), 1, 1, fill=False, ec="red", lw=1.5))
+    plt.colorbar(im, ax=ax, fraction=0.046, pad=0.04)
+
+
+def distance_heatmap(measured: pd.DataFrame, published: pd.DataFrame | None = None) -> Figure:
+    """Table 5.1 as heat maps: ours (and the thesis'); each row's minimum is boxed red."""
+    n = 2 if published is not None else 1
+    fig, axes = plt.subplots(1, n, figsize=(5.6 * n, 5.0), squeeze=False)
+    _heat(axes[0, 0], measured, "measured D(m, s) (Eq. 5.12)")
+    if published is not None:
+        _heat(axes[0, 1], published.loc[measured.index, measured.columns], "published (Du 2022, Table 5.1)")
+    fig.tight_layout()
+    return fig
+
+
+def diversity_figure(table: pd.DataFrame, measures: Sequence[str] = ("pose_sd", "v_sd", "step_sd")) -> Figure:
+    """Tables 5.2-5.3 as bars relative to the training data (so that our centimetres and
+    the thesis' rig units compare): one panel per primitive and measure, measured and
+    published bars per model. ``table`` has columns primitive, model, the measures and
+    ``published_<measure>``."""
+    prims = list(dict.fromkeys(table["primitive"]))
+    fig, axes = plt.subplots(len(prims), len(measures), figsize=(4.2 * len(measures), 3.0 * len(prims)), squeeze=False)
+    for r, prim in enumerate(prims):
+        t = table[table["primitive"] == prim].set_index("model")
+        models = list(t.index)
+        x = np.arange(len(models))
+        for c, m in enumerate(measures):
+            ax = axes[r, c]
+            ours = t[m] / t.loc["training data", m]
+            ax.bar(x - 0.2, ours, 0.4, label="measured", color="#1f77b4")
+            pub = t.get(f"published_{m}")
+            if pub is not None and pub.notna().all():
+                ax.bar(x + 0.2, pub / pub.loc["training data"], 0.4, label="published", color="#ff7f0e")
+            ax.axhline(1.0, color="0.4", lw=0.8, ls="--")
+            ax.set_xticks(x, models, rotation=45, ha="right", fontsize=7)
+            ax.set_title(f"{prim}: {m.replace('_sd', '_SD')} / training", fontsize=9)
+            ax.tick_params(axis="y", labelsize=7)
+            if r == 0 and c == 0:
+                fig.legend(*ax.get_legend_handles_labels(), loc="upper right", fontsize=8, ncol=2)
+    fig.tight_layout(rect=(0, 0, 1, 0.95))
+    return fig
+
+
+def training_curves(histories: Mapping[str, pd.DataFrame], groups: Mapping[str, Sequence[str]]) -> Figure:
+    """Loss per epoch (log scale), one panel per group of runs (e.g. autoencoder, VAEs,
+    CVAEs of a primitive)."""
+    fig, axes = plt.subplots(1, len(groups), figsize=(4.4 * len(groups), 3.4), squeeze=False)
+    for ax, (title, names) in zip(axes[0], groups.items()):
+        for name in names:
+            h = histories[name]
+            ax.plot(h["epoch"], h["loss"], label=name, lw=1.2)
+        ax.set_yscale("log")
+        ax.set_xlabel("epoch", fontsize=8)
+        ax.set_ylabel("training loss", fontsize=8)
+        ax.set_title(title, fontsize=9)
+        ax.tick_params(labelsize=7)
+        ax.legend(fontsize=6)
+    fig.tight_layout()
+    return fig
+
+
+def samples_figure(
+    rows: Sequence[tuple[str, np.ndarray, np.ndarray | None]],
+    parents: np.ndarray,
+    names: Sequence[str],
+    spacing_cm: float = 75.0,
+    azimuth_deg: float = -35.0,
+    elevation_deg: float = 8.0,
+) -> Figure:
+    """Fig. 5.4/5.5: per row a label, samples' positions (n, T, J, 3) (starting at the
+    origin facing +x) and optionally a style example's positions (T, J, 3), drawn left of
+    the samples in grey. Each character starts ``spacing_cm`` to the side of the one
+    before; the last frame is drawn, seen from the front-side."""
+    n_cols = max(len(p) for _, p, _ in rows)
+    fig, axes = plt.subplots(len(rows), 1, figsize=(max(5.5, 1.0 + 0.9 * (n_cols + 1.5)), 1.9 * len(rows)), squeeze=False)
+    screen = np.array([0.0, 0.0, 1.0])
+    for ax, (label, samples, example) in zip(axes[:, 0], rows):
+        lateral = np.array([0.0, 0.0, spacing_cm])
+        xs = []
+        for k, pos in enumerate(samples):
+            last = pos[-1] + (k + 1.5) * lateral
+            xy = project(last, screen, elevation_deg, azimuth_deg)
+            draw_pose(ax, xy, parents, names, linewidth=1.6)
+            xs.append(xy[:, 0])
+        if example is not None:
+            xy = project(example[-1], screen, elevation_deg, azimuth_deg)
+            draw_pose(ax, xy, parents, None, linewidth=1.6).set_color("0.6")
+            ax.text(float(xy[:, 0].mean()), float(xy[:, 1].max()) + 8, "style example", ha="center", fontsize=7, color="0.4")
+            xs.append(xy[:, 0])
+        allx = np.concatenate(xs)
+        ax.set_xlim(allx.min() - 20, allx.max() + 20)
+        ax.set_ylim(-5, 195)
+        ax.set_aspect("equal")
+        ax.set_xticks([])
+        ax.set_yticks([])
+        for s in ax.spines.values():
+            s.set_visible(False)
+        ax.set_title(label, fontsize=8, loc="left")
+    fig.tight_layout()
+    return fig

@@ -1,0 +1,31 @@
+"""Egges, Molet, Magnenat-Thalmann 2004: personalised real-time idle motion synthesis.
+
+- :mod:`.pca`: posture PCA of log-mapped joint rotations plus root translation (Sec. 3.2)
+- :mod:`.categories`: resting segments, posture categories, support ratio (Sec. 5.1, 5.3)
+- :mod:`.graph`: category transition graph, T_min / T_max, shortest routes (Fig. 3, Sec. 7.1)
+- :mod:`.fitting`: posture distance (Eq. 4), best-fitting animation, fitAnim (Fig. 5)
+- :mod:`.database`: one person's idle database (Sec. 5.1-5.3, 5.6)
+- :mod:`.balance`: synthesis of balance changes (Sec. 5.4)
+- :mod:`.variations`: small posture variations (Sec. 6)
+- :mod:`.integration`: idle motion between animations, blending with masks (Sec. 7)
+- :mod:`.engine`: both layers together (Sec. 4, Fig. 9)
+"""
+
+from .balance import Event, synthesize_balance, time_scale
+from .categories import CategoryModel, find_categories, posture_speed, static_segments, support_ratio
+from .database import IdleDatabase, IdleSettings, Recording, analyse_recording, build_database
+from .engine import generate_idle, generate_idle_pcs
+from .fitting import best_fitting_animation, fit_anim, fit_anim_part, posture_distance
+from .category_graph import CategoryGraph
+from .integration import add_variations, blend_motions, idle_between, joint_mask
+from .pca import PosturePCA, posture_vectors
+from .variations import VariationModel, extrema_pairs, find_extrema, fit_variation_model
+
+__all__ = [
+    "CategoryGraph", "CategoryModel", "Event", "IdleDatabase", "IdleSettings", "PosturePCA", "Recording",
+    "VariationModel", "add_variations", "analyse_recording", "best_fitting_animation", "blend_motions",
+    "build_database", "extrema_pairs", "find_categories", "find_extrema", "fit_anim", "fit_anim_part",
+    "fit_variation_model", "generate_idle", "generate_idle_pcs", "idle_between", "joint_mask",
+    "posture_distance", "posture_speed", "posture_vectors", "static_segments", "support_ratio",
+    "synthesize_balance", "time_scale",
+]

@@ -1,0 +1,120 @@
+"""The one on-disk format of fitted models: arrays in ``<base>.npz`` plus a small JSON of
+settings in ``<base>.json`` (no pickle anywhere; torch weights are a ``state_dict`` in
+``<base>.pt``, read back with ``weights_only=True``, beside the same JSON).
+
+Both files are written through a temporary file in the same folder and renamed into
+place, so an interrupted save leaves no half-written model; they are readable by all
+(mode 0644).
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import tempfile
+from pathlib import Path
+from typing import Any, Callable
+
+import numpy as np
+
+FILE_MODE = 0o644
+
+
+def model_base(path: str | Path) -> Path:
+    """``path`` without a model suffix (``.npz``, ``.json``, ``.pt``)."""
+    path = Path(path)
+    return path.with_suffix("") if path.suffix in (".npz", ".json", ".pt") else path
+
+
+def atomic_write(path: str | Path, write: Callable[[Path], None]) -> Path:
+    """Call ``write(tmp)`` on a temporary file beside ``path``, then rename it to ``path``
+    (mode 0644). The temporary file is removed if ``write`` fails."""
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
+    os.close(fd)
+    tmp = Path(tmp)
+    try:
+        write(tmp)
+        os.chmod(tmp, FILE_MODE)
+        tmp.replace(path)
+    except BaseException:
+        tmp.unlink(missing_ok=True)
+        raise
+    return path
+
+
+def _write_npz(arrays: dict[str, np.ndarray]) -> Callable[[Path], None]:
+    def write(tmp: Path) -> None:
+        with open(tmp, "wb") as fh:  # a file object: np.savez would append .npz to the name
+            np.savez(fh, **{k: np.asarray(v) for k, v in arrays.items()})
+
+    return write
+
+
+def _write_json(settings: dict[str, Any]) -> Callable[[Path], None]:
+    return lambda tmp: tmp.write_text(json.dumps(settings, indent=1) + "\n")
+
+
+def save_model(path: str | Path, arrays: dict[str, np.ndarray], settings: dict[str, Any]) -> list[Path]:
+    """Write ``<base>.npz`` (``arrays``) and ``<base>.json`` (``settings``, JSON-able);
+    returns both paths."""
+    base = model_base(path)
+    npz = atomic_write(base.with_suffix(".npz"), _write_npz(arrays))
+    js = atomic_write(base.with_suffix(".json"), _write_json(settings))
+    return [npz, js]
+
+
+def load_model(path: str | Path, kind: str | None = None) -> tuple[dict[str, np.ndarray], dict[str, Any]]:
+    """Read ``(arrays, settings)`` written by :func:`save_model`. With ``kind``, the
+    settings must say ``"kind": kind``. Errors name the file."""
+    base = model_base(path)
+    npz, js = base.with_suffix(".npz"), base.with_suffix(".json")
+    for f in (npz, js):
+        if not f.is_file():
+            raise FileNotFoundError(f"{f}: model file missing")
+    try:
+        settings = json.loads(js.read_text())
+    except (OSError, ValueError) as exc:
+        raise ValueError(f"{js}: not a readable model settings file ({exc})") from exc
+    try:
+        with np.load(npz, allow_pickle=False) as z:
+            arrays = {k: z[k] for k in z.files}
+    except (OSError, ValueError) as exc:
+        raise ValueError(f"{npz}: not a readable model array file ({exc})") from exc
+    if kind is not None and settings.get("kind") != kind:
+        raise ValueError(f"{js}: not a saved {kind} (kind {settings.get('kind')!r})")
+    return arrays, settings
+
+
+def save_torch_model(path: str | Path, state_dict: dict, settings: dict[str, Any]) -> list[Path]:
+    """Write torch weights ``<base>.pt`` (a ``state_dict`` of tensors) and ``<base>.json``."""
+    import torch
+
+    base = model_base(path)
+    pt = atomic_write(base.with_suffix(".pt"), lambda tmp: torch.save(state_dict, tmp))
+    js = atomic_write(base.with_suffix(".json"), _write_json(settings))
+    return [pt, js]
+
+
+def load_torch_model(path: str | Path, kind: str | None = None) -> tuple[dict, dict[str, Any]]:
+    """Read ``(state_dict, settings)`` written by :func:`save_torch_model` (the weights
+    with ``weights_only=True``)."""
+    import torch
+
+    base = model_base(path)
+    pt, js = base.with_suffix(".pt"), base.with_suffix(".json")
+    for f in (pt, js):
+        if not f.is_file():
+            raise FileNotFoundError(f"{f}: model file missing")
+    try:
+        settings = json.loads(js.read_text())
+    except (OSError, ValueError) as exc:
+        raise ValueError(f"{js}: not a readable model settings file ({exc})") from exc
+    try:
+        state = torch.load(pt, weights_only=True)
+    except Exception as exc:  # torch raises several kinds for a corrupt file
+        raise ValueError(f"{pt}: not a readable torch weights file ({exc})") from exc
+    if kind is not None and settings.get("kind") != kind:
+        raise ValueError(f"{js}: not a saved {kind} (kind {settings.get('kind')!r})")
+    return state, settings

@@ -1,0 +1,49 @@
+"""Style-only interpolation of whole clips: universal Kriging without variation
+parameters (Mukai & Kuriyama 2005) and RBFs (Rose et al. 1998) on the same clip vectors.
+
+Both map the style parameters c alone to a whole-body clip (all joints, key times and,
+for flight behaviours, the root height curve): the same c always gives the same clip,
+which is why they produce no variation (Ma et al. 2010, Sec. 7.4).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ..kriging import UniversalKriging
+from ..representation import ClipCodec, ClipSet
+from ..svi import ClipPrediction
+from .rbf import RBFInterpolation
+
+
+class StyleClipInterpolation:
+    """Whole clips as a function of style, interpolated by ``method`` ('kriging' or 'rbf')."""
+
+    def __init__(self, method: str = "kriging", variogram_model: str = "linear", flight: bool = False):
+        if method not in ("kriging", "rbf"):
+            raise ValueError(f"StyleClipInterpolation: method must be 'kriging' or 'rbf'; got {method!r}")
+        self.method = method
+        self.variogram_model = variogram_model
+        self.flight = flight
+
+    def fit(self, clips: ClipSet) -> "StyleClipInterpolation":
+        self.codec_ = ClipCodec.fit(clips, np.arange(clips.skeleton.n_joints), timing=True, root_height=self.flight)
+        self.n_keys_ = len(clips.reference_keys)
+        self.reference_keys_ = clips.reference_keys
+        interp = UniversalKriging(self.variogram_model) if self.method == "kriging" else RBFInterpolation()
+        self.interpolator_ = interp.fit(clips.style, self.codec_.encode(clips))
+        return self
+
+    def predict(self, c: np.ndarray) -> ClipPrediction:
+        rot, keys, height = self.codec_.decode(self.interpolator_.predict(np.atleast_2d(c)), self.n_keys_)
+        return ClipPrediction(rotations=rot, key_times=keys, root_height=height)
+
+
+def mk05_kriging(variogram_model: str = "linear", flight: bool = False) -> StyleClipInterpolation:
+    """Universal Kriging over the style parameters only (Mukai & Kuriyama 2005)."""
+    return StyleClipInterpolation("kriging", variogram_model, flight)
+
+
+def rose98_rbf(flight: bool = False) -> StyleClipInterpolation:
+    """RBF interpolation with a linear term (Rose et al. 1998)."""
+    return StyleClipInterpolation("rbf", flight=flight)

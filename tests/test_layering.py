@@ -1,0 +1,100 @@
+"""The package layout (README "Code map"): shared parts below the paper packages, imports
+only downward, no paper package reaching into another, no Snakemake in the library, no
+pickle and no matplotlib backend chosen at import time."""
+
+from __future__ import annotations
+
+import ast
+from pathlib import Path
+
+import pytest
+
+SRC = Path(__file__).resolve().parents[1] / "src" / "motionvar"
+
+# Level of each top-level part of motionvar: a module may import its own part and parts
+# of a lower level only. The three paper packages share the top level and never import
+# one another.
+LEVELS = {
+    "core": 0, "metrics": 0, "claims": 0,
+    "io": 1, "report": 1,
+    "synth": 2, "prep": 2, "models": 2, "plots": 2,
+    "ma2010": 3, "du2022": 3, "egges2004": 3,
+}
+PAPERS = {"ma2010", "du2022", "egges2004"}
+
+
+def _modules() -> list[tuple[str, Path]]:
+    out = []
+    for path in sorted(SRC.rglob("*.py")):
+        parts = list(path.relative_to(SRC).with_suffix("").parts)
+        out.append((".".join(["motionvar", *parts]), path))
+    return out
+
+
+def _imports(module: str, path: Path) -> list[tuple[str, int]]:
+    """Absolute names of everything ``path`` imports, with line numbers."""
+    tree = ast.parse(path.read_text(), filename=str(path))
+    package = module.split(".")
+    if path.name != "__init__.py":
+        package = package[:-1]
+    names = []
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Import):
+            names += [(a.name, node.lineno) for a in node.names]
+        elif isinstance(node, ast.ImportFrom):
+            if node.level:
+                base = package[: len(package) - node.level + 1]
+                name = ".".join(base + ([node.module] if node.module else []))
+            else:
+                name = node.module or ""
+            names.append((name, node.lineno))
+    return names
+
+
+def _part(module: str) -> str:
+    return module.split(".")[1]
+
+
+MODULES = _modules()
+
+
+def test_every_part_has_a_level():
+    parts = {_part(m) for m, p in MODULES if p.name != "__init__.py" or m.count(".") > 1}
+    parts.discard("__init__")
+    assert parts <= set(LEVELS), f"parts without a level in LEVELS: {sorted(parts - set(LEVELS))}"
+
+
+@pytest.mark.parametrize("module,path", MODULES, ids=[m for m, _ in MODULES])
+def test_imports_only_downward(module, path):
+    if module == "motionvar.__init__":
+        return
+    own = _part(module)
+    bad = []
+    for name, line in _imports(module, path):
+        if name.split(".")[0] == "snakemake":
+            bad.append(f"line {line}: imports snakemake (library code never does)")
+        if name.split(".")[0] == "pickle":
+            bad.append(f"line {line}: imports pickle (models are .npz + JSON, motionvar.io.model_file)")
+        if not name.startswith("motionvar.") or name == "motionvar":
+            continue
+        other = _part(name)
+        if other == own:
+            continue
+        if own in PAPERS and other in PAPERS:
+            bad.append(f"line {line}: {own} imports {name} (papers never import each other)")
+        elif LEVELS[other] >= LEVELS[own]:
+            bad.append(f"line {line}: {own} (level {LEVELS[own]}) imports {name} (level {LEVELS[other]})")
+    assert not bad, f"{path.relative_to(SRC.parent)}: " + "; ".join(bad)
+
+
+@pytest.mark.parametrize("module,path", MODULES, ids=[m for m, _ in MODULES])
+def test_no_backend_chosen_at_import(module, path):
+    """``matplotlib.use`` changes the backend of whoever imports the module; rule scripts
+    choose it, the library never does (not even inside a function)."""
+    tree = ast.parse(path.read_text())
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute) and node.func.attr == "use":
+            target = node.func.value
+            assert not (isinstance(target, ast.Name) and target.id in ("matplotlib", "mpl")), (
+                f"{path}: line {node.lineno} calls matplotlib.use"
+            )
