@@ -11,6 +11,7 @@ import math
 from collections.abc import Iterable, Sequence
 from dataclasses import asdict, dataclass, field
 from pathlib import Path
+from typing import Any
 
 import pandas as pd
 
@@ -39,6 +40,18 @@ class Claim:
             raise ValueError(f"claim {self.claim_id}: verdict {self.verdict!r} not in {VERDICTS}")
         if not self.claim_id.startswith(self.paper + "."):
             raise ValueError(f"claim {self.claim_id}: id must start with the paper key {self.paper!r}")
+
+
+@dataclass
+class EvaluationResult:
+    """What an evaluation function returns: its ``table`` (written as the evaluation's
+    CSV), its ``claims`` (built by the evaluation that measured them) and ``figure``, the
+    numbers its figure draws (passed to the paper's ``figures.py``; keys are the
+    evaluation's own)."""
+
+    table: pd.DataFrame
+    claims: list[Claim]
+    figure: dict[str, Any] = field(default_factory=dict)
 
 
 def verdict_from_bool(ok: bool) -> str:

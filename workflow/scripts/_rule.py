@@ -44,3 +44,18 @@ def run(snakemake, main) -> None:
             print(message, file=sys.stderr)
             sys.exit(1)
         logging.info("done")
+
+
+def write_evaluation(snakemake, result, draw, dpi: int = 110, **to_csv) -> None:
+    """Write an evaluation's outputs: ``result.table`` to ``output.table`` (CSV, no index,
+    ``to_csv`` keyword arguments passed on), ``draw(result)`` (a matplotlib Figure) to
+    ``output.figure``, ``result.claims`` to ``output.claims``."""
+    import matplotlib.pyplot as plt
+
+    from motionvar.claims import write_claims
+
+    result.table.to_csv(snakemake.output.table, index=False, **to_csv)
+    fig = draw(result)
+    fig.savefig(snakemake.output.figure, dpi=dpi)
+    plt.close(fig)
+    write_claims(snakemake.output.claims, result.claims)
