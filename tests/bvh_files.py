@@ -1,5 +1,6 @@
-"""Test helpers: where the shared real BVH files are, their expected sizes (from
-PROVENANCE.md), and each rig's length unit."""
+"""Test helpers: where the shared real BVH files are, their expected sizes (from the
+PROVENANCE.md that lies beside the files, outside the repository; docs/data.md summarises
+it), and each rig's length unit."""
 
 from __future__ import annotations
 
@@ -22,7 +23,7 @@ def real_bvh_files() -> list[Path]:
 
 
 def provenance() -> dict[str, tuple[float, int, int]]:
-    """File name -> (fps, joints, frames) from the tables of PROVENANCE.md."""
+    """File name -> (fps, joints, frames) from the tables of the data folder's PROVENANCE.md."""
     out = {}
     text = (real_bvh_dir() / "PROVENANCE.md").read_text(encoding="utf-8")
     for line in text.splitlines():

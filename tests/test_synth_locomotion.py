@@ -197,9 +197,9 @@ def test_joint_angles_stay_in_human_ranges(clips):
             toes = qrot(m.rotations[:, m.skeleton.index(cap + "Foot")], np.array([0.0, 0.0, 1.0]))
             ankle = np.degrees(np.arctan2(-toes[:, 1], toes[:, 2]))  # toes down = plantarflexion > 0
             assert -40.0 <= ankle.min() and ankle.max() <= 55.0, (kind, side, ankle.min(), ankle.max())
-        if kind == "walk":  # GAIT.md: swing knee peak 60-65° (× habit), stance ≈ 5° at heel strike
+        if kind == "walk":  # docs/gait.md: swing knee peak 60-65° (× habit), stance ≈ 5° at heel strike
             assert 45.0 < max(knee_flexion_deg(m, s).max() for s in SIDES) < 90.0
-        if kind == "run":  # GAIT.md: 90-130° in swing
+        if kind == "run":  # docs/gait.md: 90-130° in swing
             assert max(knee_flexion_deg(m, s).max() for s in SIDES) > 85.0
 
 

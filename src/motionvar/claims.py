@@ -1,4 +1,4 @@
-"""Claims: the contract between evaluations and the report (DESIGN.md, "Claims").
+"""Claims: the contract between evaluations and the report (docs/design.md, "Claims").
 
 A claim is one statement a paper makes that our data can check. Its verdict is always
 computed from measured numbers by one of the helpers below, never written by hand.

@@ -10,17 +10,14 @@ def load(entry: dict, workers: int = 1):
     if entry["source"] == "synthetic":
         from motionvar.synth import SynthSpec, generate_dataset
 
-        spec = SynthSpec(**{k: v for k, v in entry.items() if k != "source"})
-        return generate_dataset(spec, workers=workers)
+        return generate_dataset(SynthSpec(**{k: v for k, v in entry.items() if k != "source"}), workers=workers)
     from motionvar.core import cmu_joint_map
     from motionvar.io.bvh_dataset import import_bvh_folder
     from motionvar.io.joint_map_file import load_joint_map
 
     joint_map = load_joint_map(entry["joint_map"]) if entry["joint_map"] else cmu_joint_map()
-    return import_bvh_folder(
-        entry["path"], entry["labels"], entry["unit_cm"],
-        drop_first_frame=entry["drop_first_frame"], joint_map=joint_map,
-    )
+    return import_bvh_folder(entry["path"], entry["labels"], entry["unit_cm"],
+                             drop_first_frame=entry["drop_first_frame"], joint_map=joint_map)
 
 
 def main(snakemake) -> None:
@@ -28,14 +25,12 @@ def main(snakemake) -> None:
 
     from motionvar.io import save_dataset
 
-    name = snakemake.wildcards.dataset
     try:
         motions, metadata = load(dict(snakemake.params.entry), workers=snakemake.threads)
     except ValueError as exc:
-        raise ValueError(f"datasets.{name}: {exc}") from exc
+        raise ValueError(f"datasets.{snakemake.wildcards.dataset}: {exc}") from exc
     save_dataset(Path(snakemake.output.clips).parent, motions, metadata)
-    frames = sum(m.n_frames for m in motions)
-    logging.info("%s: %d clips, %d frames", name, len(motions), frames)
+    logging.info("%s: %d clips, %d frames", snakemake.wildcards.dataset, len(motions), sum(m.n_frames for m in motions))
 
 
 if "snakemake" in globals():

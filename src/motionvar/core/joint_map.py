@@ -1,5 +1,5 @@
 """Joint map: names the semantic joints and the joint groups of a rig, so that methods
-never hard-code CMU joint names (DESIGN.md, Conventions).
+never hard-code CMU joint names (docs/design.md, Conventions).
 
 Joint groups follow Ma et al. 2010, Fig. 4: A legs, B left arm, C right arm,
 D the rest of the upper body (root, spine, neck, head).

@@ -84,7 +84,7 @@ def fk_torch(rotations, root_pos, offsets, parents, translations=None):
     """Differentiable torch version of :func:`fk` (positions only).
 
     Joints are taken with ``unbind`` rather than slicing: slice backward was 4x slower
-    (STACK.md, SFPCA measurements).
+    (docs/stack.md, SFPCA measurements).
     """
     torch = _torch()
     offsets = torch.as_tensor(offsets, dtype=rotations.dtype)

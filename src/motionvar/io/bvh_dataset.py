@@ -1,5 +1,5 @@
 """Import a labelled folder of BVH files as clips plus a metadata table, and export
-single clips as BVH (DESIGN.md, "Datasets").
+single clips as BVH (docs/design.md, "Datasets").
 
 The labels CSV has one row per clip with the columns ``file`` (path relative to the
 folder), ``subject``, ``behaviour`` and ``style``; any further columns (``variant``,

@@ -1,5 +1,5 @@
 """Packed motion datasets: ``clips.npz`` (all clips' arrays concatenated over frames)
-plus ``metadata.csv`` (one row per clip, DESIGN.md "Datasets").
+plus ``metadata.csv`` (one row per clip, docs/design.md "Datasets").
 
 All clips of a dataset share one topology (names, parents, channel layout); bone
 lengths, fps and length differ per clip. Writes are atomic: a failed save leaves no file.

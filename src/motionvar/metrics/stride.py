@@ -4,7 +4,7 @@ parameter for the walking behavior").
 
 During a single-support phase the stance foot stays put and the swing foot travels from
 behind the body to in front of it: its horizontal displacement is one stride (two steps,
-GAIT.md). The swing foot is the one that moves more between the phase's boundaries.
+docs/gait.md). The swing foot is the one that moves more between the phase's boundaries.
 """
 
 from __future__ import annotations

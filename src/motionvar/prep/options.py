@@ -2,7 +2,7 @@
 
 Thresholds are physical (cm, cm/s, seconds), so they hold for any frame rate; a motion
 in other length units is handled through ``units_cm`` (cm per motion length unit).
-Defaults were chosen from gait facts (GAIT.md: a stance foot is still, a swing foot moves
+Defaults were chosen from gait facts (docs/gait.md: a stance foot is still, a swing foot moves
 at 1-5 m/s and clears the floor) and checked on the synthetic generator and on CMU walks;
 they are not tuned to any claim.
 """
@@ -25,7 +25,7 @@ class PrepOptions:
             (0 cm/s), but on real walks (CMU 02_01) the ankle still moves at 40-60 cm/s
             in the heel rocker of the first ~0.1 s after heel contact: at 30 cm/s heel
             strikes came ~8 frames late with one frame of double support; at 50 cm/s
-            double support is ~13 frames, about 10 % of the gait cycle (GAIT.md).
+            double support is ~13 frames, about 10 % of the gait cycle (docs/gait.md).
         contact_height_cm: a joint is low when it is less than this above its floor level.
         floor_percentile: a joint's floor level is this percentile of its height over the
             clip (robust to floor offsets and to rigs with other ankle heights).

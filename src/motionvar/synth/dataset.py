@@ -1,7 +1,7 @@
 """The synthetic dataset: every subject performs every behaviour a set number of times.
 
 :func:`generate_dataset` returns the clips and one metadata row per clip (the shared
-contract, DESIGN.md "Datasets"): clip_id, subject, behaviour (walk | run | sidestep | pick |
+contract, docs/design.md "Datasets"): clip_id, subject, behaviour (walk | run | sidestep | pick |
 place | idle), style, variant, primitive ("" for whole clips), the style parameters and
 ground truth (stride_length_cm, speed_cm_s, step_width_cm, turn_deg, target_x/y/z,
 segments, left_contacts, right_contacts, idle_postures; NaN where a column does not apply),

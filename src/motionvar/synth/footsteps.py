@@ -7,7 +7,7 @@ is the frame range [start, stop) during which the foot is pinned (its ankle from
 strike to heel-off, its toe base from heel-off to toe-off); the swing frames lie strictly
 between two contacts of the same foot.
 
-Timing facts (GAIT.md; Perry & Burnfield 2010, Novacheck 1998):
+Timing facts (docs/gait.md; Perry & Burnfield 2010, Novacheck 1998):
 - walking: stride time = stride / speed, stance ≈ 60 % of the cycle (the caller's
   ``stance_fraction``), double support = stance − 50 %; at heel strike the front ankle is
   half way between the hip and a point one foot length (ankle to toe base) further, i.e. the

@@ -4,7 +4,7 @@ A clip is described by *what* is done (stride length, speed, step width, turn, n
 steps: Ma 2010's style parameters) and *how* (:class:`Manner`: arm swing, trunk lean, knee
 lift, ...: the subject's habits — Ma 2010's "variation" — changed by the labelled style).
 
-Neutral adult values (GAIT.md; Perry & Burnfield 2010, Winter 2009, Novacheck 1998):
+Neutral adult values (docs/gait.md; Perry & Burnfield 2010, Winter 2009, Novacheck 1998):
 - walking stride = ``WALK_STRIDE_PER_LEG`` (1.6) × leg length, inside 1.5-1.7; cadence
   ``WALK_CADENCE`` (110 steps/min, inside 100-120) × the subject's cadence habit; so a
   leg of 87 cm walks 139 cm strides at ≈ 1.3 m/s.
@@ -22,7 +22,7 @@ Neutral adult values (GAIT.md; Perry & Burnfield 2010, Winter 2009, Novacheck 19
 - side-stepping: lateral step 30-55 cm (GAIT 30-60), 90 steps/min (slower than walking),
   swing 55 % of each step, feet lifted 7 cm.
 Clip-to-clip variation within a subject is small (stride ±4 %, cadence ±3 %, arm swing
-±6 %, lean ±1°), so subjects stay recognisable (GAIT.md, "Consistency").
+±6 %, lean ±1°), so subjects stay recognisable (docs/gait.md, "Consistency").
 """
 
 from __future__ import annotations

@@ -10,7 +10,7 @@ each category; c ⇒ c is a re-adjustment within the category); each rest is a s
 different posture of its category (the posture sets Q_c). On top run continuous small
 variations (Sec. 6): postural sway, breathing, small head and arm movements.
 
-Biomechanics (GAIT.md, "Quiet standing"; ranges of the personal traits in brackets):
+Biomechanics (docs/gait.md, "Quiet standing"; ranges of the personal traits in brackets):
 - Loaded leg straight (knee ``lock_knee_deg``, 1–5°), the root height follows from it;
   the pelvis drops towards the unloaded side by ``pelvis_drop_deg`` (2–5°, "a few
   degrees"), which bends the unloaded knee; the trunk bends back over the pelvis so the

@@ -15,7 +15,7 @@ Order of construction (each step vectorised over frames, loops over contacts onl
    angle at toe-off, so the knee flexes in pre-swing (Perry & Burnfield 2010); the toes stay
    flat on the floor. Swing: cubic Hermite curves from the toe-off state (position, velocity, foot
    pitch and its rate) to touchdown, plus a lift whose height makes the knee reach the
-   planned peak swing flexion (GAIT.md: 60-65° in early swing; running 90-130°).
+   planned peak swing flexion (docs/gait.md: 60-65° in early swing; running 90-130°).
 3. :func:`solve_leg_tracks` — analytic two-bone IK (:func:`motionvar.synth.ik.two_bone_ik`)
    puts each ankle on its track exactly; the knee bends towards the foot's heading.
 

@@ -1,6 +1,6 @@
 """Procedural locomotion: walks (7 styles, straight or turning), runs and side-steps.
 
-A kinematically consistent model, not noise around a template (DESIGN.md, "Datasets"):
+A kinematically consistent model, not noise around a template (docs/design.md, "Datasets"):
 footsteps are planned first (:mod:`.footsteps`), the pelvis follows a smooth path with the
 gait's rotation, obliquity, tilt, lateral sway and vertical bob (:mod:`.upper`), the root
 height is kept within reach of every planted foot, and the legs are solved by analytic

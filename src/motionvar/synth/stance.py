@@ -81,7 +81,7 @@ class StanceHabit:
       Self-selected quiet stance: heels ≈ 17 cm apart, feet ≈ 14° apart (McIlroy & Maki 1997).
     - com_ahead_cm: root ahead of the ankle line, 2-5 cm × height scale (the centre of
       mass lies a few cm in front of the ankles in quiet standing, Winter 2009).
-    - lock_knee_deg: flexion of a "straight" standing knee, 1-5° (GAIT.md: loaded leg straight).
+    - lock_knee_deg: flexion of a "straight" standing knee, 1-5° (docs/gait.md: loaded leg straight).
     - arm_abduction_deg: relaxed arms hang 4-12° out from vertical, clear of the hips.
     """
 

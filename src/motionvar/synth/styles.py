@@ -1,6 +1,6 @@
 """Labelled walking styles as direction-of-change factors relative to neutral walking.
 
-The directions come from the perception and gait literature (GAIT.md, "Styles"):
+The directions come from the perception and gait literature (docs/gait.md, "Styles"):
 
 - depressed / sad: slower (≈ 0.8-1.0 m/s), shorter strides, smaller arm swing, head and trunk
   flexed forward by 10-20°, reduced limb flexion (Roether et al. 2009).

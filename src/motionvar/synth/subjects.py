@@ -1,7 +1,7 @@
 """Synthetic subjects: body proportions and personal habits.
 
 A subject's traits persist across all of that subject's clips; clip-to-clip variation
-within a subject is drawn separately and is smaller (GAIT.md, "Consistency"). The
+within a subject is drawn separately and is smaller (docs/gait.md, "Consistency"). The
 habits are the per-person "variation" of Ma et al. 2010 (Sec. 1, 5) and the personal
 idle style of Egges et al. 2004 (Sec. 5.6).
 
@@ -11,16 +11,16 @@ Ranges and their rationale:
 - segment_jitter ~ N(0, 0.02) per bone, symmetric left/right: limb-length ratios vary by a
   few percent between adults (Winter 2009, anthropometric tables).
 - arm_swing_scale ~ U(0.6, 1.4): shoulder swing of ±15-30 degrees at comfortable walking
-  speed (GAIT.md) spans a factor 2 between people.
+  speed (docs/gait.md) spans a factor 2 between people.
 - knee_lift_scale ~ U(0.85, 1.15): peak swing knee flexion 60-65 degrees, ±10 %.
 - torso_lean_deg ~ N(3, 2.5): habitual forward trunk inclination of a few degrees.
 - head_pitch_deg ~ N(0, 4): head carriage, up (negative) or down (positive).
-- elbow_flex_deg ~ U(10, 30): resting elbow flexion during walking (GAIT.md).
-- step_width_cm ~ U(6, 12): step width 5-13 cm (GAIT.md).
+- elbow_flex_deg ~ U(10, 30): resting elbow flexion during walking (docs/gait.md).
+- step_width_cm ~ U(6, 12): step width 5-13 cm (docs/gait.md).
 - cadence_scale ~ U(0.93, 1.07): comfortable cadence 100-120 steps/min.
 - shoulder_lift_deg ~ N(0, 3): habitual shoulder elevation / depression.
 - sway_cm ~ U(0.3, 1.0): centre-of-pressure RMS in quiet standing 0.3-1 cm (Winter 2009).
-- weight_shift_s ~ U(4, 15): mean time between weight shifts (GAIT.md: several to tens of s).
+- weight_shift_s ~ U(4, 15): mean time between weight shifts (docs/gait.md: several to tens of s).
 - idle_foot_preference ~ Dirichlet(2, 2, 1): how often the subject rests on the left foot,
   the right foot or both (Egges 2004 Sec. 5.1 categories).
 - breath_rate_hz ~ U(0.2, 0.33): 12-20 breaths per minute.

@@ -1,4 +1,4 @@
-"""Pelvis, trunk, head and arms over the gait cycle (GAIT.md; Perry & Burnfield 2010).
+"""Pelvis, trunk, head and arms over the gait cycle (docs/gait.md; Perry & Burnfield 2010).
 
 All oscillations are functions of the left leg's gait phase φ (0 at a left heel strike)
 times the gait envelope (0 standing, 1 in steady gait):
