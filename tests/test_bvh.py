@@ -336,3 +336,65 @@ def test_real_wrapped_angles_give_the_unwrapped_rotations():
         ref = Q.euler_to_quat(unwrapped[:, j], order)
         assert same_rotations(m.rotations[:, j], ref, 1e-9)
     assert np.all(np.sum(m.rotations[1:] * m.rotations[:-1], axis=-1) >= 0)
+
+
+# ---- edge cases a user met (issue: real data end to end) ------------------------------
+
+def _chain_bvh(depth: int) -> str:
+    """A chain of ``depth`` joints below the root, one frame."""
+    lines = ["HIERARCHY", "ROOT J0", "{", "OFFSET 0 0 0", "CHANNELS 6 Xposition Yposition Zposition Zrotation Xrotation Yrotation"]
+    for d in range(1, depth + 1):
+        lines += [f"JOINT J{d}", "{", "OFFSET 0 1 0", "CHANNELS 3 Zrotation Xrotation Yrotation"]
+    lines += ["End Site", "{", "OFFSET 0 1 0", "}"] + ["}"] * (depth + 1)
+    n_channels = 6 + 3 * depth
+    lines += ["MOTION", "Frames: 1", "Frame Time: 0.01", " ".join(["0"] * n_channels)]
+    return "\n".join(lines) + "\n"
+
+
+@pytest.mark.parametrize("depth", [1_000, 5_000])
+def test_deeply_nested_hierarchy_reads_without_recursion(tmp_path, depth):
+    path = tmp_path / "deep.bvh"
+    path.write_text(_chain_bvh(depth))
+    m = read_bvh(path)
+    assert m.skeleton.n_joints == depth + 1
+    assert m.skeleton.parents[-1] == depth - 1
+
+
+def test_file_without_motion_stops_at_the_first_error_with_bounded_memory(tmp_path):
+    """A hierarchy followed by megabytes of text and no MOTION line: the reader reports
+    the first unexpected token instead of tokenising the whole file first."""
+    import tracemalloc
+
+    head = HEADER[: HEADER.index("MOTION")]
+    junk = ("1.0 2.0 3.0 4.0 5.0 6.0 7.0 8.0 9.0\n") * 200_000  # ~7 MB of numbers
+    path = tmp_path / "nomotion.bvh"
+    path.write_text(head + junk)
+    size = path.stat().st_size
+    tracemalloc.start()
+    with pytest.raises(BVHError, match="missing MOTION"):
+        read_bvh(path)
+    peak = tracemalloc.get_traced_memory()[1]
+    tracemalloc.stop()
+    assert peak < 12 * size, f"peak {peak / 1e6:.0f} MB for a {size / 1e6:.0f} MB file"
+
+
+def test_utf8_byte_order_mark_is_accepted(tmp_path):
+    path = small_bvh(tmp_path)
+    path.write_bytes(b"\xef\xbb\xbf" + path.read_bytes())
+    assert read_bvh(path).skeleton.names[0] == "Hips"
+
+
+def test_latin1_bytes_give_a_clear_error_or_read_with_the_encoding(tmp_path):
+    path = small_bvh(tmp_path)
+    text = path.read_text().replace("JOINT Chest", "JOINT Brustkörper")
+    path.write_bytes(text.encode("latin-1"))
+    with pytest.raises(BVHError, match=rf"{path.name}:{line_of(text, 'Brustkörper')}: byte 0xf6 is not valid utf-8"):
+        read_bvh(path)
+    assert read_bvh(path, encoding="latin-1").skeleton.names[1] == "Brustkörper"
+
+
+@pytest.mark.parametrize("frame_time", ["1e-320", "1e-5", "2.0"])
+def test_frame_time_giving_an_implausible_rate_is_rejected(tmp_path, frame_time):
+    path = small_bvh(tmp_path, header=HEADER.replace("Frame Time: 0.02", f"Frame Time: {frame_time}"))
+    with pytest.raises(BVHError, match=rf"{path.name}:\d+: 'Frame Time: {frame_time}' means .* frames per second"):
+        read_bvh(path)

@@ -206,3 +206,15 @@ def test_real_cmu_folder_drops_tpose_and_rejects_other_rig(tmp_path):
     with pytest.raises(DatasetError, match="131_01.bvh: skeleton topology"):
         import_bvh_folder(folder, csv, unit_cm=CMU_UNIT_CM)
     assert isinstance(meta, pd.DataFrame)
+
+
+def test_joint_map_file_naming_absent_joints_names_the_yaml_file(folder, tmp_path):
+    import yaml
+
+    from motionvar.io.joint_map_file import load_joint_map
+
+    jm = cmu_joint_map()
+    path = tmp_path / "my_rig.yaml"
+    path.write_text(yaml.safe_dump({"joints": {**jm.joints, "head": "Skull"}}))
+    with pytest.raises(DatasetError, match=r"joint map for .*a.bvh \(.*my_rig.yaml\): joints not in the skeleton"):
+        import_bvh_folder(folder, "labels.csv", unit_cm=CMU_UNIT_CM, joint_map=load_joint_map(path))

@@ -33,6 +33,8 @@ class JointMap:
 
     joints: dict[str, str]
     groups: dict[str, tuple[str, ...]] = field(default_factory=dict)
+    #: where the map was read from (a YAML file), named in errors; "" for built-in maps
+    origin: str = field(default="", compare=False)
 
     def validate(self, skeleton: Skeleton, source: str = "joint map") -> None:
         """Raise ValueError naming every missing semantic joint or unknown rig joint."""
@@ -48,7 +50,8 @@ class JointMap:
         if bad_groups:
             problems.append(f"unknown groups {bad_groups} (expected {list(JOINT_GROUPS)})")
         if problems:
-            raise ValueError(f"{source}: " + "; ".join(problems))
+            where = f"{source} ({self.origin})" if self.origin else source
+            raise ValueError(f"{where}: " + "; ".join(problems))
 
     def index(self, skeleton: Skeleton, semantic: str) -> int:
         return skeleton.index(self.joints[semantic])
@@ -64,8 +67,9 @@ class JointMap:
         return {g: np.array(sorted(v), dtype=np.int64) for g, v in listed.items()}
 
     @classmethod
-    def from_dict(cls, d: dict) -> "JointMap":
-        return cls(joints=dict(d["joints"]), groups={k: tuple(v) for k, v in d.get("groups", {}).items()})
+    def from_dict(cls, d: dict, origin: str = "") -> "JointMap":
+        return cls(joints=dict(d["joints"]), groups={k: tuple(v) for k, v in d.get("groups", {}).items()},
+                   origin=origin)
 
 
 def cmu_joint_map() -> JointMap:

@@ -37,7 +37,7 @@ from scipy.spatial.transform import Rotation
 from ..core.motion import Motion
 from ..core.quaternions import euler_to_quat, qfix, quat_to_euler
 from ..core.skeleton import Skeleton
-from .dataset import _atomic_write
+from .atomic import atomic_write
 
 _AXES = "XYZ"
 _ROT_CHANNELS = {f"{a}rotation".lower(): a for a in _AXES}
@@ -45,6 +45,7 @@ _POS_CHANNELS = {f"{a}position".lower(): a for a in _AXES}
 _FRAMES_RE = re.compile(r"^\s*Frames\s*:\s*(\S*)\s*$", re.IGNORECASE)
 _FRAME_TIME_RE = re.compile(r"^\s*Frame\s+Time\s*:\s*(\S*)\s*$", re.IGNORECASE)
 _MOTION_RE = re.compile(r"^[ \t]*MOTION[ \t]*$", re.MULTILINE)
+FPS_RANGE = (1.0, 10_000.0)  # frame rates a motion capture file can plausibly have
 
 
 class BVHError(ValueError):
@@ -71,21 +72,39 @@ class _Hierarchy:
 
 
 class _Tokens:
-    """Whitespace tokens of the header lines, each with its 1-based line number."""
+    """Whitespace tokens of the header lines, each with its 1-based line number, split
+    line by line as the parser asks for them: a file without a MOTION line is read only
+    up to its first structural error, never tokenised whole."""
 
     def __init__(self, lines: list[str], path: Path, eof_line: int) -> None:
-        self.toks = [(t, i + 1) for i, line in enumerate(lines) for t in line.split()]
-        self.pos = 0
+        self.lines = lines
         self.path = path
         self.eof_line = eof_line
+        self._line = 0  # index of the next line to split
+        self._buf: list[tuple[str, int]] = []
+        self._k = 0  # position in _buf
+
+    def _fill(self) -> bool:
+        while self._k >= len(self._buf):
+            if self._line >= len(self.lines):
+                return False
+            n = self._line + 1
+            self._buf = [(t, n) for t in self.lines[self._line].split()]
+            self._k = 0
+            self._line += 1
+        return True
 
     def peek(self) -> tuple[str | None, int]:
-        return self.toks[self.pos] if self.pos < len(self.toks) else (None, self.eof_line)
+        return self._buf[self._k] if self._fill() else (None, self.eof_line)
 
     def next(self) -> tuple[str | None, int]:
         tok = self.peek()
-        self.pos += 1
+        self.advance()
         return tok
+
+    def advance(self) -> None:
+        if self._fill():
+            self._k += 1
 
     def error(self, line: int, message: str) -> BVHError:
         return BVHError(self.path, line, message)
@@ -98,7 +117,7 @@ class _Tokens:
                 vals.append(float(tok))  # type: ignore[arg-type]
             except (TypeError, ValueError):
                 raise self.error(ln, f"{what} needs {n} numbers; got {tok!r}") from None
-            self.pos += 1
+            self.advance()
         arr = np.array(vals)
         if not np.all(np.isfinite(arr)):
             raise self.error(line, f"{what} has non-finite values {vals}")
@@ -123,7 +142,7 @@ def _parse_channels(t: _Tokens, h: _Hierarchy, joint: str, line: int) -> tuple[s
             raise t.error(ln2, f"joint {joint}: bad CHANNELS count: CHANNELS {n} at line {ln} lists {len(names)} "
                                f"channel names, then {tok!r}")
         names.append(tok)
-        t.pos += 1
+        t.advance()
     tok, ln2 = t.peek()
     if _is_channel(tok):
         raise t.error(ln2, f"joint {joint}: bad CHANNELS count: CHANNELS {n} at line {ln} is followed by "
@@ -157,47 +176,58 @@ def _parse_end_site(t: _Tokens, h: _Hierarchy, joint_index: int, line: int) -> N
         raise t.error(ln, f"unbalanced braces: End Site opened at line {line} is not closed (got {tok!r})")
 
 
-def _parse_joint(t: _Tokens, h: _Hierarchy, name: str, parent: int, line: int) -> None:
-    """Parse ``{ OFFSET ... CHANNELS ... children }`` of joint ``name`` (recursive)."""
+def _open_joint(t: _Tokens, h: _Hierarchy, name: str, parent: int, line: int) -> int:
+    """Register joint ``name`` after checking its ``{``; returns its index."""
     if name in h.names:
         raise t.error(line, f"joint name {name!r} appears twice")
     tok, ln = t.next()
     if tok != "{":
         raise t.error(ln, f"expected '{{' after joint {name}; got {tok!r}")
-    j = len(h.names)
     h.names.append(name)
     h.parents.append(parent)
     h.offsets.append(None)  # type: ignore[arg-type]
     h.orders.append("")
     h.rot_cols.append([])
     h.pos_cols.append(None)
-    has_channels = False
-    while True:
+    return len(h.names) - 1
+
+
+def _parse_joints(t: _Tokens, h: _Hierarchy, root: str, line: int) -> None:
+    """Parse the ROOT joint and everything below it: ``{ OFFSET ... CHANNELS ...
+    children }``. Iterative (an explicit stack of open joints), so any nesting depth
+    reads without recursion."""
+    stack = [(_open_joint(t, h, root, -1, line), line)]  # (joint index, line of its name)
+    has_channels = {stack[0][0]: False}
+    while stack:
+        j, jline = stack[-1]
+        name = h.names[j]
         tok, ln = t.next()
         if tok == "OFFSET":
             h.offsets[j] = t.floats(3, f"joint {name}: OFFSET", ln)
         elif tok == "CHANNELS":
-            if has_channels:
+            if has_channels[j]:
                 raise t.error(ln, f"joint {name}: second CHANNELS line")
             h.orders[j], h.rot_cols[j], h.pos_cols[j] = _parse_channels(t, h, name, ln)
-            has_channels = True
+            has_channels[j] = True
         elif tok == "JOINT":
             child, cl = t.next()
             if child is None or child in "{}":
                 raise t.error(cl, f"JOINT without a name under {name}")
-            _parse_joint(t, h, child, j, cl)
+            c = _open_joint(t, h, child, j, cl)
+            has_channels[c] = False
+            stack.append((c, cl))
         elif tok == "End":
             _parse_end_site(t, h, j, ln)
         elif tok == "}":
-            break
+            if h.offsets[j] is None:
+                raise t.error(jline, f"joint {name} has no OFFSET")
+            if not has_channels[j]:
+                raise t.error(jline, f"joint {name} has no CHANNELS (each joint needs three rotation channels)")
+            stack.pop()
         elif tok is None or tok == "MOTION":
-            raise t.error(ln, f"unbalanced braces: joint {name} opened at line {line} is never closed")
+            raise t.error(ln, f"unbalanced braces: joint {name} opened at line {jline} is never closed")
         else:
             raise t.error(ln, f"joint {name}: unexpected {tok!r} (expected OFFSET, CHANNELS, JOINT, End Site or '}}')")
-    if h.offsets[j] is None:
-        raise t.error(line, f"joint {name} has no OFFSET")
-    if not has_channels:
-        raise t.error(line, f"joint {name} has no CHANNELS (each joint needs three rotation channels)")
 
 
 def _parse_hierarchy(t: _Tokens) -> _Hierarchy:
@@ -211,7 +241,7 @@ def _parse_hierarchy(t: _Tokens) -> _Hierarchy:
     if name is None or name in "{}":
         raise t.error(nl, "ROOT without a name")
     h = _Hierarchy()
-    _parse_joint(t, h, name, -1, nl)
+    _parse_joints(t, h, name, nl)
     tok, ln = t.peek()
     if tok == "}":
         raise t.error(ln, "unbalanced braces: '}' without a matching '{'")
@@ -276,6 +306,10 @@ def _parse_frames(lines: list[str], motion_idx: int, n_channels: int, path: Path
         frame_time = np.nan
     if not (np.isfinite(frame_time) and frame_time > 0):
         raise BVHError(path, k + 1, f"bad 'Frame Time:' value {val!r} (expected a positive number of seconds)")
+    fps = 1.0 / frame_time
+    if not (FPS_RANGE[0] <= fps <= FPS_RANGE[1]):
+        raise BVHError(path, k + 1, f"'Frame Time: {val}' means {fps:.4g} frames per second, outside "
+                                    f"{FPS_RANGE[0]:g}-{FPS_RANGE[1]:,.0f} (the value is in seconds per frame)")
     first = k + 1
     body = lines[first:]
     try:
@@ -320,17 +354,28 @@ def _to_motion(h: _Hierarchy, data: np.ndarray, frame_time: float, scale: float)
     return Motion(skeleton, root_pos, qfix(rotations, axis=0), 1.0 / frame_time, translations)
 
 
-def read_bvh(path: str | Path, scale: float = 1.0) -> Motion:
+def read_bvh(path: str | Path, scale: float = 1.0, encoding: str = "utf-8") -> Motion:
     """Read a BVH file; every length is multiplied by ``scale`` (cm per file unit).
 
-    Raises :class:`BVHError` naming the file and line for malformed input.
+    The file is text in ``encoding`` (UTF-8, with or without a byte-order mark, by
+    default; pass e.g. ``"latin-1"`` for older files with accented joint names). Raises
+    :class:`BVHError` naming the file and line for malformed input, including bytes that
+    are not valid in ``encoding`` (never a silently garbled joint name).
     """
     path = Path(path)
     try:
         raw = path.read_bytes()
     except OSError as exc:
         raise BVHError(path, None, f"cannot read ({exc.strerror or exc})") from exc
-    text = raw.decode("utf-8", errors="replace").replace("\r\n", "\n").replace("\r", "\n")
+    try:
+        text = raw.decode(encoding)
+    except UnicodeDecodeError as exc:
+        line = raw.count(b"\n", 0, exc.start) + 1
+        raise BVHError(path, line, f"byte 0x{raw[exc.start]:02x} is not valid {encoding} text (re-save the file "
+                                   f"as UTF-8, or read it with the encoding it was written in)") from None
+    except LookupError as exc:
+        raise BVHError(path, None, f"unknown text encoding {encoding!r}") from exc
+    text = text.removeprefix("\ufeff").replace("\r\n", "\n").replace("\r", "\n")
     m = _MOTION_RE.search(text)
     header_end = text.count("\n", 0, m.start()) if m else None
     lines = text.split("\n")
@@ -442,4 +487,4 @@ def write_bvh(path: str | Path, motion: Motion, scale: float = 1.0, fmt: str = "
             f.write("\n".join(lines) + "\n")
             f.write(body)
 
-    _atomic_write(path, write)
+    atomic_write(path, write)

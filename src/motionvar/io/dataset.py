@@ -7,8 +7,6 @@ lengths, fps and length differ per clip. Writes are atomic: a failed save leaves
 
 from __future__ import annotations
 
-import os
-import tempfile
 from collections.abc import Iterator, Sequence
 from dataclasses import dataclass
 from pathlib import Path
@@ -18,6 +16,7 @@ import pandas as pd
 
 from ..core.motion import Motion
 from ..core.skeleton import Skeleton
+from .atomic import atomic_write
 
 CLIPS_FILE = "clips.npz"
 METADATA_FILE = "metadata.csv"
@@ -25,19 +24,6 @@ METADATA_FILE = "metadata.csv"
 
 class DatasetError(ValueError):
     """A packed dataset that cannot be read or written; the message names the file."""
-
-
-def _atomic_write(path: Path, write) -> None:
-    """Call ``write(tmp_path)`` and move the result onto ``path`` only if it succeeded."""
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=path.suffix)
-    os.close(fd)
-    try:
-        write(tmp)
-        os.replace(tmp, path)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
 
 
 def save_dataset(directory: str | Path, motions: Sequence[Motion], metadata: pd.DataFrame) -> None:
@@ -86,8 +72,8 @@ def save_dataset(directory: str | Path, motions: Sequence[Motion], metadata: pd.
         with open(tmp, "wb") as fh:  # a file object: np.savez would append .npz to the temporary name
             np.savez(fh, **arrays)
 
-    _atomic_write(directory / CLIPS_FILE, write_clips)
-    _atomic_write(directory / METADATA_FILE, lambda tmp: meta.to_csv(tmp, index=False))
+    atomic_write(directory / CLIPS_FILE, write_clips)
+    atomic_write(directory / METADATA_FILE, lambda tmp: meta.to_csv(tmp, index=False))
 
 
 @dataclass

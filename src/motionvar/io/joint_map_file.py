@@ -66,4 +66,4 @@ def load_joint_map(path: str | Path) -> JointMap:
     twice = sorted({n for n in listed if listed.count(n) > 1})
     if twice:
         raise JointMapError(f"{path}: joints listed more than once in groups: {twice}")
-    return JointMap.from_dict({"joints": joints, "groups": groups})
+    return JointMap.from_dict({"joints": joints, "groups": groups}, origin=str(path))

@@ -2,46 +2,24 @@
 settings in ``<base>.json`` (no pickle anywhere; torch weights are a ``state_dict`` in
 ``<base>.pt``, read back with ``weights_only=True``, beside the same JSON).
 
-Both files are written through a temporary file in the same folder and renamed into
-place, so an interrupted save leaves no half-written model; they are readable by all
-(mode 0644).
+Both files are written atomically (:mod:`motionvar.io.atomic`): an interrupted save leaves
+no half-written model, and the files get an ordinary file's mode.
 """
 
 from __future__ import annotations
 
 import json
-import os
-import tempfile
 from pathlib import Path
 from typing import Any, Callable
 
 import numpy as np
 
-FILE_MODE = 0o644
-
+from .atomic import atomic_write
 
 def model_base(path: str | Path) -> Path:
     """``path`` without a model suffix (``.npz``, ``.json``, ``.pt``)."""
     path = Path(path)
     return path.with_suffix("") if path.suffix in (".npz", ".json", ".pt") else path
-
-
-def atomic_write(path: str | Path, write: Callable[[Path], None]) -> Path:
-    """Call ``write(tmp)`` on a temporary file beside ``path``, then rename it to ``path``
-    (mode 0644). The temporary file is removed if ``write`` fails."""
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
-    os.close(fd)
-    tmp = Path(tmp)
-    try:
-        write(tmp)
-        os.chmod(tmp, FILE_MODE)
-        tmp.replace(path)
-    except BaseException:
-        tmp.unlink(missing_ok=True)
-        raise
-    return path
 
 
 def _write_npz(arrays: dict[str, np.ndarray]) -> Callable[[Path], None]:

@@ -15,7 +15,6 @@ from __future__ import annotations
 import base64
 import html
 import os
-import tempfile
 from collections.abc import Sequence
 from pathlib import Path
 
@@ -26,6 +25,7 @@ from matplotlib.collections import LineCollection
 from PIL import Image
 
 from ..core.motion import Motion
+from ..io.atomic import atomic_write
 from .stick import check_positions, bone_segments, draw_pose, project, view_axis
 
 MAX_GIF_BYTES = 3_000_000
@@ -149,10 +149,10 @@ def write_gif(path: str | Path, frames: np.ndarray, fps: float = 20.0, max_bytes
     large (ValueError otherwise, naming the file and its size).
     """
     path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".gif")
-    os.close(fd)
-    try:
+    size = 0
+
+    def write(tmp: Path) -> None:
+        nonlocal size
         iio.imwrite(tmp, quantize_frames(np.asarray(frames)), extension=".gif", duration=1000.0 / fps, loop=0)
         size = os.path.getsize(tmp)
         if size > max_bytes:
@@ -160,13 +160,8 @@ def write_gif(path: str | Path, frames: np.ndarray, fps: float = 20.0, max_bytes
                 f"{path}: GIF would be {size / 1e6:.1f} MB, over the {max_bytes / 1e6:.1f} MB limit "
                 "(show fewer clips, fewer seconds or smaller panels)"
             )
-        umask = os.umask(0)
-        os.umask(umask)
-        os.chmod(tmp, 0o666 & ~umask)  # mkstemp made it private; give it a normal file's mode
-        os.replace(tmp, path)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
+
+    atomic_write(path, write)
     return size
 
 
