@@ -2,53 +2,18 @@
 bad input gives one clear error line naming the file or config key, exit status 1, and
 no output file."""
 
-import importlib.util
 import json
-import sys
 from pathlib import Path
 
 import numpy as np
 import pandas as pd
 import pytest
+from rule_scripts import FakeSnakemake, Named, run, script
 
 from motionvar.claims import CLAIM_COLUMNS, Claim, write_claims
 from motionvar.core import Motion, cmu_skeleton
 from motionvar.core.quaternions import qidentity
 from motionvar.io.bvh import write_bvh
-
-SCRIPTS = Path(__file__).resolve().parents[1] / "workflow" / "scripts"
-sys.path.insert(0, str(SCRIPTS))
-from _rule import run  # noqa: E402
-
-
-class Named(list):
-    """Snakemake's named lists: a list whose entries may also be attributes."""
-
-    def __init__(self, items=(), **named):
-        super().__init__([*items, *named.values()])
-        self._named = named
-        self.__dict__.update(named)
-
-    def items(self):
-        return self._named.items()
-
-
-class FakeSnakemake:
-    def __init__(self, tmp_path, rule, input=None, output=None, params=None, wildcards=None):
-        self.rule = rule
-        self.input = input or Named()
-        self.output = output or Named()
-        self.params = params or Named()
-        self.wildcards = wildcards or Named(dataset="test")
-        self.log = Named([str(tmp_path / f"{rule}.log")])
-        self.threads = 1
-
-
-def script(name):
-    spec = importlib.util.spec_from_file_location(f"script_{name}", SCRIPTS / f"{name}.py")
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)  # no `snakemake` global: only defines main()
-    return module
 
 
 def claim(i, verdict="reproduced", paper="du2022"):
@@ -187,4 +152,19 @@ def test_data_script_names_the_dataset_and_the_file(tmp_path, capsys, labels, en
         run(fake, script("data").main)
     err = capsys.readouterr().err
     assert err.startswith("ERROR rule data: datasets.mine: ") and expected in err
+    assert not out.exists() or not any(out.iterdir())
+
+
+def test_data_script_reads_a_deeply_nested_rig(tmp_path, capsys):
+    """A hierarchy nested 1,000 deep once stopped the data rule with a bare RecursionError."""
+    from test_bvh import _chain_bvh
+
+    folder = tmp_path / "bvh"
+    folder.mkdir()
+    (folder / "deep.bvh").write_text(_chain_bvh(1_000))
+    (folder / "labels.csv").write_text("file,subject,behaviour,style\ndeep.bvh,s1,walk,neutral\n")
+    out, fake = data_fake(tmp_path, bvh_entry(folder))
+    with pytest.raises(SystemExit):  # it reads; the CMU joint map then does not fit this rig
+        run(fake, script("data").main)
+    assert "joints not in the skeleton" in capsys.readouterr().err
     assert not out.exists() or not any(out.iterdir())
