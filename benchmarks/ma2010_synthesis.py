@@ -28,25 +28,19 @@ from scipy.spatial.distance import cdist  # noqa: E402
 
 from motionvar.core import cmu_joint_map  # noqa: E402
 from motionvar.io import load_dataset  # noqa: E402
-from motionvar.ma2010 import StyleVariationModel, build_clipset, root_solver  # noqa: E402
-from motionvar.ma2010.correspondence import standard_skeleton  # noqa: E402
-from motionvar.ma2010.examples import collect_cycles, rows_matching  # noqa: E402
+from motionvar.ma2010 import StyleVariationModel, root_solver  # noqa: E402
+from motionvar.ma2010.examples import walk_cycles  # noqa: E402
 from motionvar.ma2010.synthesis import realtime_clips, stitch  # noqa: E402
 
 PAPER_SECONDS_PER_SECOND = 0.15
 
 
 def fit_model(data_dir: Path, n_frames: int):
-    data = load_dataset(data_dir)
-    meta = data.metadata
-    idx = rows_matching(meta, behaviour="walk", style=["neutral"], variant=["forward"], what=str(data_dir))
     jm = cmu_joint_map()
-    cycles, keys, table = collect_cycles([data.motion(int(i)) for i in idx], meta["clip_id"].iloc[idx].tolist(), jm)
-    sk = standard_skeleton([c.skeleton for c in cycles])
-    clips = build_clipset(cycles, keys, sk, jm, n_frames, clip_ids=table["clip_id"].tolist())
+    clips, table = walk_cycles(load_dataset(data_dir), jm, ["neutral"], ["forward"], n_frames, what=str(data_dir))
+    sk = clips.skeleton
     model = StyleVariationModel(jm.group_indices(sk), "lower_first").fit(clips)
-    n_subjects = meta["subject"].iloc[idx].nunique()
-    return model, clips, root_solver(sk, jm), n_subjects
+    return model, clips, root_solver(sk, jm), table["subject"].nunique()
 
 
 def staged_synthesis(model, style, n_clips, solver, rng) -> tuple[dict[str, float], float]:

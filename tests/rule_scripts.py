@@ -27,6 +27,14 @@ def rule_module() -> ModuleType:
     return sys.modules["_rule"]
 
 
+def helper_module(name: str) -> ModuleType:
+    """A paper's loader module ``workflow/scripts/_<paper>.py``, registered under its
+    name for the scripts' imports."""
+    if name not in sys.modules:
+        sys.modules[name] = _load(name, name)
+    return sys.modules[name]
+
+
 def script(name: str) -> ModuleType:
     """The rule script ``workflow/scripts/<name>.py`` as a module (call its ``main``)."""
     rule_module()

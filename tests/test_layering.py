@@ -104,11 +104,12 @@ SCRIPTS = SRC.parents[1] / "workflow" / "scripts"
 MAX_SCRIPT_LINES = 40
 
 
-@pytest.mark.parametrize("path", sorted(SCRIPTS.glob("*.py")), ids=lambda p: p.name)
+@pytest.mark.parametrize("path", sorted(p for p in SCRIPTS.glob("*.py") if p.name != "_rule.py"), ids=lambda p: p.name)
 def test_rule_scripts_are_thin(path):
-    """A rule script reads its inputs and params, calls the library and writes outputs:
-    under 40 lines, and it builds no claim (claims come from the evaluation that measured
-    them)."""
+    """A rule script (and a paper's loader module ``_<paper>.py``) reads its inputs and
+    params, calls the library and writes outputs: under 40 lines, and it builds no claim
+    (claims come from the evaluation that measured them). ``_rule.py`` is the shared
+    runner (logging, error lines, output writing), not a rule script."""
     text = path.read_text()
     n_lines = len(text.splitlines())
     assert n_lines < MAX_SCRIPT_LINES, f"{path.name}: {n_lines} lines (a rule script stays under {MAX_SCRIPT_LINES})"

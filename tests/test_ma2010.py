@@ -8,7 +8,7 @@ from motionvar.core import Motion, cmu_joint_map
 from motionvar.core.quaternions import qdistance_sinusoidal, qmul, qnormalize, quat_about_axis
 from motionvar.ma2010 import (
     PropagationNetwork, StyleVariationModel, UniversalKriging, build_clipset, choose_structure, cut, extract_cycles,
-    fit_variogram, normalized_strides, root_solver,
+    fit_variogram, normalized_strides, resolve_structure, root_solver, structure_evidence,
 )
 from motionvar.ma2010.correspondence import (
     reference_key_positions, retime, space_warp, standard_skeleton, time_warp,
@@ -292,10 +292,28 @@ def test_model_rejects_bad_groups_and_structure(toy_clips):
     groups = JM.group_indices(toy_clips.skeleton)
     with pytest.raises(ValueError, match="missing"):
         StyleVariationModel({k: v for k, v in groups.items() if k != "legs"}).fit(toy_clips, 1, 0)
-    with pytest.raises(ValueError, match="needs d_lower"):
-        StyleVariationModel(groups).fit(toy_clips)
     with pytest.raises(ValueError, match="unknown structure"):
         StyleVariationModel(groups, structure="sideways").fit(toy_clips)
+
+
+def test_auto_structure_measures_d_l_and_d_u_of_the_examples(toy_clips):
+    """Fig. 5 "auto": with D_l and D_u not given, the model measures them on its examples
+    (Eq. 3 over every clip's frames); walking moves the legs most, so lower-first."""
+    from motionvar.core.kinematics import fk
+
+    groups = JM.group_indices(toy_clips.skeleton)
+    d_l, d_u = structure_evidence(toy_clips, groups)
+    sk = toy_clips.skeleton
+    upper = np.setdiff1d(np.arange(sk.n_joints), groups["legs"])
+    per_clip = [keyframe_signal(fk(r, np.zeros((len(r), 3)), sk.offsets, sk.parents), groups["legs"], upper)
+                for r in toy_clips.rotations]
+    assert d_l == pytest.approx(np.sqrt(sum(s.d_lower**2 for s in per_clip)))
+    assert d_u == pytest.approx(np.sqrt(sum(s.d_upper**2 for s in per_clip))) and d_l > d_u
+    assert resolve_structure("auto", toy_clips, groups) == "lower_first"
+    assert resolve_structure("upper_first", toy_clips, groups) == "upper_first"
+    model = StyleVariationModel(groups).fit(toy_clips)
+    assert model.network_.structure == LOWER_FIRST and model.timing_group_ == "legs"
+    assert StyleVariationModel(groups).fit(toy_clips, d_lower=0, d_upper=1).network_.structure == UPPER_FIRST
 
 
 def test_realtime_clips_match_one_by_one_retiming(toy_clips):

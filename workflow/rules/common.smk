@@ -59,7 +59,7 @@ def validate_config(schema_path):
 
 
 def config_params(section, keys):
-    """The keys of ``config[section]`` a rule reads, for its ``params:`` (so that editing
+    """The keys of ``config[section]`` that a job reads, as its params (so that editing
     another key of the section does not rerun it). A dotted key ("search.beam") reaches
     into a subsection and is returned under its last part."""
     part = config[section]

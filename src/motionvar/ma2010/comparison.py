@@ -1,5 +1,6 @@
-"""Long sequences from every method of Ma et al. 2010, Sec. 7.4, and the measures that
-compare them (naturalness, and variation between sequences of one method).
+"""Long sequences from every method of Ma et al. 2010, Sec. 7.4 (ours, Perlin noise, a
+GPLVM along a helix, RBF, style-only Kriging, a DBN: :func:`method_sequences`), and the
+measures that compare them (naturalness, and variation between sequences of one method).
 
 Every method outputs local rotations; the root of every sequence is then recovered by the
 same footskate cleanup (Sec. 6.3), so that the methods differ only in their poses.
@@ -14,7 +15,7 @@ import numpy as np
 
 from .baselines.dbn import LauDBN
 from .baselines.gplvm import helix_trajectory
-from .baselines.mukai_kuriyama import StyleClipInterpolation
+from .baselines.mukai_kuriyama import StyleClipInterpolation, mk05_kriging, rose98_rbf
 from .baselines.perlin import add_rotation_noise
 from ..core.motion import Motion
 from ..models.bayesian_gplvm import BayesianGPLVM
@@ -25,6 +26,10 @@ from ..metrics.pose_distance import nearest_pose_distance, pose_features, pose_s
 from .representation import ClipSet, PoseCodec
 from .svi import StyleVariationModel
 from .synthesis import RootSolver, realtime_clips, sequence_motion, stitch
+
+METHODS = ("ours", "perlin", "gplvm", "rbf", "kriging", "dbn")
+LABELS = {"ours": "ours (Ma 2010)", "perlin": "Perlin noise", "gplvm": "GPLVM helix", "rbf": "RBF",
+          "kriging": "Kriging (MK05)", "dbn": "DBN (Lau 2009)"}
 
 
 def clips_for_duration(clips: ClipSet, seconds: float) -> int:
@@ -83,6 +88,58 @@ def dbn_sequence(dbn: LauDBN, codec: PoseCodec, n_frames: int, solver: RootSolve
     bad = ~np.all(np.isfinite(vectors) & (np.abs(vectors) < np.pi), axis=1)
     stop = int(np.argmax(bad)) if bad.any() else n_frames
     return solver.motion(codec.decode(vectors[: max(stop, 4)]), fps)
+
+
+def method_sequences(
+    examples: ClipSet,
+    groups: Mapping[str, np.ndarray],
+    solver: RootSolver,
+    seconds: float,
+    n_sequences: int = 3,
+    seed: int = 0,
+    *,
+    structure: str = "auto",
+    variogram_model: str = "linear",
+    perlin_amplitude: float = 0.1,
+    perlin_frequency_hz: float = 1.0,
+    gplvm_latent_dim: int = 3,
+    gplvm_iterations: int = 200,
+    gplvm_frame_step: int = 4,
+    dbn_max_parents: int = 8,
+) -> dict[str, list[Motion]]:
+    """Sec. 7.4: ``n_sequences`` sequences of about ``seconds`` s per method (method ->
+    list of Motion, methods in :data:`METHODS` order), every method learning from the same
+    ``examples``: ours (the model of Sec. 5-6, xi sampled per cycle), Perlin noise on the
+    examples concatenated in random order, the Bayesian GPLVM (every ``gplvm_frame_step``-th
+    example pose) along a helix, RBF and style-only Kriging at the examples' mean style,
+    and the DBN unrolled (both pose models on :class:`PoseCodec` vectors). Sequence ``s``
+    draws from ``numpy.random.default_rng([seed, s])``."""
+    five, k = examples, n_sequences
+    fps = five.fps
+    style = five.style.mean(axis=0)
+    n_clips = clips_for_duration(five, seconds)
+    n_frames = int(round(seconds * fps)) + 1
+    ours = StyleVariationModel(groups, structure, variogram_model).fit(five)
+    krig = mk05_kriging(variogram_model).fit(five)
+    rbf = rose98_rbf().fit(five)
+    seqs = example_pose_sequences(five)
+    codec = PoseCodec.fit(np.concatenate(seqs))
+    gplvm = BayesianGPLVM(gplvm_latent_dim, max_iter=gplvm_iterations, random_state=seed).fit(
+        np.concatenate([codec.encode(r) for r in seqs])[::gplvm_frame_step])
+    dbn = LauDBN(dbn_max_parents).fit([codec.encode(r) for r in seqs])
+    turns = seconds / float(np.mean(five.key_times[:, -1]))
+    out: dict[str, list[Motion]] = {m: [] for m in METHODS}
+    for s in range(k):  # n_sequences sequences per method
+        rng = np.random.default_rng([seed, s])
+        out["ours"].append(trim(ours_sequence(ours, style, n_clips, solver, rng), seconds))
+        out["perlin"].append(trim(perlin_sequence(five, n_clips, solver, rng, perlin_amplitude, perlin_frequency_hz),
+                                  seconds))
+        out["gplvm"].append(gplvm_sequence(gplvm, codec, n_frames, turns, solver, fps, phase=2 * np.pi * s / k,
+                                           radius_scale=float(rng.uniform(0.9, 1.1))))
+        out["rbf"].append(trim(interpolation_sequence(rbf, style, n_clips, solver, fps), seconds))
+        out["kriging"].append(trim(interpolation_sequence(krig, style, n_clips, solver, fps), seconds))
+        out["dbn"].append(dbn_sequence(dbn, codec, n_frames, solver, fps, rng))
+    return out
 
 
 @dataclass(frozen=True)

@@ -1,12 +1,14 @@
 """Example clips for the model (Ma et al. 2010, Sec. 4): cut locomotion into cycles at
 the key frames, space- and time-warp them, normalize them to the standard skeleton and
-measure their style parameters (stride length per support phase, Sec. 7.2).
+measure their style parameters (stride length per support phase, Sec. 7.2); the walking
+cycles of a dataset (:func:`walk_cycles`) and their loaded form with what the model
+needs (:class:`WalkCycles`).
 """
 
 from __future__ import annotations
 
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 import pandas as pd
@@ -15,9 +17,10 @@ from ..core.joint_map import JointMap
 from ..core.motion import Motion
 from ..core.skeleton import Skeleton
 from ..metrics.stride import stride_lengths
-from .correspondence import movement_direction, reference_key_positions, space_warp, time_warp
+from .correspondence import movement_direction, standard_skeleton, reference_key_positions, space_warp, time_warp
 from .keyframes import Cycle, KeyframeSignal, find_extrema, keyframe_signal, segment_cycles
 from .representation import ClipSet, rest_hip_height
+from .svi import StyleVariationModel
 from .synthesis import RootSolver, rest_foot_heights
 
 
@@ -169,3 +172,72 @@ def rows_matching(metadata: pd.DataFrame, what: str = "metadata", **filters: str
     if not mask.any():
         raise ValueError(f"{what}: no clip with {filters}")
     return np.flatnonzero(mask)
+
+
+CLIPSET_KIND = "ma2010.ClipSet"  # the "kind" of a saved ClipSet (motionvar.io.model_file)
+
+
+def walk_cycles(
+    dataset,
+    joint_map: JointMap,
+    walk_styles: str | Sequence[str] = (),
+    walk_variants: str | Sequence[str] = (),
+    n_frames: int = 64,
+    min_prominence: float = 0.1,
+    min_separation_s: float = 0.1,
+    what: str = "metadata",
+) -> tuple[ClipSet, pd.DataFrame]:
+    """The walking clips of a dataset (``motionvar.io.MotionDataset``) with the given styles
+    and variants cut into gait cycles at their key frames (Eq. 1-4), space- and
+    time-warped onto the mean skeleton (Sec. 4.2), with their style parameters (strides of
+    the left and right support phases, Sec. 7.2). Returns the clips and one table row per
+    cycle (:func:`collect_cycles`' columns, the source clip's subject, style, stride and
+    speed, the two strides and the duration). ValueError naming ``what`` when no clip
+    matches or fewer than 3 cycles come out."""
+    meta = dataset.metadata
+    idx = rows_matching(meta, behaviour="walk", style=walk_styles, variant=walk_variants, what=what)
+    motions = [dataset.motion(int(i)) for i in idx]
+    cycles, keys, table = collect_cycles(
+        motions, meta["clip_id"].iloc[idx].tolist(), joint_map, min_prominence, min_separation_s
+    )
+    if len(cycles) < 3:
+        raise ValueError(
+            f"{what}: {len(idx)} walking clips gave {len(cycles)} complete gait cycles; need at least 3 (more "
+            "subjects, or other walking styles)"
+        )
+    sk = standard_skeleton([c.skeleton for c in cycles])
+    clips = build_clipset(cycles, keys, sk, joint_map, n_frames, clip_ids=table["clip_id"].tolist())
+    src = meta.set_index("clip_id").loc[table["source_clip"]]
+    table["subject"] = src["subject"].astype(str).to_numpy()
+    for col in ("style", "stride_length_cm", "speed_cm_s"):
+        if col in src:
+            table[f"source_{col}"] = src[col].to_numpy()
+    table["left_support_stride_cm"], table["right_support_stride_cm"] = clips.style[:, 0], clips.style[:, 1]
+    table["duration_s"] = clips.key_times[:, -1]
+    return clips, table
+
+
+@dataclass
+class WalkCycles:
+    """The walking cycles of a dataset (:func:`walk_cycles`) as the evaluations use them:
+    the clips, each cycle's subject and the rig's joint map (``source`` names where they
+    came from, for error messages), with the joint groups and the root solver derived."""
+
+    clips: ClipSet
+    subjects: list[str]
+    joint_map: JointMap
+    source: str = "walking cycles"
+    groups: dict = field(init=False, repr=False)  # joint group -> joint indices (Fig. 4)
+    solver: RootSolver = field(init=False, repr=False)  # footskate cleanup on the clips' skeleton
+
+    def __post_init__(self) -> None:
+        self.subjects = [str(s) for s in self.subjects]
+        if len(self.subjects) != self.clips.n_clips:
+            raise ValueError(f"{self.source}: {len(self.subjects)} subjects for {self.clips.n_clips} cycles")
+        self.groups = self.joint_map.group_indices(self.clips.skeleton)
+        self.solver = root_solver(self.clips.skeleton, self.joint_map)
+
+    def fit_model(self, structure: str = "auto", variogram_model: str = "linear") -> StyleVariationModel:
+        """The model of Sec. 5-6 fitted to all the cycles ("auto" structure: Fig. 5 by D_l
+        vs D_u of the cycles)."""
+        return StyleVariationModel(self.groups, structure, variogram_model).fit(self.clips)

@@ -18,6 +18,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..core.kinematics import fk
+from .keyframes import keyframe_signal
 from .kriging import UniversalKriging
 from .network import LOWER_FIRST, STYLE, UPPER_FIRST, PropagationNetwork, choose_structure
 from .representation import ClipCodec, ClipSet
@@ -51,13 +53,40 @@ def check_groups(groups: Mapping[str, np.ndarray], n_joints: int) -> dict[str, n
     return {g: np.asarray(groups[g], dtype=np.int64) for g in GROUP_ORDER}
 
 
+def structure_evidence(clips: ClipSet, groups: Mapping[str, np.ndarray]) -> tuple[float, float]:
+    """D_l and D_u (Eq. 3) over all the examples' frames, for the "auto" structure (Fig. 5):
+    the root-square sum over clips of each clip's D_l and D_u, with the lower body the
+    legs group and the upper body every other joint (Sec. 4.1)."""
+    sk = clips.skeleton
+    lower = np.asarray(groups["legs"], dtype=np.int64)
+    upper = np.setdiff1d(np.arange(sk.n_joints), lower)
+    d_l = d_u = 0.0
+    for rot in clips.rotations:  # loop over clips
+        sig = keyframe_signal(fk(rot, np.zeros((len(rot), 3)), sk.offsets, sk.parents), lower, upper)
+        d_l, d_u = d_l + sig.d_lower**2, d_u + sig.d_upper**2
+    return float(np.sqrt(d_l)), float(np.sqrt(d_u))
+
+
+def resolve_structure(
+    structure: str | Mapping[str, tuple[str, ...]], clips: ClipSet, groups: Mapping[str, np.ndarray]
+) -> str | Mapping[str, tuple[str, ...]]:
+    """``structure`` with "auto" resolved on ``clips`` (Fig. 5: "lower_first" when D_l >=
+    D_u, else "upper_first"); anything else unchanged. For protocols that fit many models
+    to subsets of one example set (leave-one-out) with the structure of the whole set."""
+    if not isinstance(structure, str) or structure != "auto":
+        return structure
+    d_l, d_u = structure_evidence(clips, groups)
+    return "lower_first" if d_l >= d_u else "upper_first"
+
+
 class StyleVariationModel:
     """Ma et al. 2010's model of style and variation for one behaviour.
 
     Args:
         groups: joint group name -> joint indices (``JointMap.group_indices``).
-        structure: "auto" (Fig. 5 by D_l vs D_u, given to :meth:`fit`), "lower_first",
-            "upper_first", or an explicit parent mapping.
+        structure: "auto" (Fig. 5 by D_l vs D_u: given to :meth:`fit`, else measured on
+            its examples by :func:`structure_evidence`), "lower_first", "upper_first", or an
+            explicit parent mapping.
         variogram_model: see :mod:`.kriging` (default "linear").
         flight: predict the root height curve (behaviours with flight phases, Sec. 6.3).
     """
@@ -76,7 +105,9 @@ class StyleVariationModel:
         self.flight = flight
         self.n_bins = n_bins
 
-    def _structure(self, d_lower: float | None, d_upper: float | None) -> dict[str, tuple[str, ...]]:
+    def _structure(
+        self, clips: ClipSet, d_lower: float | None, d_upper: float | None
+    ) -> dict[str, tuple[str, ...]]:
         if isinstance(self.structure, Mapping):
             return dict(self.structure)
         if self.structure == "lower_first":
@@ -85,12 +116,14 @@ class StyleVariationModel:
             return dict(UPPER_FIRST)
         if self.structure == "auto":
             if d_lower is None or d_upper is None:
-                raise ValueError("StyleVariationModel.fit: structure='auto' needs d_lower and d_upper (Eq. 3)")
+                d_lower, d_upper = structure_evidence(clips, self.groups)
             return choose_structure(d_lower, d_upper)
         raise ValueError(f"StyleVariationModel: unknown structure {self.structure!r}")
 
     def fit(self, clips: ClipSet, d_lower: float | None = None, d_upper: float | None = None) -> "StyleVariationModel":
-        """Learn tau (Eq. 7-9), the network (Eq. 10) and the four SVIs (Eq. 11-13)."""
+        """Learn tau (Eq. 7-9), the network (Eq. 10) and the four SVIs (Eq. 11-13).
+        ``d_lower``/``d_upper`` (Eq. 3) choose the "auto" structure; without them they
+        are measured on ``clips`` (:func:`structure_evidence`)."""
         self.groups = check_groups(self.groups, clips.skeleton.n_joints)
         if clips.n_clips < 2:
             raise ValueError(f"StyleVariationModel.fit: need at least 2 example clips, got {clips.n_clips}")
@@ -99,7 +132,7 @@ class StyleVariationModel:
         self.tau_ = determinative_joints(self.eta_, self.groups)
         xi = latent_variation(delta, self.tau_)
         self.xi_ = {g: xi[:, k] for k, g in enumerate(self.tau_)}
-        structure = self._structure(d_lower, d_upper)
+        structure = self._structure(clips, d_lower, d_upper)
         self.network_ = PropagationNetwork(structure).fit(clips.style, self.xi_)
         self.timing_group_ = next(g for g, pa in structure.items() if STYLE in pa)
         self.n_keys_ = len(clips.reference_keys)

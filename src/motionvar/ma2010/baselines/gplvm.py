@@ -1,10 +1,12 @@
-"""GPLVM baseline of Ma et al. 2010, Sec. 7.4: a GPLVM [Law03] learned from the example
-poses, driven along a helix in its latent space to make a long sequence.
+"""GPLVM baseline of Ma et al. 2010, Sec. 7.4: a GPLVM learned from the example poses,
+driven along a helix in its latent space to make a long sequence. This module holds only
+the helix.
 
-The GPLVM itself is the project's Bayesian GPLVM (:class:`motionvar.du2022.fda.functional_gplvm.BayesianGPLVM`,
-Titsias & Lawrence 2010, written for Du 2022): its latent means play the role of the
-latent points of Lawrence's MAP GPLVM, its posterior mean maps latent points to poses.
-This module adds the helix.
+The GPLVM is not the MAP GPLVM of [Law03] that the paper used but the project's shared
+Bayesian GPLVM (:class:`motionvar.models.bayesian_gplvm.BayesianGPLVM`, Titsias &
+Lawrence 2010), a stronger model: its latent means play the role of Lawrence's latent
+points, its posterior mean maps latent points to poses
+(:func:`motionvar.ma2010.comparison.gplvm_sequence`).
 """
 
 from __future__ import annotations
