@@ -23,7 +23,7 @@ import numpy as np
 from motionvar.core import cmu_joint_map
 from motionvar.egges2004 import IdleSettings, PosturePCA, analyse_recording, build_database
 from motionvar.egges2004.baselines import perlin_pcs
-from motionvar.egges2004.evaluation import generation_seconds
+from motionvar.egges2004.evaluations.sec8_speed import generation_seconds
 from motionvar.synth.idle import IdleParams, generate_idle
 from motionvar.synth.subjects import make_subjects
 

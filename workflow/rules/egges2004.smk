@@ -2,33 +2,78 @@
 # posture PCA (Sec. 3.2), one idle database per subject (Sec. 5-6), and the evaluations of
 # Sec. 5.4 (fitting), 6 (repetition) and 8 (identification, real time). Options:
 # config.idle (config/schema.yaml). Inputs: the idle clips of results/{dataset}/prep/.
+# Library: motionvar.egges2004 (the method, pipeline, storage), its evaluations/ and figures.
 
 EGGES = "results/{dataset}/models/egges2004"
+# the fitted model of all subjects: arrays and settings (motionvar.egges2004.storage)
+EGGES_MODEL = {"model": f"{EGGES}/idle_model.npz", "model_settings": f"{EGGES}/idle_model.json"}
+EGGES_PREP = {"clips": f"{PREP}/clips.npz", "metadata": f"{PREP}/metadata.csv", "joint_map": joint_map_input}
 
-register_evaluation(
-    "egges2004_identification", paper="egges2004", extra=["results/{dataset}/figures/egges2004_idle.gif"]
-)
-register_evaluation(
-    "egges2004_repetition", paper="egges2004", extra=["results/{dataset}/figures/egges2004_pc_extrema.png"]
-)
-register_evaluation(
-    "egges2004_fitting",
-    paper="egges2004",
-    extra=[
-        "results/{dataset}/figures/egges2004_category_graph.png",
-        "results/{dataset}/tables/egges2004_categories.csv",
-    ],
-)
-register_evaluation("egges2004_speed", paper="egges2004")
+# evaluation -> its report label, whether it reads the prep clips (and the joint map),
+# the keys of config.idle it reads, memory, further outputs of the rule, and further
+# outputs registered with it for the default target.
+EGGES_EVALUATIONS = {
+    "identification": {
+        "label": "Sec. 8: person identification",
+        "prep": True,
+        "keys": ["seed", "identification", "perlin_frequency_hz", "analysis.support_margin"],
+        "mem_mb": 4000,
+        "outputs": {},
+        "extra": ["results/{dataset}/figures/egges2004_idle.gif"],
+    },
+    "repetition": {
+        "label": "Sec. 6: repetition",
+        "prep": True,
+        "keys": [
+            "seed",
+            "repetition",
+            "perlin_frequency_hz",
+            "figure_subjects",
+            "extrema_pc",
+            "analysis.extrema_eps_sd",
+        ],
+        "mem_mb": 4000,
+        "outputs": {
+            "extrema": in_report(
+                "results/{dataset}/figures/egges2004_pc_extrema.png",
+                "egges2004",
+                "../report/egges2004_pc_extrema.rst",
+                figure="Fig. 7-8",
+                kind="figure",
+            )
+        },
+        "extra": ["results/{dataset}/figures/egges2004_pc_extrema.png"],
+    },
+    "fitting": {
+        "label": "Sec. 5.4.4, Fig. 4-5: fitting",
+        "prep": False,
+        "keys": ["seed", "fitting"],
+        "mem_mb": 3000,
+        "outputs": {},
+        "extra": [
+            "results/{dataset}/figures/egges2004_category_graph.png",
+            "results/{dataset}/tables/egges2004_categories.csv",
+        ],
+    },
+    "speed": {
+        "label": "Sec. 8: real time",
+        "prep": False,
+        "keys": ["seed", "speed"],
+        "mem_mb": 3000,
+        "outputs": {},
+        "extra": [],
+    },
+}
+
+for _ev, _spec in EGGES_EVALUATIONS.items():
+    register_evaluation(f"egges2004_{_ev}", paper="egges2004", extra=_spec["extra"])
 
 
 rule egges2004_model:
     input:
-        clips=f"{PREP}/clips.npz",
-        metadata=f"{PREP}/metadata.csv",
-        joint_map=joint_map_input,
+        **EGGES_PREP,
     output:
-        model=f"{EGGES}/idle_model.pkl",
+        **EGGES_MODEL,
         categories=in_report(
             "results/{dataset}/tables/egges2004_categories.csv",
             "egges2004",
@@ -44,7 +89,9 @@ rule egges2004_model:
             kind="figure",
         ),
     params:
-        options=config["idle"],
+        options=config_params(
+            "idle", ["seed", "held_out_clips", "translation_scale", "analysis", "figure_subjects"]
+        ),
         joint_map=lambda wc: joint_map_path(wc.dataset),
     log:
         ev_log("egges2004_model"),
@@ -59,160 +106,53 @@ rule egges2004_model:
         "../scripts/egges2004_model.py"
 
 
-rule egges2004_identification:
-    input:
-        model=f"{EGGES}/idle_model.pkl",
-        clips=f"{PREP}/clips.npz",
-        metadata=f"{PREP}/metadata.csv",
-        joint_map=joint_map_input,
-    output:
-        table=in_report(
-            ev_table("egges2004_identification"),
-            "egges2004",
-            "../report/egges2004_identification.rst",
-            figure="Sec. 8: person identification",
-            kind="table",
-        ),
-        figure=in_report(
-            ev_figure("egges2004_identification"),
-            "egges2004",
-            "../report/egges2004_identification.rst",
-            figure="Sec. 8: person identification",
-            kind="figure",
-        ),
-        claims=ev_claims("egges2004_identification"),
-    params:
-        options=config["idle"],
-        joint_map=lambda wc: joint_map_path(wc.dataset),
-    log:
-        ev_log("egges2004_identification"),
-    benchmark:
-        ev_benchmark("egges2004_identification")
-    threads: 1
-    resources:
-        mem_mb=4000,
-    conda:
-        ENV
-    script:
-        "../scripts/egges2004_identification.py"
+# One rule per evaluation: table, figure and claims (plus the outputs of its spec).
+for _ev, _spec in EGGES_EVALUATIONS.items():
+    _name = f"egges2004_{_ev}"
 
-
-rule egges2004_repetition:
-    input:
-        model=f"{EGGES}/idle_model.pkl",
-        clips=f"{PREP}/clips.npz",
-        metadata=f"{PREP}/metadata.csv",
-        joint_map=joint_map_input,
-    output:
-        table=in_report(
-            ev_table("egges2004_repetition"),
-            "egges2004",
-            "../report/egges2004_repetition.rst",
-            figure="Sec. 6: repetition",
-            kind="table",
-        ),
-        figure=in_report(
-            ev_figure("egges2004_repetition"),
-            "egges2004",
-            "../report/egges2004_repetition.rst",
-            figure="Sec. 6: repetition",
-            kind="figure",
-        ),
-        claims=ev_claims("egges2004_repetition"),
-        extrema=in_report(
-            "results/{dataset}/figures/egges2004_pc_extrema.png",
-            "egges2004",
-            "../report/egges2004_pc_extrema.rst",
-            figure="Fig. 7-8",
-            kind="figure",
-        ),
-    params:
-        options=config["idle"],
-        joint_map=lambda wc: joint_map_path(wc.dataset),
-    log:
-        ev_log("egges2004_repetition"),
-    benchmark:
-        ev_benchmark("egges2004_repetition")
-    threads: 1
-    resources:
-        mem_mb=4000,
-    conda:
-        ENV
-    script:
-        "../scripts/egges2004_repetition.py"
-
-
-rule egges2004_fitting:
-    input:
-        model=f"{EGGES}/idle_model.pkl",
-    output:
-        table=in_report(
-            ev_table("egges2004_fitting"),
-            "egges2004",
-            "../report/egges2004_fitting.rst",
-            figure="Sec. 5.4.4, Fig. 4-5: fitting",
-            kind="table",
-        ),
-        figure=in_report(
-            ev_figure("egges2004_fitting"),
-            "egges2004",
-            "../report/egges2004_fitting.rst",
-            figure="Sec. 5.4.4, Fig. 4-5: fitting",
-            kind="figure",
-        ),
-        claims=ev_claims("egges2004_fitting"),
-    params:
-        options=config["idle"],
-    log:
-        ev_log("egges2004_fitting"),
-    benchmark:
-        ev_benchmark("egges2004_fitting")
-    threads: 1
-    resources:
-        mem_mb=3000,
-    conda:
-        ENV
-    script:
-        "../scripts/egges2004_fitting.py"
-
-
-rule egges2004_speed:
-    input:
-        model=f"{EGGES}/idle_model.pkl",
-    output:
-        table=in_report(
-            ev_table("egges2004_speed"),
-            "egges2004",
-            "../report/egges2004_speed.rst",
-            figure="Sec. 8: real time",
-            kind="table",
-        ),
-        figure=in_report(
-            ev_figure("egges2004_speed"),
-            "egges2004",
-            "../report/egges2004_speed.rst",
-            figure="Sec. 8: real time",
-            kind="figure",
-        ),
-        claims=ev_claims("egges2004_speed"),
-    params:
-        options=config["idle"],
-    log:
-        ev_log("egges2004_speed"),
-    benchmark:
-        ev_benchmark("egges2004_speed")
-    threads: 1
-    resources:
-        mem_mb=3000,
-    conda:
-        ENV
-    script:
-        "../scripts/egges2004_speed.py"
+    rule:
+        name:
+            _name
+        input:
+            **EGGES_MODEL,
+            **(EGGES_PREP if _spec["prep"] else {}),
+        output:
+            table=in_report(
+                ev_table(_name),
+                "egges2004",
+                f"../report/{_name}.rst",
+                figure=_spec["label"],
+                kind="table",
+            ),
+            figure=in_report(
+                ev_figure(_name),
+                "egges2004",
+                f"../report/{_name}.rst",
+                figure=_spec["label"],
+                kind="figure",
+            ),
+            claims=ev_claims(_name),
+            **_spec["outputs"],
+        params:
+            evaluation=_name,  # names the script: evaluated when the job runs, after the loop
+            options=config_params("idle", _spec["keys"]),
+            **({"joint_map": lambda wc: joint_map_path(wc.dataset)} if _spec["prep"] else {}),
+        log:
+            ev_log(_name),
+        benchmark:
+            ev_benchmark(_name)
+        threads: 1
+        resources:
+            mem_mb=_spec["mem_mb"],
+        conda:
+            ENV
+        script:
+            "../scripts/{params.evaluation}.py"
 
 
 rule egges2004_animation:
     input:
-        model=f"{EGGES}/idle_model.pkl",
+        **EGGES_MODEL,
     output:
         in_report(
             "results/{dataset}/figures/egges2004_idle.gif",
@@ -222,7 +162,7 @@ rule egges2004_animation:
             kind="animation",
         ),
     params:
-        options=config["idle"],
+        options=config_params("idle", ["seed", "animation", "figure_subjects"]),
     log:
         ev_log("egges2004_animation"),
     benchmark:

@@ -1,6 +1,5 @@
-"""Shared by the Egges 2004 rule scripts: joint map, model and recordings, figures."""
-
-from __future__ import annotations
+"""Loaders of the Egges 2004 rule scripts: joint map, fitted model, prep dataset and its
+analysed idle clips; and a figure writer."""
 
 from pathlib import Path
 
@@ -9,30 +8,30 @@ def joint_map(snakemake):
     from motionvar.core import cmu_joint_map
     from motionvar.io.joint_map_file import load_joint_map
 
-    path = snakemake.params.joint_map
-    return load_joint_map(path) if path else cmu_joint_map()
+    return load_joint_map(snakemake.params.joint_map) if snakemake.params.joint_map else cmu_joint_map()
 
 
 def model(snakemake):
-    from motionvar.egges2004.pipeline import load_model
+    from motionvar.egges2004.storage import load_idle_model
 
-    return load_model(snakemake.input.model)
+    return load_idle_model(snakemake.input.model)
 
 
-def recordings(snakemake, idle_model):
-    """(training, held-out) analysed recordings per subject, from the prep dataset."""
-    from motionvar.egges2004.pipeline import model_recordings
-    from motionvar.io import load_dataset
+def prep(snakemake):
+    from motionvar.io import load_dataset  # (the prep dataset, its folder: named in errors)
 
     folder = Path(snakemake.input.clips).parent
-    return model_recordings(idle_model, load_dataset(folder), joint_map(snakemake), str(folder))
+    return load_dataset(folder), str(folder)
 
 
-def figure_subjects(idle_model, options) -> list[str]:
-    return list(idle_model.databases)[: options["figure_subjects"]]
+def recordings(snakemake, idle_model):  # (training, held-out) analysed recordings per subject
+    from motionvar.egges2004.pipeline import model_recordings
+
+    dataset, source = prep(snakemake)
+    return model_recordings(idle_model, dataset, joint_map(snakemake), source)
 
 
-def save(fig, path) -> None:
+def save_figure(fig, path) -> None:
     import matplotlib.pyplot as plt
 
     fig.savefig(path, dpi=110)

@@ -1,34 +1,19 @@
 """Rule egges2004_identification (Egges 2004 Sec. 5.6, 8): does generated idle motion
-identify its person? A classifier trained on windows of each subject's recorded idle
-clips names the subject of generated windows, of held-out recordings and of the Perlin
-baseline."""
+identify its person? (motionvar.egges2004.evaluations.sec8_identification)"""
 
 
 def main(snakemake) -> None:
-    import matplotlib
+    from _egges2004 import joint_map, model, recordings
+    from _rule import write_evaluation
+    from motionvar.egges2004.evaluations import IdentificationParams, identification
+    from motionvar.egges2004.figures import draw_identification
 
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    from _egges2004 import joint_map, model, recordings, save
-    from motionvar.claims import write_claims
-    from motionvar.egges2004.experiments import IdentificationParams, identification
-    from motionvar.egges2004.figures import plot_identification
-
-    o = snakemake.params.options
+    p = snakemake.params.options
     m = model(snakemake)
-    train, held = recordings(snakemake, m)
-    params = IdentificationParams(**o["identification"], perlin_frequency_hz=o["perlin_frequency_hz"])
-    table, confusion, claim = identification(
-        m, train, held, joint_map(snakemake), params, o["analysis"]["support_margin"], o["seed"]
-    )
-    table.to_csv(snakemake.output.table, index=False)
-    fig, (a, b) = plt.subplots(1, 2, figsize=(12, 4.6), gridspec_kw={"width_ratios": [1.5, 1]})
-    plot_identification(a, b, table, confusion)
-    a.set_title(f"Who is it? {len(confusion['labels'])} subjects, {params.window_s:g}-s windows", fontsize=10)
-    fig.tight_layout()
-    save(fig, snakemake.output.figure)
-    write_claims(snakemake.output.claims, [claim])
+    train, held_out = recordings(snakemake, m)
+    params = IdentificationParams(**p["identification"], perlin_frequency_hz=p["perlin_frequency_hz"])
+    result = identification(m, train, held_out, joint_map(snakemake), params, p["support_margin"], p["seed"])
+    write_evaluation(snakemake, result, draw_identification)
 
 
 if "snakemake" in globals():

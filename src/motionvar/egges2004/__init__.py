@@ -2,13 +2,17 @@
 
 - :mod:`.pca`: posture PCA of log-mapped joint rotations plus root translation (Sec. 3.2)
 - :mod:`.categories`: resting segments, posture categories, support ratio (Sec. 5.1, 5.3)
-- :mod:`.graph`: category transition graph, T_min / T_max, shortest routes (Fig. 3, Sec. 7.1)
+- :mod:`.category_graph`: category transition graph, T_min / T_max, shortest routes (Fig. 3, Sec. 7.1)
 - :mod:`.fitting`: posture distance (Eq. 4), best-fitting animation, fitAnim (Fig. 5)
 - :mod:`.database`: one person's idle database (Sec. 5.1-5.3, 5.6)
 - :mod:`.balance`: synthesis of balance changes (Sec. 5.4)
 - :mod:`.variations`: small posture variations (Sec. 6)
 - :mod:`.integration`: idle motion between animations, blending with masks (Sec. 7)
 - :mod:`.engine`: both layers together (Sec. 4, Fig. 9)
+- :mod:`.baselines`: looping a recorded clip, Perlin noise on the PCs (Sec. 1, 6)
+- :mod:`.pipeline`: from a dataset's idle clips to the fitted model of all subjects;
+  :mod:`.storage`: that model as .npz + .json
+- :mod:`.evaluations`: the paper's evaluations, one module each; :mod:`.figures` draws them
 """
 
 from .balance import Event, synthesize_balance, time_scale

@@ -34,7 +34,7 @@ from ..core.motion import Motion
 from .fitting import posture_distance
 
 CATEGORY_ORDER = ("left", "both", "right")
-HORIZONTAL = (0, 2)  # x and z: y is up (DESIGN.md, Conventions)
+HORIZONTAL = (0, 2)  # x and z: y is up (docs/design.md, Conventions)
 
 
 def support_ratio(motion: Motion, joint_map: JointMap) -> np.ndarray:

@@ -1,13 +1,19 @@
-"""Figures for the Egges et al. 2004 evaluations: a PC curve with its extrema (Fig. 7-8),
-the category transition graph (Fig. 3), an animation fitted to new end postures
-(Fig. 4). Each draws into a given matplotlib Axes."""
+"""Figures of the Egges et al. 2004 evaluations. One function per evaluation or figure
+takes its :class:`~motionvar.claims.EvaluationResult` (or figure data) and returns a
+matplotlib Figure: :func:`draw_categories` (Fig. 3), :func:`draw_fitting` (Fig. 4),
+:func:`draw_repetition`, :func:`draw_pc_extrema` (Fig. 7-8), :func:`draw_identification`,
+:func:`draw_speed`. The ``plot_*`` functions draw one panel into a given Axes.
+"""
 
 from __future__ import annotations
 
+import matplotlib.pyplot as plt
 import numpy as np
 from matplotlib.axes import Axes
+from matplotlib.figure import Figure
 from matplotlib.patches import Circle, FancyArrowPatch
 
+from ..claims import EvaluationResult
 from .category_graph import CategoryGraph
 
 
@@ -148,3 +154,93 @@ def plot_speed(ax: Axes, table) -> None:
     ax.set_xticks(x, [f"subject {s}" for s in table["subject"]], fontsize=8)
     ax.set_ylabel("frames per second")
     ax.legend(fontsize=8, loc="upper center")
+
+
+def draw_categories(result: EvaluationResult) -> Figure:
+    """Fig. 3: the category transition graphs of the subjects in ``figure["graphs"]``
+    (:func:`~motionvar.egges2004.evaluations.fig3_categories.category_check`)."""
+    graphs = result.figure["graphs"]
+    fig, axes = plt.subplots(1, len(graphs), figsize=(4.2 * len(graphs), 4.4), squeeze=False)
+    for ax, (s, graph) in zip(axes[0], graphs.items()):
+        plot_category_graph(ax, graph, f"subject {s}")
+    fig.suptitle("Category transition graphs: P(c1 => c2) on the arrows, T_min - T_max in the nodes (Fig. 3)",
+                 fontsize=10)
+    fig.tight_layout()
+    return fig
+
+
+def draw_fitting(result: EvaluationResult) -> Figure:
+    """Fig. 4 (a database shift fitted to new ends), a stretch of balance shifting with
+    its fitted shifts, and the largest junction step per subject and ramp
+    (:func:`~motionvar.egges2004.evaluations.sec5_4_fitting.fitting`)."""
+    f, table = result.figure, result.table
+    fig, axes = plt.subplots(1, 3, figsize=(15, 4.2), gridspec_kw={"width_ratios": [1, 1.6, 1]})
+    plot_fitted_animation(axes[0], f["original"], f["fitted"], f["p"], f["q"], f["fps"])
+    axes[0].set_title(f"Fig. 4: a database shift fitted to new ends (subject {f['subject']})", fontsize=9)
+    t = np.arange(len(f["balance"])) / f["fps"]
+    axes[1].plot(t, f["balance"], color="0.2", lw=1)
+    for start, stop in f["shifts_s"]:
+        axes[1].axvspan(start, stop, color="tab:orange", alpha=0.3, lw=0)
+    axes[1].set_xlabel("time (s)")
+    axes[1].set_ylabel("PC 1")
+    axes[1].set_title(f"{f['balance_s']:g} s of balance shifting: rests and fitted shifts (shaded) join without jumps",
+                      fontsize=9)
+    sub = table[table.test.str.startswith("fitAnim")]
+    for ramp, off in (("linear", -0.2), ("smoothstep", 0.2)):
+        rows = sub[sub.ramp == ramp]
+        axes[2].bar(np.arange(len(rows)) + off, rows["max_junction_step_ratio"], 0.4, label=f"{ramp} offset")
+    quantile = f"{100 * f['quantile']:g} % quantile inside recorded shifts"
+    axes[2].axhline(1.0, color="tab:red", ls="--", lw=1, label=quantile)
+    axes[2].set_xticks(np.arange(len(sub.subject.unique())), sub.subject.unique(), fontsize=7)
+    axes[2].set_xlabel("subject")
+    axes[2].set_ylabel("largest junction step / recorded step")
+    axes[2].legend(fontsize=8)
+    axes[2].set_title("continuity at the junctions", fontsize=9)
+    fig.tight_layout()
+    return fig
+
+
+def draw_identification(result: EvaluationResult) -> Figure:
+    """Accuracy per source and feature set, and the confusion matrix of the generated
+    windows (:func:`~motionvar.egges2004.evaluations.sec8_identification.identification`)."""
+    f = result.figure
+    fig, (a, b) = plt.subplots(1, 2, figsize=(12, 4.6), gridspec_kw={"width_ratios": [1.5, 1]})
+    plot_identification(a, b, result.table, f)
+    a.set_title(f"Who is it? {len(f['labels'])} subjects, {f['window_s']:g}-s windows", fontsize=10)
+    fig.tight_layout()
+    return fig
+
+
+def draw_repetition(result: EvaluationResult) -> Figure:
+    """Best-match normalised cross-correlation per source
+    (:func:`~motionvar.egges2004.evaluations.sec6_repetition.repetition`)."""
+    f = result.figure
+    fig, ax = plt.subplots(figsize=(10, 4.6))
+    plot_repetition(ax, f["pooled"])
+    ax.set_title(f"Repetition within {f['sequence_s']:g}-s sequences ({f['window_s']:g}-s windows, "
+                 f"first {f['n_pcs']} PCs)", fontsize=10)
+    fig.tight_layout()
+    return fig
+
+
+def draw_pc_extrema(data: dict) -> Figure:
+    """Fig. 7-8, one panel per subject
+    (:func:`~motionvar.egges2004.evaluations.fig7_8_extrema.pc_extrema`)."""
+    panels = data["panels"]
+    fig, axes = plt.subplots(len(panels), 1, figsize=(10, 3.2 * len(panels)), squeeze=False)
+    for ax, p in zip(axes[:, 0], panels):
+        plot_pc_extrema(ax, p["x"], p["fps"], p["extrema"], p["is_max"], data["pc"])
+        ax.set_title(f"subject {p['subject']}, clip {p['clip']}: longest resting segment, "
+                     f"epsilon = {data['eps_sd']:g} SD", fontsize=9)
+    fig.tight_layout()
+    return fig
+
+
+def draw_speed(result: EvaluationResult) -> Figure:
+    """Frames generated per second per subject against the playback rate
+    (:func:`~motionvar.egges2004.evaluations.sec8_speed.speed`)."""
+    fig, ax = plt.subplots(figsize=(7, 4))
+    plot_speed(ax, result.table)
+    ax.set_title(f"Idle motion generation, {result.figure['sequence_s']:g}-s sequences (one core)", fontsize=10)
+    fig.tight_layout()
+    return fig

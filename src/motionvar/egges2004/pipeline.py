@@ -1,24 +1,21 @@
 """From a dataset's idle clips to one idle-motion database per person (Egges et al. 2004,
 Sec. 5.6): select the idle clips, hold some out per subject, fit the posture PCA on the
-training clips of all subjects (Sec. 3.2) and build each subject's database; check the
-resting-posture categories against the ground truth where the data has one.
+training clips of all subjects (Sec. 3.2) and build each subject's database; for a
+fitted model, its training and held-out clips analysed again (PC values, support ratio).
+The model is saved by :mod:`.storage`; its categories are checked against the ground
+truth by :mod:`.evaluations.fig3_categories`.
 """
 
 from __future__ import annotations
 
-import os
-import pickle
 from dataclasses import dataclass
-from pathlib import Path
 
-import numpy as np
 import pandas as pd
 
 from ..core.joint_map import JointMap
 from ..core.motion import Motion
 from ..core.skeleton import Skeleton
 from ..io.dataset import MotionDataset
-from .categories import frame_labels, parse_postures, segment_agreement
 from .database import IdleDatabase, IdleSettings, Recording, analyse_recording, build_database
 from .pca import PosturePCA
 
@@ -93,63 +90,6 @@ def fit_idle_model(
         test_clips={s: [str(r["clip_id"]) for r, _ in c] for s, c in test.items()},
     )
     return model, recordings
-
-
-def category_check(model: IdleModel, train: dict[str, list[tuple[pd.Series, Motion]]]) -> pd.DataFrame:
-    """Per subject: the categories found, resting segments, transitions, and (where the
-    metadata has ``idle_postures``) the share of resting segments whose category is the
-    true one and the adjusted Rand index."""
-    rows = []
-    for subject, db in model.databases.items():
-        found, truth = [], []
-        for row, motion in train[subject]:
-            segs, cats = db.segments[str(row["clip_id"])]
-            spec = row.get("idle_postures", "")
-            if isinstance(spec, str) and spec:
-                labels = frame_labels(parse_postures(spec, str(row["clip_id"])), motion.n_frames)
-                found.append((segs, [db.categories.names[c] for c in cats], labels))
-        acc = ari = float("nan")
-        if found:
-            names = [n for f in found for n in f[1]]
-            labels = np.concatenate([f[2] for f in found])
-            offsets = np.concatenate([[0], np.cumsum([len(f[2]) for f in found])[:-1]])
-            segs = np.concatenate([f[0] + o for f, o in zip(found, offsets)])
-            acc, ari = segment_agreement(segs, names, labels)
-        rows.append({
-            "subject": subject,
-            "categories": " ".join(db.categories.names),
-            "resting_segments": int(sum(len(s) for s, _ in db.segments.values())),
-            "balance_shifts": len(db.animations),
-            "rest_speed_threshold": db.rest_speed,
-            "category_accuracy": acc,
-            "category_ari": ari,
-        })
-    return pd.DataFrame(rows)
-
-
-def save_model(path: str | Path, model: IdleModel) -> None:
-    """Pickle the model; a failed write leaves no file."""
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    tmp = path.with_name(f".{path.name}.tmp")
-    try:
-        with open(tmp, "wb") as f:
-            pickle.dump(model, f, protocol=pickle.HIGHEST_PROTOCOL)
-        os.replace(tmp, path)
-    finally:
-        tmp.unlink(missing_ok=True)
-
-
-def load_model(path: str | Path) -> IdleModel:
-    """Read a model written by :func:`save_model`; ValueError naming the file otherwise."""
-    try:
-        with open(path, "rb") as f:
-            model = pickle.load(f)
-    except (OSError, pickle.UnpicklingError, EOFError, AttributeError) as exc:
-        raise ValueError(f"{path}: not a readable idle model ({exc}); rerun rule egges2004_model") from exc
-    if not isinstance(model, IdleModel):
-        raise ValueError(f"{path}: holds a {type(model).__name__}, not an IdleModel")
-    return model
 
 
 def model_recordings(

@@ -1,12 +1,17 @@
 """Small idle-like recordings for the Egges 2004 tests: weight shifts between resting on
-the left foot, the right foot and both, with breathing-like small variations."""
+the left foot, the right foot and both, with breathing-like small variations; and a
+packed dataset of them with the true resting postures."""
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import numpy as np
+import pandas as pd
 
 from motionvar.core import Motion, cmu_skeleton
 from motionvar.core.quaternions import qidentity, quat_about_axis
+from motionvar.io import save_dataset
 
 SHIFT_CM = {"left": 4.0, "both": 0.0, "right": -4.0}  # the pelvis moves over the loaded foot (+x is left)
 
@@ -46,3 +51,26 @@ def toy_recording(
     rot[:, sk.index("Neck1")] = quat_about_axis([1, 0, 0], 0.5 * breath)
     root = np.stack([x, np.full(T, 90.0), np.zeros(T)], axis=1)
     return Motion(skeleton=sk, root_pos=root, rotations=rot, fps=fps), truth
+
+
+SEQUENCES = [
+    ["left", "both", "right", "left", "both", "right"],
+    ["right", "left", "both", "left", "right", "both"],
+    ["both", "right", "left", "both", "left", "right"],
+]
+
+
+def toy_dataset(folder: Path, subjects: int = 3, clips: int = 3) -> Path:
+    """A packed dataset of idle clips ``idle_<s>_<c>`` of subjects 01, 02, ..., each
+    resting six times (3-5 s) with its true postures in ``idle_postures``."""
+    motions, rows = [], []
+    for s in range(subjects):
+        for c in range(clips):
+            rest = list(np.random.default_rng(10 * s + c).uniform(3.0, 5.0, 6))
+            m, truth = toy_recording(SEQUENCES[(s + c) % 3], rest, seed=10 * s + c, lean=0.05 * s)
+            motions.append(m)
+            postures = ";".join(f"{n}:{a}:{b}" for n, a, b in truth)
+            rows.append({"clip_id": f"idle_{s}_{c}", "subject": f"{s + 1:02d}", "behaviour": "idle",
+                         "idle_postures": postures})
+    save_dataset(folder, motions, pd.DataFrame(rows))
+    return folder

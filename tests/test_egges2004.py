@@ -1,10 +1,10 @@
 """Egges et al. 2004 idle motion: PCA, categories, graph, fitting, variations, synthesis,
-integration, on small idle-like recordings built in tests/idle_toy.py."""
+integration, on small idle-like recordings built in tests/egges2004_toy.py."""
 
 import numpy as np
 import pytest
 
-from idle_toy import toy_recording
+from egges2004_toy import toy_recording
 from motionvar.core import Motion, cmu_joint_map, cmu_skeleton
 from motionvar.core.quaternions import qangle, qidentity, quat_about_axis
 from motionvar.egges2004 import (
@@ -288,7 +288,7 @@ def test_blend_with_masks_and_add_variations(toy):
 
 
 def test_window_features_sets():
-    from motionvar.egges2004.evaluation import window_features
+    from motionvar.egges2004.evaluations.sec8_identification import window_features
 
     rng = np.random.default_rng(0)
     pcs, lam = rng.normal(size=(1200, 12)), rng.uniform(0.3, 0.7, 1200)
@@ -304,7 +304,7 @@ def test_window_features_sets():
 
 def test_window_best_match_sees_a_loop():
     from motionvar.egges2004.baselines import loop_frames
-    from motionvar.egges2004.evaluation import window_best_match
+    from motionvar.egges2004.evaluations.sec6_repetition import window_best_match
 
     rng = np.random.default_rng(0)
     clip = np.cumsum(rng.normal(size=(130, 3)), axis=0)
@@ -316,7 +316,7 @@ def test_window_best_match_sees_a_loop():
 
 
 def test_junction_steps():
-    from motionvar.egges2004.evaluation import all_steps, junction_steps
+    from motionvar.egges2004.evaluations.sec5_4_fitting import all_steps, junction_steps
 
     x = np.concatenate([np.zeros(5), np.arange(1, 6) * 2.0])[:, None]
     step, accel = junction_steps(x, np.array([4, 0, 9]), np.ones(1))

@@ -1,0 +1,196 @@
+"""Egges 2004 from a dataset to claims, at library level: idle clips, per-subject
+databases, the model file (.npz + .json) round trip, the evaluations on small idle-like
+recordings and their figures, and bad input named."""
+
+import json
+from dataclasses import fields
+from pathlib import Path
+
+import numpy as np
+import pytest
+import matplotlib.pyplot as plt
+import yaml
+from egges2004_toy import toy_dataset
+from matplotlib.figure import Figure
+
+from motionvar.claims import EvaluationResult
+from motionvar.core import cmu_joint_map
+from motionvar.egges2004 import IdleSettings
+from motionvar.egges2004 import figures
+from motionvar.egges2004.evaluations import (
+    FittingParams, IdentificationParams, RepetitionParams, SpeedParams, category_check, fitting, identification,
+    idle_animation, pc_extrema, repetition, speed,
+)
+from motionvar.egges2004.pipeline import fit_idle_model, idle_clips, model_recordings, split_clips
+from motionvar.egges2004.storage import load_idle_model, save_idle_model
+from motionvar.io import load_dataset
+
+ROOT = Path(__file__).resolve().parents[1]
+@pytest.fixture(autouse=True)
+def _close_figures():
+    yield
+    plt.close("all")
+
+
+@pytest.fixture(scope="module")
+def fitted(tmp_path_factory):
+    folder = toy_dataset(tmp_path_factory.mktemp("prep"))
+    dataset = load_dataset(folder)
+    train, test = split_clips(idle_clips(dataset, "prep"), 1)
+    model, recordings = fit_idle_model(train, test, cmu_joint_map(), IdleSettings(variation_pcs=4), seed=0)
+    return folder, dataset, train, model, recordings
+
+
+def _assert_same(a, b, where="model"):
+    """Exact equality of two fitted objects, field by field (arrays: values, dtype, shape)."""
+    if isinstance(a, np.ndarray):
+        assert isinstance(b, np.ndarray) and a.dtype == b.dtype, where
+        assert np.array_equal(a, b, equal_nan=a.dtype.kind == "f"), where
+    elif hasattr(a, "__dataclass_fields__"):
+        assert type(a) is type(b), where
+        for f in fields(a):
+            _assert_same(getattr(a, f.name), getattr(b, f.name), f"{where}.{f.name}")
+    elif isinstance(a, dict):
+        assert list(a) == list(b), where
+        for k in a:
+            _assert_same(a[k], b[k], f"{where}[{k!r}]")
+    elif isinstance(a, (list, tuple)):
+        assert type(a) is type(b) and len(a) == len(b), where
+        for i, (x, y) in enumerate(zip(a, b)):
+            _assert_same(x, y, f"{where}[{i}]")
+    else:
+        assert type(a) is type(b) and a == b, where
+
+
+def test_model_has_one_database_per_subject_and_round_trips(fitted, tmp_path):
+    folder, dataset, train, model, recordings = fitted
+    assert list(model.databases) == ["01", "02", "03"]
+    assert model.train_clips["01"] == ["idle_0_0", "idle_0_1"] and model.test_clips["01"] == ["idle_0_2"]
+    paths = save_idle_model(tmp_path / "idle_model.npz", model)
+    assert sorted(p.name for p in paths) == ["idle_model.json", "idle_model.npz"]
+    settings = json.loads((tmp_path / "idle_model.json").read_text())
+    assert settings["kind"] == "egges2004_idle_model"
+    assert [s["subject"] for s in settings["subjects"]] == ["01", "02", "03"]
+    with np.load(tmp_path / "idle_model.npz", allow_pickle=False) as z:  # plain arrays only
+        assert "pca.components" in z.files
+    again = load_idle_model(tmp_path / "idle_model.npz")
+    _assert_same(model, again)
+    tr, held = model_recordings(again, dataset, cmu_joint_map(), "prep")
+    assert np.array_equal(tr["02"][1].pcs, recordings["02"][1].pcs) and len(held["03"]) == 1
+
+
+def test_categories_match_the_truth_and_draw(fitted):
+    _, _, train, model, _ = fitted
+    result = category_check(model, train, figure_subjects=2)
+    assert isinstance(result, EvaluationResult) and result.claims == []
+    assert result.table["category_accuracy"].tolist() == [1.0, 1.0, 1.0]
+    assert list(result.figure["graphs"]) == ["01", "02"]
+    assert isinstance(figures.draw_categories(result), Figure)
+
+
+def test_bad_inputs_name_the_problem(fitted, tmp_path):
+    folder, dataset, _, model, _ = fitted
+    with pytest.raises(ValueError, match="subjects .* 3 or fewer idle clips"):
+        split_clips(idle_clips(dataset, "prep"), 3)
+    walks = load_dataset(folder)
+    walks.metadata["behaviour"] = "walk"
+    with pytest.raises(ValueError, match="no idle clips"):
+        idle_clips(walks, "prep")
+    with pytest.raises(FileNotFoundError, match="missing.npz: model file missing"):
+        load_idle_model(tmp_path / "missing.npz")
+    save_idle_model(tmp_path / "m", model)
+    (tmp_path / "bad.npz").write_bytes(b"not an npz")
+    (tmp_path / "bad.json").write_text((tmp_path / "m.json").read_text())
+    with pytest.raises(ValueError, match="bad.npz: not a readable model array file"):
+        load_idle_model(tmp_path / "bad.npz")
+    (tmp_path / "other.npz").write_bytes((tmp_path / "m.npz").read_bytes())
+    (tmp_path / "other.json").write_text(json.dumps({"kind": "ma2010.ClipSet"}))
+    with pytest.raises(ValueError, match="other.json: not a saved egges2004_idle_model"):
+        load_idle_model(tmp_path / "other.npz")
+    with np.load(tmp_path / "m.npz") as z:
+        np.savez(tmp_path / "cut.npz", **{k: z[k] for k in z.files if k != "s1.animations"})
+    (tmp_path / "cut.json").write_text((tmp_path / "m.json").read_text())
+    with pytest.raises(ValueError, match="cut.npz/.json: not a complete idle model .*s1.animations"):
+        load_idle_model(tmp_path / "cut.npz")
+
+
+def test_evaluations_on_toy_subjects(fitted):
+    _, dataset, _, model, recordings = fitted
+    jm = cmu_joint_map()
+    _, held = model_recordings(model, dataset, jm, "prep")
+    result = identification(
+        model, recordings, held, jm, IdentificationParams(window_s=5.0, feature_pcs=4, generated_s=20.0), 0.1, 0
+    )
+    table, (claim,) = result.table, result.claims
+    assert set(table["source"]) == {"recorded (held out)", "generated (Egges 2004)", "Perlin noise on PCs"}
+    assert result.figure["confusion"].sum() == table.query(
+        "source.str.startswith('generated') and features == 'all'", engine="python")["windows"].iloc[0]
+    assert result.figure["labels"] == ["01", "02", "03"] and result.figure["window_s"] == 5.0
+    assert claim.claim_id == "egges2004.sec8.generated_idle_identifies_person"
+    assert isinstance(figures.draw_identification(result), Figure)
+
+    params = RepetitionParams(sequence_s=30.0, window_s=3.0, fps=10.0, loop_clip_s=5.0)
+    result = repetition(model, recordings, params, 0)
+    pooled, (claim,) = result.figure["pooled"], result.claims
+    assert pooled["looped recorded clip"].min() > 0.99 and pooled["looped rest variations"].min() > 0.99
+    assert np.median(pooled["generated variations (Sec. 6)"]) < 0.99
+    assert claim.verdict in ("reproduced", "partial", "not reproduced") and result.figure["n_pcs"] == 4
+    assert isinstance(figures.draw_repetition(result), Figure)
+
+    # windows longer than half the recorded rests: those are left out, the rest is still measured
+    params = RepetitionParams(sequence_s=60.0, window_s=25.0, fps=10.0, loop_clip_s=5.0)
+    result = repetition(model, recordings, params, 0)
+    short = result.table[result.table["source"] == "recorded rest variations"]
+    left_out = short["windows"] == 0
+    assert left_out.any() and short.loc[left_out, "median_best_ncc"].isna().all()
+    assert len(result.figure["pooled"]["generated variations (Sec. 6)"]) == 3 * (60 // 25)
+    assert f"{(~left_out).sum()} of them with recorded resting segments" in result.claims[0].note
+    params = RepetitionParams(sequence_s=60.0, window_s=29.0, fps=10.0, loop_clip_s=5.0)
+    result = repetition(model, recordings, params, 0)
+    assert len(result.figure["pooled"]["recorded rest variations"]) == 0
+    assert result.claims[0].verdict in ("partial", "not reproduced")
+
+    result = fitting(model, FittingParams(pairs=4, sequence_s=20.0, between_s=10.0, figure_balance_s=10.0), 0)
+    assert result.table[["max_start_error_cm", "max_end_error_cm"]].to_numpy().max() < 1e-6
+    assert result.claims[0].verdict in ("reproduced", "partial")
+    f = result.figure
+    assert f["subject"] == "01" and set(f["fitted"]) == {"linear", "smoothstep"}
+    for curve in f["fitted"].values():  # Fig. 4: the fitted shift starts at p and ends at q
+        assert np.isclose(curve[0], f["p"]) and np.isclose(curve[-1], f["q"])
+    assert len(f["balance"]) == int(round(10.0 * f["fps"])) + 1
+    assert isinstance(figures.draw_fitting(result), Figure)
+
+    result = speed(model, SpeedParams(sequence_s=10.0, repeats=1, subjects=1), 0)
+    assert len(result.table) == 1 and result.table["realtime_ratio"].iloc[0] > 1
+    assert result.claims[0].verdict == "reproduced"
+    assert isinstance(figures.draw_speed(result), Figure)
+
+
+def test_extrema_figure_and_animation(fitted):
+    _, _, _, model, recordings = fitted
+    data = pc_extrema(model, recordings, pc=1, eps_sd=0.5, subjects=2)
+    assert [p["subject"] for p in data["panels"]] == ["01", "02"] and data["pc"] == 0
+    for p in data["panels"]:
+        assert len(p["extrema"]) >= 2 and np.all(np.diff(p["extrema"]) > 0) and len(p["is_max"]) == len(p["extrema"])
+    assert isinstance(figures.draw_pc_extrema(data), Figure)
+    motions, labels = idle_animation(model, 2, 1.0, seed=0)
+    assert labels == ["subject 01 (generated)", "subject 02 (generated)"]
+    assert [m.n_frames for m in motions] == [int(round(model.databases["01"].fps)) + 1] * 2
+
+
+def test_config_sections_fill_the_library_options():
+    """The rule scripts pass config.idle's sections to the library's option records: the
+    schema's defaults (plain data) must construct them."""
+
+    def defaults(schema):
+        if schema.get("type") == "object" and "properties" in schema:
+            return {k: defaults(v) for k, v in schema["properties"].items()}
+        return schema.get("default")
+
+    opts = defaults(yaml.safe_load((ROOT / "config" / "schema.yaml").read_text())["properties"]["idle"])
+    assert json.dumps(opts)
+    IdleSettings(**opts["analysis"])
+    IdentificationParams(**opts["identification"], perlin_frequency_hz=opts["perlin_frequency_hz"])
+    RepetitionParams(**opts["repetition"], perlin_frequency_hz=opts["perlin_frequency_hz"])
+    FittingParams(**opts["fitting"])
+    SpeedParams(**opts["speed"])
