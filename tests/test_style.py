@@ -1,5 +1,10 @@
-"""Du 2022 ch. 5 (motionvar.du2022.style): features, networks, losses, training, diversity."""
+"""Du 2022 ch. 5 (motionvar.du2022.style): features, networks, losses, training, model
+files, diversity, and the evaluations (Table 5.1, Tables 5.2-5.3, Fig. 5.4-5.5) with their
+figures."""
 
+import json
+
+import matplotlib.pyplot as plt
 import numpy as np
 import pandas as pd
 import pytest
@@ -273,12 +278,21 @@ def test_save_load_sample_and_distance_matrix(tiny, tmp_path, layout):
     vae, _ = train_vae(maps, cfg, n_samples=2, hidden=(32, 16, 8), latent=4)
     space.save(tmp_path / "ae.pt")
     save_vae(tmp_path / "vae.pt", vae, tuple(maps.shape[1:]), {"primitive": "walk_leftStance", "style": "neutral"})
+    # weights: a plain state dict (weights_only); settings: JSON beside it
+    assert set(torch.load(tmp_path / "vae.pt", weights_only=True)) == set(vae.state_dict())
+    settings = json.loads((tmp_path / "ae.json").read_text())
+    assert settings["kind"] == "du2022_conv_autoencoder" and settings["hparams"]["n_kernels"] == 16
+    assert json.loads((tmp_path / "vae.json").read_text())["map_shape"] == [16, 30]
     space2 = FeatureSpace.load(tmp_path / "ae.pt")
     vae2, shape, info = load_vae(tmp_path / "vae.pt")
     assert shape == (16, 30) and info["style"] == "neutral"
+    # exact round trip: weights and the float32 scaler
+    assert all(torch.equal(a, b) for a, b in zip(space.ae.state_dict().values(), space2.ae.state_dict().values()))
+    assert space2.scaler.mean.dtype == space.scaler.mean.dtype == np.float32
+    assert np.array_equal(space2.scaler.mean, space.scaler.mean) and np.array_equal(space2.scaler.std, space.scaler.std)
     a = sample_features(vae, shape, space, 5, seed=3)
     b = sample_features(vae2, shape, space2, 5, seed=3)
-    assert a.shape == (5, 60, 66) and np.allclose(a, b)
+    assert a.shape == (5, 60, 66) and np.array_equal(a, b)
     assert space2.reconstruction_rmse(prims) == pytest.approx(space.reconstruction_rmse(prims))
     table = style_distance_matrix({"neutral": (vae, shape), "other": (vae2, shape)},
                                   {"neutral": prims.mean(axis=0), "other": prims[0]}, space, 10, seed=0)
@@ -288,6 +302,9 @@ def test_save_load_sample_and_distance_matrix(tiny, tmp_path, layout):
         load_vae(tmp_path / "nope.pt")
     with pytest.raises(ValueError, match="not a saved du2022_vae"):
         load_vae(tmp_path / "ae.pt")
+    (tmp_path / "vae.json").unlink()
+    with pytest.raises(FileNotFoundError, match="vae.json: model file missing"):
+        load_vae(tmp_path / "vae.pt")
 
 
 def test_diagonal_minima():
@@ -352,3 +369,126 @@ def test_primitive_selection_errors_name_what_is_missing(prim_dataset):
         primitive_mask(prim_dataset.metadata.drop(columns="style"), "walk_leftStance", "neutral")
     with pytest.raises(ValueError, match="no clips of primitive 'pick_reach'"):
         select_style_example(prim_dataset.metadata, "pick_reach", "proud")
+
+
+# ---------------------------------------------------------------- from a dataset to the evaluations
+
+@pytest.fixture(scope="module")
+def style_run(tmp_path_factory, layout):
+    """A tiny dataset of one primitive (neutral, proud and old clips), the models fitted
+    on it as the rules fit them (tiny sizes), saved and loaded back."""
+    from motionvar.du2022.style import fit_feature_space, fit_primitive_vae, fit_style_cvae
+    from motionvar.io import load_dataset, save_dataset
+
+    specs = [("neutral", 0.5, 0.3, 2.0)] * 6 + [("proud", 0.3, 0.6, 2.6)] * 2 + [("old", 0.2, 0.1, 1.2)] * 2
+    motions = [toy_walk(n_frames=70, seed=k, swing=sw, arm=arm, speed=sp) for k, (_, sw, arm, sp) in enumerate(specs)]
+    meta = pd.DataFrame({
+        "clip_id": [f"c{k}" for k in range(len(specs))], "primitive": "walk_leftStance",
+        "style": [st for st, *_ in specs], "variant": "forward", "turn_deg": 0.0,
+    })
+    path = tmp_path_factory.mktemp("style_run")
+    save_dataset(path / "data", motions, meta)
+    dataset = load_dataset(path / "data")
+    small = dict(n_samples=2, latent=4, hidden=(32, 16, 8))
+    space, ae_hist = fit_feature_space(dataset, layout, TrainConfig(3, 3e-3, 8, seed=0), window=60, stride=5,
+                                       max_windows=8, n_kernels=16)
+    assert list(ae_hist.columns) == ["epoch", "loss", "seconds", "windows"] and (ae_hist["windows"] == 8).all()
+    space.save(path / "ae.pt")
+    vae, shape, info, _ = fit_primitive_vae(dataset, layout, space, "walk_leftStance", TrainConfig(3, 1e-3, 4), **small)
+    assert shape == (16, 30) and info == {"primitive": "walk_leftStance", "style": "neutral", "n_clips": 6}
+    save_vae(path / "vae.pt", vae, shape, info)
+    cvaes = []
+    for style in ("proud", "old"):
+        cvae, cshape, cinfo, hist = fit_style_cvae(dataset, layout, space, vae, "walk_leftStance", style,
+                                                   TrainConfig(2, 1e-3, 4), alpha=1.0, **small)
+        assert cinfo["example"] in set(meta.loc[meta["style"] == style, "clip_id"]) and (hist["style"] > 0).all()
+        save_vae(path / f"{style}.pt", cvae, cshape, cinfo)
+        cvaes.append(load_vae(path / f"{style}.pt"))
+    return dataset, FeatureSpace.load(path / "ae.pt"), load_vae(path / "vae.pt"), cvaes
+
+
+def test_fitting_is_deterministic(style_run, layout):
+    from motionvar.du2022.style import fit_primitive_vae
+
+    dataset, space, (vae, _, _), _ = style_run
+    again, *_ = fit_primitive_vae(dataset, layout, space, "walk_leftStance", TrainConfig(3, 1e-3, 4),
+                                  n_samples=2, latent=4, hidden=(32, 16, 8))
+    assert all(torch.equal(a, b) for a, b in zip(vae.state_dict().values(), again.state_dict().values()))
+
+
+def test_evaluate_table5_1(style_run, layout):
+    from matplotlib.figure import Figure
+
+    from motionvar.du2022.style import evaluate_table5_1
+    from motionvar.du2022.style.figures import draw_table5_1
+
+    dataset, space, neutral, cvaes = style_run
+    result = evaluate_table5_1(dataset, layout, space, neutral, cvaes, "walk_leftStance", n_samples=20, seed=0)
+    t = result.table
+    assert list(t.columns) == ["model", "style_example_clip", "neutral", "proud", "old", "row_minimum_at",
+                               "published_row_minimum_at"]
+    assert list(t["model"]) == ["neutral", "proud", "old"] and list(t["published_row_minimum_at"]) == list(t["model"])
+    assert t.loc[0, "style_example_clip"] == "mean of the neutral clips"
+    assert (t[["neutral", "proud", "old"]].to_numpy() >= 0).all()
+    (claim,) = result.claims
+    assert claim.claim_id == "du2022.table5_1.diagonal_dominant"
+    n_diag = int((t["row_minimum_at"] == t["model"]).sum())
+    assert claim.measured.startswith(f"{n_diag} of 3 rows")
+    assert claim.verdict == {3: "reproduced", 2: "partial"}.get(n_diag, "not reproduced")
+    fig = draw_table5_1(result)
+    assert isinstance(fig, Figure) and len(fig.axes) == 4  # two heat maps and their colour bars
+    plt.close(fig)
+
+
+def test_evaluate_table5_2(style_run, layout):
+    from motionvar.du2022.style import evaluate_table5_2
+    from motionvar.du2022.style.figures import draw_table5_2
+
+    dataset, space, neutral, cvaes = style_run
+    result = evaluate_table5_2(dataset, layout, space, [neutral, *cvaes], ["walk_leftStance"], n_samples=30,
+                               seed=0, pose_sd_tolerance=0.05)
+    t = result.table
+    assert list(t["model"]) == ["training data", "neutral", "proud", "old"]
+    assert list(t["n"]) == [6, 30, 30, 30] and t["active_latents"].iloc[1:].between(0, 4).all()
+    assert t["published_pose_sd"].notna().all()
+    from motionvar.du2022.style.data import primitive_features
+
+    train = primitive_features(dataset, layout, "walk_leftStance", "neutral", 60)[1]  # resampled to 60 frames
+    assert t.loc[0, "pose_sd"] == round(diversity(train, 21)["pose_sd"], 5)
+    ids = [c.claim_id.split(".")[-1] for c in result.claims]
+    assert ids == ["neutral_pose_sd_close_to_training", "neutral_step_sd_lower_than_training",
+                   "style_pose_sd_lower_than_neutral"]
+    m = t.set_index("model")["pose_sd"]
+    assert result.claims[2].measured == f"{int((m[['proud', 'old']] < m['neutral']).sum())} of 2"
+    plt.close(draw_table5_2(result))
+
+
+def test_evaluate_fig5_4_and_its_animation(style_run, layout):
+    from motionvar.du2022.style import evaluate_fig5_4
+    from motionvar.du2022.style.figures import animate_fig5_4, draw_fig5_4
+
+    dataset, space, neutral, cvaes = style_run
+    result = evaluate_fig5_4(dataset, layout, space, [neutral, *cvaes], n_samples=3, seed=0)
+    assert result.claims == []
+    assert list(result.table["model"]) == ["neutral", "proud", "old"] and (result.table["samples"] == 3).all()
+    rows = result.figure["rows"]
+    assert rows[0][1].shape == (3, 60, 21, 3) and rows[0][2] is None and rows[1][2].shape == (60, 21, 3)
+    (pos, fps, label), = result.figure["animations"]["neutral"]
+    assert label == "walk_leftStance" and fps == pytest.approx(59 / (69 / 120.0))
+    plt.close(draw_fig5_4(result))
+    frames = animate_fig5_4(result, "styles", panel_px=60)
+    assert frames.ndim == 4 and frames.shape[-1] == 3
+    result.figure["animations"]["styles"] = []
+    with pytest.raises(ValueError, match="no styles models to animate"):
+        animate_fig5_4(result, "styles")
+
+
+def test_draw_training():
+    from motionvar.du2022.style.figures import draw_training
+
+    h = pd.DataFrame({"epoch": [1, 2], "loss": [2.0, 1.0]})
+    fig = draw_training(h, {"walk_leftStance": h}, {("walk_leftStance", "proud"): h, ("walk_leftStance", "old"): h})
+    assert [ax.get_title() for ax in fig.axes] == [
+        "conv autoencoder (Eq. 5.1-5.2)", "neutral VAEs (Eq. 5.6)", "CVAEs walk_leftStance (Eq. 5.11)"]
+    assert [line.get_label() for line in fig.axes[2].lines] == ["walk_leftStance/proud", "walk_leftStance/old"]
+    plt.close(fig)

@@ -1,24 +1,10 @@
 # Du 2022 ch. 5: convolutional motion autoencoder, a VAE per motion primitive and a CVAE per
 # style with the Gram-matrix style loss (config.style). Models go to
-# results/{dataset}/models/du2022_style/; evaluations: Table 5.1, Tables 5.2-5.3, Fig. 5.4-5.5.
-
+# results/{dataset}/models/du2022_style/ (<name>.pt state dict + <name>.json settings);
+# evaluations: Table 5.1, Tables 5.2-5.3, Fig. 5.4-5.5 (motionvar.du2022.style.evaluations).
 
 
 include: "du2022_style_helpers.smk"
-
-
-register_evaluation("du2022_table5_1", paper="du2022")
-register_evaluation(
-    "du2022_table5_2", paper="du2022", extra=["results/{dataset}/figures/du2022_style_training.png"]
-)
-register_evaluation(
-    "du2022_fig5_4",
-    paper="du2022",
-    extra=[
-        "results/{dataset}/figures/du2022_fig5_4_neutral.gif",
-        "results/{dataset}/figures/du2022_fig5_4_styles.gif",
-    ],
-)
 
 
 rule style_autoencoder:
@@ -28,9 +14,10 @@ rule style_autoencoder:
         joint_map=joint_map_input,
     output:
         model=f"{STYLE_MODELS}/autoencoder.pt",
+        settings=f"{STYLE_MODELS}/autoencoder.json",
         history=f"{STYLE_MODELS}/autoencoder_history.csv",
     params:
-        cfg=style_params(["seed", "canonical_frames", "autoencoder"]),
+        options=config_params("style", ["seed", "canonical_frames", "autoencoder"]),
         joint_map=lambda wc: joint_map_path(wc.dataset),
     log:
         ev_log("style_autoencoder"),
@@ -50,14 +37,16 @@ rule style_vae:
         clips=f"{PREP}/clips.npz",
         metadata=f"{PREP}/metadata.csv",
         autoencoder=f"{STYLE_MODELS}/autoencoder.pt",
+        autoencoder_settings=f"{STYLE_MODELS}/autoencoder.json",
         joint_map=joint_map_input,
     wildcard_constraints:
         primitive=STYLE_PRIMITIVE_PATTERN,
     output:
         model=f"{STYLE_MODELS}/vae/{{primitive}}.pt",
+        settings=f"{STYLE_MODELS}/vae/{{primitive}}.json",
         history=f"{STYLE_MODELS}/vae/{{primitive}}_history.csv",
     params:
-        cfg=style_params(["seed", "canonical_frames", "vae"]),
+        options=config_params("style", ["seed", "canonical_frames", "vae"]),
         joint_map=lambda wc: joint_map_path(wc.dataset),
     log:
         ev_log("style_vae", "{primitive}"),
@@ -77,16 +66,21 @@ rule style_cvae:
         clips=f"{PREP}/clips.npz",
         metadata=f"{PREP}/metadata.csv",
         autoencoder=f"{STYLE_MODELS}/autoencoder.pt",
+        autoencoder_settings=f"{STYLE_MODELS}/autoencoder.json",
         vae=f"{STYLE_MODELS}/vae/{{primitive}}.pt",
+        vae_settings=f"{STYLE_MODELS}/vae/{{primitive}}.json",
         joint_map=joint_map_input,
     wildcard_constraints:
         primitive=STYLE_PRIMITIVE_PATTERN,
         style=STYLE_STYLE_PATTERN,
     output:
         model=f"{STYLE_MODELS}/cvae/{{primitive}}/{{style}}.pt",
+        settings=f"{STYLE_MODELS}/cvae/{{primitive}}/{{style}}.json",
         history=f"{STYLE_MODELS}/cvae/{{primitive}}/{{style}}_history.csv",
     params:
-        cfg=style_params(["seed", "canonical_frames", "vae", "cvae"]),
+        options=config_params(
+            "style", ["seed", "canonical_frames", "vae.samples_per_input", "vae.latent", "cvae"]
+        ),
         joint_map=lambda wc: joint_map_path(wc.dataset),
     log:
         ev_log("style_cvae", "{primitive}_{style}"),
@@ -101,96 +95,85 @@ rule style_cvae:
         "../scripts/style_cvae.py"
 
 
-rule du2022_table5_1:
-    input:
-        clips=f"{PREP}/clips.npz",
-        metadata=f"{PREP}/metadata.csv",
-        autoencoder=f"{STYLE_MODELS}/autoencoder.pt",
-        vae=style_vaes([STYLE_CFG["distance_primitive"]])[0],
-        cvaes=style_cvaes([STYLE_CFG["distance_primitive"]]),
-        joint_map=joint_map_input,
-    output:
-        table=in_report(ev_table("du2022_table5_1"), "du2022", "../report/du2022_table5_1.rst", table="Table 5.1"),
-        figure=in_report(ev_figure("du2022_table5_1"), "du2022", "../report/du2022_table5_1.rst", figure="Table 5.1"),
-        claims=ev_claims("du2022_table5_1"),
-    params:
-        cfg=style_params(["seed", "canonical_frames", "distance_primitive", "distance_samples"]),
-        joint_map=lambda wc: joint_map_path(wc.dataset),
-    log:
-        ev_log("du2022_table5_1"),
-    benchmark:
-        ev_benchmark("du2022_table5_1")
-    threads: 2
-    resources:
+# The evaluations share one rule body: the prepared clips, the autoencoder, the neutral
+# VAEs of `vaes` and the CVAEs of `cvaes` (primitives) in; table, figure, claims (and
+# GIFs) out; params: the config.style keys listed. The script, workflow/scripts/<evaluation>.py,
+# is named through params (a script: line is evaluated when the job runs, after the loop).
+_DISTANCE_PRIMITIVE = [STYLE_CFG["distance_primitive"]]
+STYLE_EVALUATIONS = {
+    "du2022_table5_1": dict(
+        label="Table 5.1",
+        vaes=_DISTANCE_PRIMITIVE,
+        cvaes=_DISTANCE_PRIMITIVE,
+        keys=["seed", "canonical_frames", "distance_primitive", "distance_samples"],
         mem_mb=3000,
-    conda:
-        ENV
-    script:
-        "../scripts/du2022_table5_1.py"
-
-
-rule du2022_table5_2:
-    input:
-        clips=f"{PREP}/clips.npz",
-        metadata=f"{PREP}/metadata.csv",
-        autoencoder=f"{STYLE_MODELS}/autoencoder.pt",
-        vaes=style_vaes(STYLE_CFG["style_primitives"]),
-        cvaes=style_cvaes(STYLE_CFG["style_primitives"]),
-        joint_map=joint_map_input,
-    output:
-        table=in_report(ev_table("du2022_table5_2"), "du2022", "../report/du2022_table5_2.rst", table="Tables 5.2-5.3"),
-        figure=in_report(ev_figure("du2022_table5_2"), "du2022", "../report/du2022_table5_2.rst", figure="Tables 5.2-5.3"),
-        claims=ev_claims("du2022_table5_2"),
-    params:
-        cfg=style_params(["seed", "canonical_frames", "style_primitives", "diversity_samples", "pose_sd_tolerance"]),
-        joint_map=lambda wc: joint_map_path(wc.dataset),
-    log:
-        ev_log("du2022_table5_2"),
-    benchmark:
-        ev_benchmark("du2022_table5_2")
-    threads: 2
-    resources:
+        extra=[],
+        gifs={},
+    ),
+    "du2022_table5_2": dict(
+        label="Tables 5.2-5.3",
+        vaes=STYLE_CFG["style_primitives"],
+        cvaes=STYLE_CFG["style_primitives"],
+        keys=["seed", "canonical_frames", "style_primitives", "diversity_samples", "pose_sd_tolerance"],
         mem_mb=6000,
-    conda:
-        ENV
-    script:
-        "../scripts/du2022_table5_2.py"
-
-
-rule du2022_fig5_4:
-    input:
-        clips=f"{PREP}/clips.npz",
-        metadata=f"{PREP}/metadata.csv",
-        autoencoder=f"{STYLE_MODELS}/autoencoder.pt",
-        vaes=style_vaes(STYLE_CFG["vae_primitives"]),
-        cvaes=style_cvaes([STYLE_CFG["distance_primitive"]]),
-        joint_map=joint_map_input,
-    output:
-        table=in_report(ev_table("du2022_fig5_4"), "du2022", "../report/du2022_fig5_4.rst", table="Fig. 5.4-5.5"),
-        figure=in_report(ev_figure("du2022_fig5_4"), "du2022", "../report/du2022_fig5_4.rst", figure="Fig. 5.4-5.5"),
-        claims=ev_claims("du2022_fig5_4"),
-        gif_neutral=in_report(
-            "results/{dataset}/figures/du2022_fig5_4_neutral.gif", "du2022", "../report/du2022_fig5_4.rst",
-            figure="Fig. 5.4 animation",
-        ),
-        gif_styles=in_report(
-            "results/{dataset}/figures/du2022_fig5_4_styles.gif", "du2022", "../report/du2022_fig5_4.rst",
-            figure="Fig. 5.5 animation",
-        ),
-    params:
-        cfg=style_params(["seed", "canonical_frames", "figure_samples", "gif_panel_px"]),
-        joint_map=lambda wc: joint_map_path(wc.dataset),
-    log:
-        ev_log("du2022_fig5_4"),
-    benchmark:
-        ev_benchmark("du2022_fig5_4")
-    threads: 2
-    resources:
+        extra=["results/{dataset}/figures/du2022_style_training.png"],
+        gifs={},
+    ),
+    "du2022_fig5_4": dict(
+        label="Fig. 5.4-5.5",
+        vaes=STYLE_CFG["vae_primitives"],
+        cvaes=_DISTANCE_PRIMITIVE,
+        keys=["seed", "canonical_frames", "figure_samples", "gif_panel_px"],
         mem_mb=3000,
-    conda:
-        ENV
-    script:
-        "../scripts/du2022_fig5_4.py"
+        extra=[],
+        gifs={"gif_neutral": "Fig. 5.4 animation", "gif_styles": "Fig. 5.5 animation"},
+    ),
+}
+
+for _style_ev, _style_spec in STYLE_EVALUATIONS.items():
+    _style_caption = f"../report/{_style_ev}.rst"
+    _style_gifs = {  # output gif_<what> -> results/{dataset}/figures/<evaluation>_<what>.gif
+        _style_key: f"results/{{dataset}}/figures/{_style_ev}_{_style_key.removeprefix('gif_')}.gif"
+        for _style_key in _style_spec["gifs"]
+    }
+    register_evaluation(_style_ev, paper="du2022", extra=_style_spec["extra"] + list(_style_gifs.values()))
+
+    rule:
+        name:
+            _style_ev
+        input:
+            clips=f"{PREP}/clips.npz",
+            metadata=f"{PREP}/metadata.csv",
+            autoencoder=f"{STYLE_MODELS}/autoencoder.pt",
+            autoencoder_settings=f"{STYLE_MODELS}/autoencoder.json",
+            vaes=style_vaes(_style_spec["vaes"]),
+            vae_settings=style_vaes(_style_spec["vaes"], "settings"),
+            cvaes=style_cvaes(_style_spec["cvaes"]),
+            cvae_settings=style_cvaes(_style_spec["cvaes"], "settings"),
+            joint_map=joint_map_input,
+        output:
+            table=in_report(ev_table(_style_ev), "du2022", _style_caption, table=_style_spec["label"]),
+            figure=in_report(ev_figure(_style_ev), "du2022", _style_caption, figure=_style_spec["label"]),
+            claims=ev_claims(_style_ev),
+            **{
+                _style_key: in_report(_style_gif, "du2022", _style_caption, figure=_style_spec["gifs"][_style_key])
+                for _style_key, _style_gif in _style_gifs.items()
+            },
+        params:
+            evaluation=_style_ev,
+            options=config_params("style", _style_spec["keys"]),
+            joint_map=lambda wc: joint_map_path(wc.dataset),
+        log:
+            ev_log(_style_ev),
+        benchmark:
+            ev_benchmark(_style_ev)
+        threads: 2
+        resources:
+            mem_mb=_style_spec["mem_mb"],
+        conda:
+            ENV
+        script:
+            "../scripts/{params.evaluation}.py"
 
 
 rule style_training_curves:
@@ -200,7 +183,9 @@ rule style_training_curves:
         cvaes=style_cvaes(STYLE_CFG["style_primitives"], "history"),
     output:
         figure=in_report(
-            "results/{dataset}/figures/du2022_style_training.png", "du2022", "../report/du2022_style_training.rst",
+            "results/{dataset}/figures/du2022_style_training.png",
+            "du2022",
+            "../report/du2022_style_training.rst",
             figure="training curves (ch. 5)",
         ),
     log:

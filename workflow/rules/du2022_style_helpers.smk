@@ -1,21 +1,19 @@
-# Helpers of style.smk (Du 2022 ch. 5), kept apart from its rules (snakemake --lint).
+# Helpers of du2022_style.smk (Du 2022 ch. 5), kept apart from its rules (snakemake --lint).
 
 STYLE_CFG = config["style"]
 STYLE_MODELS = "results/{dataset}/models/du2022_style"
 STYLE_PRIMITIVE_PATTERN = "[A-Za-z]+(?:_[A-Za-z]+)?"
 STYLE_STYLE_PATTERN = "[a-z]+"
-
-
-def style_params(keys):
-    """The part of config.style a rule reads (so that other keys' edits do not rerun it)."""
-    return {k: STYLE_CFG[k] for k in keys}
+# A saved model is <base>.pt (torch state dict) + <base>.json (settings); its training
+# history is <base>_history.csv.
+STYLE_SUFFIX = {"model": ".pt", "settings": ".json", "history": "_history.csv"}
 
 
 def style_vaes(primitives, kind="model"):
-    suffix = ".pt" if kind == "model" else "_history.csv"
-    return [f"{STYLE_MODELS}/vae/{p}{suffix}" for p in primitives]
+    """The files of the neutral VAEs of ``primitives``: kind model, settings or history."""
+    return [f"{STYLE_MODELS}/vae/{p}{STYLE_SUFFIX[kind]}" for p in primitives]
 
 
 def style_cvaes(primitives, kind="model"):
-    suffix = ".pt" if kind == "model" else "_history.csv"
-    return [f"{STYLE_MODELS}/cvae/{p}/{s}{suffix}" for p in primitives for s in STYLE_CFG["styles"]]
+    """The files of the CVAEs of ``primitives`` and every configured style."""
+    return [f"{STYLE_MODELS}/cvae/{p}/{s}{STYLE_SUFFIX[kind]}" for p in primitives for s in STYLE_CFG["styles"]]

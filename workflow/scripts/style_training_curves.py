@@ -8,22 +8,16 @@ def main(snakemake) -> None:
     import matplotlib.pyplot as plt
     import pandas as pd
 
-    from motionvar.du2022.style.figures import training_curves
+    from motionvar.du2022.style.figures import draw_training
 
-    def name(f):
-        p = Path(f)
-        return p.stem.replace("_history", "") if p.parent.name in ("du2022_style", "vae") else f"{p.parent.name}/{p.stem.replace('_history', '')}"
+    def name(f):  # vae/<primitive>_history.csv, cvae/<primitive>/<style>_history.csv
+        return Path(f).name.removesuffix("_history.csv")
 
-    hist = {"autoencoder": pd.read_csv(snakemake.input.autoencoder)}
-    groups = {"conv autoencoder (Eq. 5.1-5.2)": ["autoencoder"], "neutral VAEs (Eq. 5.6)": []}
-    for f in snakemake.input.vaes:
-        hist[name(f)] = pd.read_csv(f)
-        groups["neutral VAEs (Eq. 5.6)"].append(name(f))
-    for f in snakemake.input.cvaes:
-        key = name(f)
-        hist[key] = pd.read_csv(f)
-        groups.setdefault(f"CVAEs {Path(f).parent.name} (Eq. 5.11)", []).append(key)
-    fig = training_curves(hist, groups)
+    fig = draw_training(
+        pd.read_csv(snakemake.input.autoencoder),
+        {name(f): pd.read_csv(f) for f in snakemake.input.vaes},
+        {(Path(f).parent.name, name(f)): pd.read_csv(f) for f in snakemake.input.cvaes},
+    )
     fig.savefig(snakemake.output.figure, dpi=110)
     plt.close(fig)
 

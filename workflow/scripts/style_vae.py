@@ -3,24 +3,17 @@ loss Eq. 5.6) in the autoencoder's feature space, trained on its neutral clips."
 
 
 def main(snakemake) -> None:
-    import logging
-
-    from motionvar.du2022.style import TrainConfig, save_vae, train_vae
-    from motionvar.du2022.style.data import primitive_features
+    from motionvar.du2022.style import TrainConfig, fit_primitive_vae, save_vae
     from _style import load_inputs
 
-    cfg, dataset, layout, space = load_inputs(snakemake)
-    vcfg = cfg["vae"]
-
-    primitive = snakemake.wildcards.primitive
-    rows, feats = primitive_features(dataset, layout, primitive, "neutral", cfg["canonical_frames"])
-    maps = space.encode(feats)
-    logging.info("%s: %d neutral clips, feature maps %s", primitive, len(rows), tuple(maps.shape))
-    train_cfg = TrainConfig(vcfg["epochs"], vcfg["lr"], vcfg["batch_size"], cfg["seed"])
-    vae, history = train_vae(maps, train_cfg, n_samples=vcfg["samples_per_input"], latent=vcfg["latent"])
-    logging.info("trained in %.1f s; final loss %.4g", history["seconds"].iloc[-1], history["loss"].iloc[-1])
-    save_vae(snakemake.output.model, vae, tuple(maps.shape[1:]),
-             {"primitive": primitive, "style": "neutral", "n_clips": len(rows)})
+    dataset, layout, space = load_inputs(snakemake)
+    p, v = snakemake.params.options, snakemake.params.options["vae"]
+    vae, shape, info, history = fit_primitive_vae(
+        dataset, layout, space, snakemake.wildcards.primitive,
+        TrainConfig(v["epochs"], v["lr"], v["batch_size"], p["seed"]),
+        n_frames=p["canonical_frames"], n_samples=v["samples_per_input"], latent=v["latent"],
+    )
+    save_vae(snakemake.output.model, vae, shape, info)
     history.to_csv(snakemake.output.history, index=False)
 
 

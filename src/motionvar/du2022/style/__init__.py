@@ -20,8 +20,11 @@ Typical use (one primitive, clips resampled to the canonical 60 frames)::
 
 Modules: :mod:`.features` (Sec. 5.2 representation, windows, scaling),
 :mod:`.networks` (Eq. 5.1-5.2, Fig. 5.3), :mod:`.losses` (Eq. 5.6-5.12),
-:mod:`.training`, :mod:`.model` (feature space, save/load, sampling, Table 5.1),
-:mod:`.diversity` (Eq. 5.13-5.15).
+:mod:`.training` (training runs; from a dataset to the saved models),
+:mod:`.model` (feature space, save/load, sampling), :mod:`.data` (clips of a primitive,
+style examples), :mod:`.diversity` (Eq. 5.13-5.15), :mod:`.published` (the thesis'
+Tables 5.1-5.3), :mod:`.evaluations` (Table 5.1, Tables 5.2-5.3, Fig. 5.4-5.5) and
+:mod:`.figures`.
 """
 
 from .diversity import diversity, pose_sd, step_lengths, step_sd, velocity_sd
@@ -30,15 +33,16 @@ from .features import (
     positions_to_features, sliding_windows, split_features, style_joints,
 )
 from .losses import content_loss, gram, gram_distance, gram_distance_maps, kl_loss, style_distance, style_loss, vae_loss
-from .model import (
-    FeatureSpace, active_units, active_units, diagonal_minima, load_vae, sample_features, sample_maps, save_vae, style_distance_matrix,
-)
+from .evaluations import diagonal_minima, evaluate_fig5_4, evaluate_table5_1, evaluate_table5_2, style_distance_matrix
+from .model import FeatureSpace, SavedVAE, active_units, load_vae, sample_features, sample_maps, save_vae
 from .networks import ConvAutoencoder, MotionVAE
-from .training import TrainConfig, train_autoencoder, train_vae
+from .training import TrainConfig, fit_feature_space, fit_primitive_vae, fit_style_cvae, train_autoencoder, train_vae
 
 __all__ = [
-    "ConvAutoencoder", "FeatureLayout", "active_units", "FeatureScaler", "FeatureSpace", "MotionVAE", "TrainConfig",
-    "content_loss", "diagonal_minima", "diversity", "features_to_positions", "gram", "gram_distance",
+    "ConvAutoencoder", "FeatureLayout", "active_units", "FeatureScaler", "FeatureSpace", "MotionVAE", "SavedVAE",
+    "TrainConfig", "content_loss", "diagonal_minima", "diversity", "evaluate_fig5_4", "evaluate_table5_1",
+    "evaluate_table5_2", "features_to_positions", "fit_feature_space", "fit_primitive_vae", "fit_style_cvae",
+    "gram", "gram_distance", "gram_distance_maps",
     "heading_angles", "kl_loss", "load_vae", "motion_features", "motions_features", "pose_sd",
     "positions_to_features", "sample_features", "sample_maps", "save_vae", "sliding_windows",
     "split_features", "step_lengths", "step_sd", "style_distance", "style_distance_matrix", "style_joints",

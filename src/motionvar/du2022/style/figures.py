@@ -1,6 +1,11 @@
 """Figures of the Du 2022 ch. 5 evaluations: the style-distance heat map (Table 5.1),
 the diversity bars (Tables 5.2-5.3), training curves, and random samples as stick
-figures (Fig. 5.4-5.5: the last frame of each sample, characters started in a line).
+figures (Fig. 5.4-5.5: the last frame of each sample, characters started in a line) and
+animations.
+
+One function per evaluation takes its :class:`~motionvar.claims.EvaluationResult`:
+:func:`draw_table5_1`, :func:`draw_table5_2`, :func:`draw_fig5_4` (a Figure) and
+:func:`animate_fig5_4` (GIF frames); :func:`draw_training` draws the training histories.
 """
 
 from __future__ import annotations
@@ -12,6 +17,8 @@ import numpy as np
 import pandas as pd
 from matplotlib.figure import Figure
 
+from ...claims import EvaluationResult
+from ...plots.animation import render_frames
 from ...plots.stick import draw_pose, project
 
 
@@ -131,3 +138,47 @@ def samples_figure(
         ax.set_title(label, fontsize=8, loc="left")
     fig.tight_layout()
     return fig
+
+
+def draw_table5_1(result: EvaluationResult) -> Figure:
+    """Table 5.1 (:func:`~.evaluations.evaluate_table5_1`): measured and published heat maps."""
+    return distance_heatmap(result.figure["measured"], result.figure["published"])
+
+
+def draw_table5_2(result: EvaluationResult) -> Figure:
+    """Tables 5.2-5.3 (:func:`~.evaluations.evaluate_table5_2`): diversity bars."""
+    return diversity_figure(result.figure["table"])
+
+
+def draw_fig5_4(result: EvaluationResult) -> Figure:
+    """Fig. 5.4-5.5 (:func:`~.evaluations.evaluate_fig5_4`): the samples' last frames."""
+    f = result.figure
+    return samples_figure(f["rows"], f["parents"], f["names"])
+
+
+def animate_fig5_4(result: EvaluationResult, group: str, panel_px: int = 200, loops: int = 3) -> np.ndarray:
+    """RGB frames (N, H, W, 3) of one sample per model of ``group`` ("neutral" or
+    "styles") side by side, each clip played ``loops`` times in a row (moving on from
+    where it ended, so that a half-second step can be watched)."""
+    f = result.figure
+    clips = f["animations"][group]
+    if not clips:
+        raise ValueError(f"du2022_fig5_4: no {group} models to animate")
+    # loop i starts where the clip ended: shifted by i times its net root travel along x
+    pos = [np.concatenate([p + np.array([i * (p[-1, 0, 0] - p[0, 0, 0]), 0, 0]) for i in range(loops)])
+           for p, _, _ in clips]
+    return render_frames(pos, [f["parents"]] * len(clips), [fps for _, fps, _ in clips],
+                         names=[f["names"]] * len(clips), labels=[label for _, _, label in clips], panel_px=panel_px)
+
+
+def draw_training(
+    autoencoder: pd.DataFrame, vaes: Mapping[str, pd.DataFrame], cvaes: Mapping[tuple[str, str], pd.DataFrame],
+) -> Figure:
+    """Training curves (:func:`training_curves`) of the autoencoder, the neutral VAEs (by
+    primitive) and the CVAEs (by (primitive, style), one panel per primitive)."""
+    histories = {"autoencoder": autoencoder, **vaes}
+    groups = {"conv autoencoder (Eq. 5.1-5.2)": ["autoencoder"], "neutral VAEs (Eq. 5.6)": list(vaes)}
+    for (primitive, style), h in cvaes.items():
+        histories[f"{primitive}/{style}"] = h
+        groups.setdefault(f"CVAEs {primitive} (Eq. 5.11)", []).append(f"{primitive}/{style}")
+    return training_curves(histories, groups)

@@ -1,10 +1,12 @@
 """Du 2022 ch. 5 put together (Fig. 5.2): a :class:`FeatureSpace` (the trained
 convolutional autoencoder with its feature scaling) encodes clips into feature maps,
 a primitive's VAE or CVAE samples feature maps, and the motion decoder turns them back
-into clips' features; :func:`style_distance_matrix` is Table 5.1 (Eq. 5.12).
+into clips' features.
 
-Models are saved as torch files of plain dicts (hyper-parameters, state dict, scaler)
-and load with ``weights_only=True``.
+Models are saved with :func:`motionvar.io.model_file.save_torch_model`: the weights as a
+``state_dict`` in ``<base>.pt`` (read back with ``weights_only=True``) and the settings
+(kind, hyper-parameters, the feature scaler's mean and scale, a VAE's feature-map shape
+and info) in ``<base>.json``.
 """
 
 from __future__ import annotations
@@ -14,37 +16,14 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
-import pandas as pd
 import torch
 
+from ...io.model_file import load_torch_model, save_torch_model
 from .features import FeatureScaler
-from .losses import style_distance
 from .networks import ConvAutoencoder, MotionVAE
 
-
-def _save(path: str | Path, obj: dict) -> None:
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    tmp = path.with_name(f".{path.name}.tmp")
-    try:
-        torch.save(obj, tmp)
-        tmp.replace(path)
-    except BaseException:
-        tmp.unlink(missing_ok=True)
-        raise
-
-
-def _load(path: str | Path, kind: str) -> dict:
-    path = Path(path)
-    if not path.is_file():
-        raise FileNotFoundError(f"{path}: model file missing")
-    try:
-        obj = torch.load(path, weights_only=True)
-    except Exception as exc:
-        raise ValueError(f"{path}: not a readable model file ({exc})") from exc
-    if not isinstance(obj, dict) or obj.get("kind") != kind:
-        raise ValueError(f"{path}: not a saved {kind}")
-    return obj
+AUTOENCODER_KIND = "du2022_conv_autoencoder"
+VAE_KIND = "du2022_vae"
 
 
 @dataclass
@@ -77,36 +56,44 @@ class FeatureSpace:
         return float(np.sqrt(np.mean((back - features) ** 2)))
 
     def save(self, path: str | Path) -> None:
-        _save(path, {
-            "kind": "du2022_conv_autoencoder", "hparams": self.ae.hparams, "state_dict": self.ae.state_dict(),
-            "mean": torch.as_tensor(self.scaler.mean), "std": torch.as_tensor(self.scaler.std),
+        """Write ``<base>.pt`` (the autoencoder's state dict) and ``<base>.json`` (its
+        hyper-parameters and the scaler's mean and scale with their dtype: exact in JSON)."""
+        save_torch_model(path, self.ae.state_dict(), {
+            "kind": AUTOENCODER_KIND, "hparams": self.ae.hparams,
+            "scaler_dtype": str(np.asarray(self.scaler.mean).dtype),
+            "scaler_mean": np.asarray(self.scaler.mean).tolist(), "scaler_std": np.asarray(self.scaler.std).tolist(),
         })
 
     @classmethod
     def load(cls, path: str | Path) -> "FeatureSpace":
-        obj = _load(path, "du2022_conv_autoencoder")
-        ae = ConvAutoencoder(**obj["hparams"])
-        ae.load_state_dict(obj["state_dict"])
+        state, settings = load_torch_model(path, AUTOENCODER_KIND)
+        ae = ConvAutoencoder(**settings["hparams"])
+        ae.load_state_dict(state)
         ae.eval()
-        return cls(ae=ae, scaler=FeatureScaler(mean=obj["mean"].numpy(), std=obj["std"].numpy()))
+        dtype = np.dtype(settings["scaler_dtype"])
+        scaler = FeatureScaler(mean=np.asarray(settings["scaler_mean"], dtype=dtype),
+                               std=np.asarray(settings["scaler_std"], dtype=dtype))
+        return cls(ae=ae, scaler=scaler)
 
 
-def save_vae(path: str | Path, vae: MotionVAE, map_shape: tuple[int, int], info: Mapping[str, str | float] | None = None) -> None:
-    """Save a VAE/CVAE with the (K, T') shape of its feature maps and string/number ``info``
-    (primitive, style, style example's clip id...)."""
-    _save(path, {
-        "kind": "du2022_vae", "hparams": vae.hparams, "state_dict": vae.state_dict(),
-        "map_shape": list(map_shape), "info": dict(info or {}),
+def save_vae(
+    path: str | Path, vae: MotionVAE, map_shape: tuple[int, int], info: Mapping[str, str | float] | None = None,
+) -> None:
+    """Save a VAE/CVAE (``<base>.pt`` + ``<base>.json``) with the (K, T') shape of its
+    feature maps and string/number ``info`` (primitive, style, style example's clip id...)."""
+    save_torch_model(path, vae.state_dict(), {
+        "kind": VAE_KIND, "hparams": vae.hparams, "map_shape": [int(k) for k in map_shape], "info": dict(info or {}),
     })
 
 
 def load_vae(path: str | Path) -> tuple[MotionVAE, tuple[int, int], dict]:
-    """(VAE, feature-map shape (K, T'), info) of a file written by :func:`save_vae`."""
-    obj = _load(path, "du2022_vae")
-    vae = MotionVAE(obj["hparams"]["in_dim"], hidden=tuple(obj["hparams"]["hidden"]), latent=obj["hparams"]["latent"])
-    vae.load_state_dict(obj["state_dict"])
+    """(VAE, feature-map shape (K, T'), info) of a model written by :func:`save_vae`."""
+    state, settings = load_torch_model(path, VAE_KIND)
+    hp = settings["hparams"]
+    vae = MotionVAE(hp["in_dim"], hidden=tuple(hp["hidden"]), latent=hp["latent"])
+    vae.load_state_dict(state)
     vae.eval()
-    return vae, tuple(obj["map_shape"]), dict(obj["info"])
+    return vae, tuple(settings["map_shape"]), dict(settings["info"])
 
 
 @torch.no_grad()
@@ -125,26 +112,6 @@ def sample_features(
     return np.concatenate([space.decode(maps[i:i + chunk]) for i in range(0, n, chunk)])
 
 
-def style_distance_matrix(
-    models: Mapping[str, tuple[MotionVAE, tuple[int, int]]],
-    examples: Mapping[str, np.ndarray],
-    space: FeatureSpace,
-    n_samples: int,
-    seed: int,
-) -> pd.DataFrame:
-    """Table 5.1: D(m, s) (Eq. 5.12) for every model m (rows) and style example s
-    (columns, features (T, C)). Each model's ``n_samples`` clips are decoded to motion
-    and encoded again, Gram(encoder(x_i)); the examples are encoded once."""
-    ex_maps = {s: space.encode(np.asarray(x)[None])[0] for s, x in examples.items()}
-    table = pd.DataFrame(index=list(models), columns=list(examples), dtype=float)
-    for k, (name, (vae, shape)) in enumerate(models.items()):
-        enc = space.reencode(sample_maps(vae, shape, n_samples, seed + k))
-        for s, m in ex_maps.items():
-            table.loc[name, s] = float(style_distance(enc, m))
-    table.index.name = "model"
-    return table
-
-
 @torch.no_grad()
 def active_units(vae: MotionVAE, maps: torch.Tensor, threshold: float = 0.01) -> int:
     """Latent dimensions in use (Burda et al. 2016): Cov over the inputs of E[z | y] above
@@ -154,6 +121,5 @@ def active_units(vae: MotionVAE, maps: torch.Tensor, threshold: float = 0.01) ->
     return int((mu.var(dim=0) > threshold).sum())
 
 
-def diagonal_minima(table: pd.DataFrame) -> list[str]:
-    """Rows whose smallest entry lies in the column of the same name."""
-    return [r for r in table.index if r in table.columns and table.loc[r].idxmin() == r]
+SavedVAE = tuple[MotionVAE, tuple[int, int], dict]
+"""A VAE/CVAE as :func:`load_vae` returns it: (network, feature-map shape (K, T'), info)."""

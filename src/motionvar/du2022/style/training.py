@@ -12,10 +12,19 @@ The thesis trains with "stochastic gradient descent" at learning rates 1e-4 (aut
 Adam with the epochs, learning rate and batch size given by the caller (the config).
 Every run draws its shuffles and noise from one ``torch.Generator`` seeded by ``seed``,
 so the same inputs give the same weights. Histories are DataFrames, one row per epoch.
+
+From a dataset to the saved models of the pipeline (one per rule):
+
+- :func:`fit_feature_space`: the autoencoder and its feature scaling on (a seeded random
+  subset of) the sliding windows of all clips.
+- :func:`fit_primitive_vae`: the VAE of one primitive on its neutral clips.
+- :func:`fit_style_cvae`: the CVAE of one primitive and style: the neutral clips as
+  content, the style's straightest forward clip as the style example (Sec. 5.4.3).
 """
 
 from __future__ import annotations
 
+import logging
 import time
 from dataclasses import dataclass
 
@@ -23,8 +32,14 @@ import numpy as np
 import pandas as pd
 import torch
 
+from ...io.dataset import MotionDataset
+from .data import example_features, primitive_features, select_style_example, training_windows
+from .features import FeatureLayout, FeatureScaler
 from .losses import STYLE_NORMS, content_loss, kl_loss, style_loss
+from .model import FeatureSpace
 from .networks import ConvAutoencoder, MotionVAE
+
+log = logging.getLogger(__name__)
 
 
 @dataclass(frozen=True)
@@ -133,3 +148,98 @@ def train_vae(
         })
     model.eval()
     return model, pd.DataFrame(rows)
+
+
+# ---------------------------------------------------------------- from a dataset to the models
+
+
+def fit_feature_space(
+    dataset: MotionDataset,
+    layout: FeatureLayout,
+    cfg: TrainConfig,
+    window: int = 60,
+    stride: int = 30,
+    max_windows: int = 0,
+    decoder_order: str = "conv_depool",
+    n_kernels: int = 256,
+    kernel_width: int = 15,
+) -> tuple[FeatureSpace, pd.DataFrame]:
+    """The conv autoencoder (Eq. 5.1-5.2) with its :class:`~.features.FeatureScaler`,
+    trained on the windows of ``window`` frames every ``stride`` frames of all clips
+    (Sec. 5.4.1); ``max_windows`` > 0 keeps a random subset of that many (drawn with
+    ``cfg.seed``). History columns: epoch, loss, seconds, windows."""
+    windows = training_windows(dataset, layout, window, stride)
+    n_all = len(windows)
+    if 0 < max_windows < n_all:
+        keep = np.sort(np.random.default_rng(cfg.seed).choice(n_all, max_windows, replace=False))
+        windows = windows[keep]
+    log.info("%d windows of %d frames (%d in all) from %d clips; joints %s", len(windows),
+             windows.shape[1], n_all, len(dataset), ", ".join(layout.names))
+    scaler = FeatureScaler.fit(windows, layout.n_joints)
+    ae, history = train_autoencoder(
+        scaler.transform(windows), cfg, decoder_order=decoder_order, n_kernels=n_kernels, kernel_width=kernel_width,
+    )
+    space = FeatureSpace(ae, scaler)
+    history["windows"] = len(windows)
+    log.info("trained in %.1f s; final loss %.4g; reconstruction RMSE %.3f", history["seconds"].iloc[-1],
+             history["loss"].iloc[-1], space.reconstruction_rmse(windows[:512]))
+    return space, history
+
+
+def fit_primitive_vae(
+    dataset: MotionDataset,
+    layout: FeatureLayout,
+    space: FeatureSpace,
+    primitive: str,
+    cfg: TrainConfig,
+    n_frames: int = 60,
+    n_samples: int = 10,
+    latent: int = 32,
+    hidden: tuple[int, ...] = (512, 256, 128),
+) -> tuple[MotionVAE, tuple[int, int], dict, pd.DataFrame]:
+    """The VAE of ``primitive`` (Fig. 5.3, Eq. 5.6) on the feature maps of its neutral
+    clips resampled to ``n_frames``: (VAE, feature-map shape (K, T'), info for
+    :func:`~.model.save_vae`, history)."""
+    rows, feats = primitive_features(dataset, layout, primitive, "neutral", n_frames)
+    maps = space.encode(feats)
+    log.info("%s: %d neutral clips, feature maps %s", primitive, len(rows), tuple(maps.shape))
+    vae, history = train_vae(maps, cfg, n_samples=n_samples, hidden=hidden, latent=latent)
+    log.info("trained in %.1f s; final loss %.4g", history["seconds"].iloc[-1], history["loss"].iloc[-1])
+    info = {"primitive": primitive, "style": "neutral", "n_clips": len(rows)}
+    return vae, tuple(maps.shape[1:]), info, history
+
+
+def fit_style_cvae(
+    dataset: MotionDataset,
+    layout: FeatureLayout,
+    space: FeatureSpace,
+    neutral: MotionVAE,
+    primitive: str,
+    style: str,
+    cfg: TrainConfig,
+    n_frames: int = 60,
+    n_samples: int = 10,
+    alpha: float = 200.0,
+    style_norm: str = "frobenius",
+    init_from_neutral: bool = True,
+    latent: int = 32,
+    hidden: tuple[int, ...] = (512, 256, 128),
+) -> tuple[MotionVAE, tuple[int, int], dict, pd.DataFrame]:
+    """The CVAE of ``primitive`` and ``style`` (Sec. 5.3.3, loss Eq. 5.11 with the Gram
+    style term Eq. 5.10 weighted ``alpha``): content the neutral clips, style example the
+    straightest forward clip of the style (:func:`~.data.select_style_example`); starts
+    from the ``neutral`` VAE's weights when ``init_from_neutral``. Returns (CVAE,
+    feature-map shape, info with the example's clip id, history)."""
+    rows, feats = primitive_features(dataset, layout, primitive, "neutral", n_frames)
+    example_id = select_style_example(dataset.metadata, primitive, style)
+    example = space.encode(example_features(dataset, layout, example_id, n_frames)[None])[0]
+    maps = space.encode(feats)
+    log.info("%s/%s: %d neutral clips, style example %s", primitive, style, len(rows), example_id)
+    cvae, history = train_vae(
+        maps, cfg, n_samples=n_samples, style_maps=example, alpha=alpha, style_norm=style_norm,
+        init=neutral if init_from_neutral else None, hidden=hidden, latent=latent,
+    )
+    log.info("trained in %.1f s; final loss %.4g (style %.4g)", history["seconds"].iloc[-1],
+             history["loss"].iloc[-1], history["style"].iloc[-1])
+    info = {"primitive": primitive, "style": style, "example": example_id, "n_clips": len(rows)}
+    return cvae, tuple(maps.shape[1:]), info, history
