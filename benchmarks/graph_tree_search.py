@@ -21,7 +21,8 @@ import numpy as np
 from motionvar.core import cmu_joint_map
 from motionvar.du2022.graph import KeyFramePositionIndex, MotionPrimitive, Objective, PrimitiveOptions, SpacePartitioningTree
 from motionvar.du2022.graph import brute_force, random_constraints
-from motionvar.du2022.graph.dense import dense_pick_clips
+from motionvar.prep import align_motions
+from motionvar.synth.dense_picks import dense_pick_segments
 
 
 def main() -> None:
@@ -34,7 +35,7 @@ def main() -> None:
     args = parser.parse_args()
 
     jm = cmu_joint_map()
-    clips, _ = dense_pick_clips(args.subjects, 0, 5, jm)
+    clips = align_motions(dense_pick_segments(args.subjects, 0, 5)[0], jm)
     prim = MotionPrimitive.fit(clips, "pick_reach", PrimitiveOptions(n_components=20, sfpca_max_iter=0,
                                                                      gmm_components=(1, 4)))
     S = prim.sample(args.samples, 0)

@@ -1,5 +1,5 @@
 """Morphable Graph (Du 2022 ch. 4) on small procedural clips: primitives, constraints,
-trees, MAP synthesis, graph walks and the evaluation measures."""
+trees, MAP synthesis, graph walks, the evaluations of Sec. 4.6 and their figures."""
 
 from __future__ import annotations
 
@@ -11,12 +11,17 @@ import pytest
 from graph_toy import toy_clips
 
 from motionvar.core import cmu_joint_map
+from motionvar.io import load_dataset, save_dataset
 from motionvar.du2022.graph import (
     Constraint, KeyFramePositionIndex, MorphableGraph, MotionPrimitive, Objective, Path2D, PrimitiveOptions,
     SpacePartitioningTree, WalkSettings, brute_force, concatenate_steps, follow_path, optimize_map, place_motion,
-    random_constraints, random_search, select_gmm,
+    primitive_clips, random_constraints, random_search, select_gmm,
 )
-from motionvar.du2022.graph.evaluation import SearchSettings, coverage, search_comparison, summarize_search
+from motionvar.du2022.graph.evaluations import (
+    SearchSettings, coverage, evaluate_fig4_9, evaluate_fig4_10, evaluate_fig4_12, evaluate_sec4_6_1, motion_bytes,
+    search_comparison, search_primitive, summarize_search,
+)
+from motionvar.du2022.graph.figures import animate_fig4_10, draw_fig4_9, draw_fig4_10, draw_fig4_12, draw_sec4_6_1
 from motionvar.du2022.graph.kinematics import ancestors, chain_fk
 from motionvar.du2022.graph.morphable_graph import _to_local
 
@@ -31,6 +36,25 @@ def clips():
 @pytest.fixture(scope="module")
 def prim(clips):
     return MotionPrimitive.fit(clips, "walk_leftStance", OPT)
+
+
+@pytest.fixture(scope="module")
+def right(clips):
+    return MotionPrimitive.fit(clips[::-1], "walk_rightStance", OPT)
+
+
+@pytest.fixture(scope="module")
+def dataset(clips, tmp_path_factory):
+    """The toy clips as a packed dataset: clips 0-7 are walks of two source clips
+    alternating left and right stance, clips 8-15 pick reaches."""
+    d = tmp_path_factory.mktemp("prep")
+    walk = ["walk_leftStance", "walk_rightStance"] * 4
+    meta = pd.DataFrame(dict(clip_id=[f"c{i}" for i in range(16)],
+                             source_clip=[f"w{i // 4}" for i in range(8)] + [f"p{i}" for i in range(8)],
+                             primitive=walk + ["pick_reach"] * 8, start_frame=[100 * (i % 4) for i in range(16)],
+                             stop_frame=[100 * (i % 4) + c.n_frames for i, c in enumerate(clips)]))
+    save_dataset(d, clips, meta)
+    return load_dataset(d)
 
 
 @pytest.fixture(scope="module")
@@ -196,8 +220,7 @@ def test_place_motion_and_local_frame(clips):
     assert np.allclose(_to_local(world_end, np.array([10.0, 20.0]), heading), m.root_pos[-1, [0, 2]])
 
 
-def test_follow_straight_path(clips, prim):
-    right = MotionPrimitive.fit(clips[::-1], "walk_rightStance", OPT)
+def test_follow_straight_path(prim, right):
     prims = {"walk_leftStance": prim, "walk_rightStance": right}
     meta = pd.DataFrame(dict(source_clip=["a"] * 4, start_frame=[0, 1, 2, 3],
                              primitive=["walk_leftStance", "walk_rightStance"] * 2))
@@ -236,18 +259,22 @@ def test_search_comparison_table(prim, joints):
     assert {"median", "mean_evals", "share_under_120_evals"} <= set(summary.columns)
 
 
-def test_dense_pick_clips_are_aligned_pick_reaches():
-    from motionvar.du2022.graph.dense import dense_pick_clips
+def test_dense_pick_segments_align_to_pick_reaches():
+    from motionvar.prep import align_motions
+    from motionvar.synth.dense_picks import dense_pick_segments
 
-    clips, meta = dense_pick_clips(1, 0, 2, cmu_joint_map())
-    assert len(clips) == 2 and (meta["primitive"] == "pick_reach").all() and (meta["variant"] == "dense").all()
+    pieces, meta = dense_pick_segments(1, 0, 2)
+    assert len(pieces) == 2 and (meta["primitive"] == "pick_reach").all() and (meta["variant"] == "dense").all()
+    assert list(meta["stop_frame"] - meta["start_frame"]) == [p.n_frames for p in pieces]
+    clips = align_motions(pieces, cmu_joint_map())
     assert np.allclose(clips[0].root_pos[0, [0, 2]], 0.0, atol=1e-6)  # aligned: starts above the origin
     with pytest.raises(ValueError, match="per_subject"):
-        dense_pick_clips(1, 0, 0, cmu_joint_map())
+        dense_pick_segments(1, 0, 0)
 
 
 def test_fig4_12_verdicts_follow_the_numbers():
-    from motionvar.du2022.graph.verdicts import compactness_claim, fig4_12_claims
+    from motionvar.du2022.graph.evaluations.fig4_12 import fig4_12_claims
+    from motionvar.du2022.graph.evaluations.sec4_6_1 import compactness_claim
 
     rows = []
     for kind in ("position", "orientation", "pose"):
@@ -263,3 +290,73 @@ def test_fig4_12_verdicts_follow_the_numbers():
     assert compactness_claim(1_000, 200_000).verdict == "reproduced"
     assert compactness_claim(1_000, 20_000).verdict == "partial"
     assert compactness_claim(1_000, 2_000).verdict == "not reproduced"
+
+
+def test_primitive_clips_selects_and_names_the_file(dataset):
+    motions, meta = primitive_clips(dataset, "pick_reach", "prep/clips.npz")
+    assert len(motions) == 8 and (meta["primitive"] == "pick_reach").all()
+    with pytest.raises(ValueError, match=r"prep/clips.npz: 0 clips of primitive 'run'.*graph.primitives"):
+        primitive_clips(dataset, "run", "prep/clips.npz")
+
+
+def test_search_primitive_and_fig4_12(prim, right):
+    settings = SearchSettings(n_samples=300, n_queries=3, leaf_size=8, n_random=10)
+    pose = ["hips", "left_hand", "right_hand"]
+    tables = [search_primitive(p, cmu_joint_map(), settings, {"walk_leftStance": "left_ankle"}, "right_hand", pose)
+              for p in (prim, right)]
+    queries, trees = tables[0]
+    assert list(queries.columns[:3]) == ["primitive", "kind", "joint"] and set(queries["joint"]) == {"left_ankle"}
+    assert set(tables[1][0]["joint"]) == {"right_hand"} and (trees["primitive"] == "walk_leftStance").all()
+    with pytest.raises(KeyError, match="graph.search.joints.walk_leftStance.*left_foot"):
+        search_primitive(prim, cmu_joint_map(), settings, {"walk_leftStance": "left_foot"}, "right_hand", pose)
+    with pytest.raises(KeyError, match="graph.search.pose_joints"):
+        search_primitive(prim, cmu_joint_map(), settings, {}, "right_hand", ["hips", "tail"])
+    result = evaluate_fig4_12(pd.concat([t[0] for t in tables], ignore_index=True))
+    assert len(result.table) == 2 * 3 * 5 and "mean_time_ms" not in result.table.columns
+    assert [c.claim_id.split(".")[-1] for c in result.claims] == [
+        "kmeans_halves_random_error", "kmeans_under_120_evaluations", "gmm_tree_close_to_kmeans",
+        "median_tree_closer_to_random", "kmeans_near_brute_force_position"]
+    assert len(draw_fig4_12(result).axes) == 2 * 3
+
+
+def test_fig4_9_coverage_of_the_training_clips(prim, dataset):
+    result = evaluate_fig4_9({"walk_leftStance": prim, "pick_reach": prim}, dataset, cmu_joint_map(), n_samples=2000,
+                             grid=32, seed=0)
+    t = result.table
+    assert len(t) == 9 and list(t["joint"].unique()) == ["left_ankle", "left_hand", "right_hand"]
+    assert list(t["n_training"]) == [4] * 3 + [8] * 6 and t["coverage"].between(0, 1).all()
+    assert result.claims[0].claim_id == "du2022.fig4_9.samples_cover_training"
+    assert result.figure["panels"][0]["density"].shape == (32, 32)
+    assert len(draw_fig4_9(result).axes) == 9
+
+
+def test_fig4_10_follows_path_and_reaches(prim, right, dataset, tmp_path):
+    models = {"walk_leftStance": prim, "walk_rightStance": right, "pick_reach": prim}
+    result = evaluate_fig4_10(models, dataset, cmu_joint_map(), [[0.0, 0.0], [200.0, 0.0]], reach_targets=2,
+                              tree_samples=300, max_nfev=30, max_steps=4)
+    t = result.table
+    assert list(t["task"].unique()) == ["path", "reach"] and (t["task"] == "reach").sum() == 2
+    path = t[t["task"] == "path"]
+    assert (path["position_error_cm"] <= path["position_error_tree_cm"] + 1e-6).all()  # LM improves the tree's seed
+    assert [c.claim_id for c in result.claims] == ["du2022.fig4_10.follows_path", "du2022.fig4_10.reaches_targets"]
+    assert len(result.figure["reaches"]) == 2
+    assert len(draw_fig4_10(result).axes) == 2
+    animate_fig4_10(result, tmp_path / "fig4_10.gif", max_seconds=0.5, panel_px=60)
+    assert (tmp_path / "fig4_10.gif").stat().st_size > 0
+
+
+def test_sec4_6_1_compactness(prim, dataset, tmp_path):
+    files = prim.save(tmp_path / "walk_leftStance")
+    size = sum(f.stat().st_size for f in files)
+    dense = pd.DataFrame(dict(start_frame=[0, 0], stop_frame=[50, 70]))
+    models = {"walk_leftStance": prim, "pick_reach_dense": prim}
+    result = evaluate_sec4_6_1(models, {"walk_leftStance": size, "pick_reach_dense": size}, dataset.metadata, dense)
+    t = result.table.set_index("primitive")
+    assert list(t.index) == ["walk_leftStance", "pick_reach_dense", "all"]
+    J = prim.skeleton.n_joints
+    assert t.loc["pick_reach_dense", "data_bytes"] == motion_bytes(120, J)
+    assert t.loc["walk_leftStance", "clips"] == 4 and t.loc["all", "model_bytes"] == 2 * size
+    assert result.claims[0].claim_id == "du2022.sec4_6_1.model_much_smaller_than_data"
+    assert len(draw_sec4_6_1(result).axes) == 1
+    with pytest.raises(ValueError, match="dense picks"):
+        evaluate_sec4_6_1(models, {"walk_leftStance": size, "pick_reach_dense": size}, dataset.metadata)

@@ -7,62 +7,56 @@
 include: "du2022_graph_helpers.smk"
 
 
-register_evaluation("du2022_fig4_12", paper="du2022")
-register_evaluation("du2022_fig4_9", paper="du2022")
-register_evaluation("du2022_sec4_6_1", paper="du2022")
-register_evaluation("du2022_fig4_10", paper="du2022", extra=["results/{dataset}/figures/du2022_fig4_10.gif"])
-
-
 wildcard_constraints:
     primitive="[A-Za-z0-9_]+",
 
 
-rule graph_dense_picks:
+rule du2022_graph_dense_picks:
     input:
         joint_map=joint_map_input,
     output:
         clips=f"{GRAPH}/dense_picks/clips.npz",
         metadata=f"{GRAPH}/dense_picks/metadata.csv",
     params:
-        entry=lambda wc: dataset_config(wc.dataset),
-        options=GRAPH_CFG,
+        entry=graph_dense_entry,
+        options=config_params("graph", ["dense_picks_per_subject", "dense_grid_spacing_cm"]),
         prep=config["prep"],
         joint_map=lambda wc: joint_map_path(wc.dataset),
     log:
-        ev_log("graph_dense_picks"),
+        ev_log("du2022_graph_dense_picks"),
     benchmark:
-        ev_benchmark("graph_dense_picks")
+        ev_benchmark("du2022_graph_dense_picks")
     threads: 1
     resources:
         mem_mb=2000,
     conda:
         ENV
     script:
-        "../scripts/graph_dense_picks.py"
+        "../scripts/du2022_graph_dense_picks.py"
 
 
-rule graph_primitive:
+rule du2022_graph_primitive:
     input:
         unpack(graph_primitive_input),
     output:
         model=f"{GRAPH}/{{primitive}}.npz",
         meta=f"{GRAPH}/{{primitive}}.json",
     params:
-        options=GRAPH_CFG,
+        options=graph_params("model", keys=["seed"]),
     log:
-        ev_log("graph_primitive", "{primitive}"),
+        ev_log("du2022_graph_primitive", "{primitive}"),
     benchmark:
-        ev_benchmark("graph_primitive", "{primitive}")
+        ev_benchmark("du2022_graph_primitive", "{primitive}")
     threads: 1
     resources:
         mem_mb=4000,
     conda:
         ENV
     script:
-        "../scripts/graph_primitive.py"
+        "../scripts/du2022_graph_primitive.py"
 
 
-rule graph_search:
+rule du2022_graph_search:
     input:
         model=f"{GRAPH}/{{primitive}}.npz",
         meta=f"{GRAPH}/{{primitive}}.json",
@@ -71,136 +65,81 @@ rule graph_search:
         queries=f"{GRAPH}/search/{{primitive}}.csv",
         trees=f"{GRAPH}/search/{{primitive}}_trees.csv",
     params:
-        options=GRAPH_CFG,
+        settings=config_params(
+            "graph", ["seed"] + [f"search.{k}" for k in ("n_samples", "n_queries", "beam", "leaf_size", "n_random")]
+        ),
+        joints=config_params("graph", ["search.joints", "search.default_joint", "search.pose_joints"]),
         joint_map=lambda wc: joint_map_path(wc.dataset),
     log:
-        ev_log("graph_search", "{primitive}"),
+        ev_log("du2022_graph_search", "{primitive}"),
     benchmark:
-        ev_benchmark("graph_search", "{primitive}")
+        ev_benchmark("du2022_graph_search", "{primitive}")
     threads: 1
     resources:
         mem_mb=3000,
     conda:
         ENV
     script:
-        "../scripts/graph_search.py"
+        "../scripts/du2022_graph_search.py"
 
 
-rule du2022_fig4_12:
-    input:
-        queries=graph_search_tables,
-    output:
-        table=in_report(
-            ev_table("du2022_fig4_12"), "du2022", "../report/du2022_fig4_12.rst", figure="Fig. 4.12", kind="table"
-        ),
-        figure=in_report(
-            ev_figure("du2022_fig4_12"), "du2022", "../report/du2022_fig4_12.rst", figure="Fig. 4.12", kind="figure"
-        ),
-        claims=ev_claims("du2022_fig4_12"),
-    log:
-        ev_log("du2022_fig4_12"),
-    benchmark:
-        ev_benchmark("du2022_fig4_12")
-    threads: 1
-    resources:
-        mem_mb=2000,
-    conda:
-        ENV
-    script:
-        "../scripts/du2022_fig4_12.py"
+# The evaluations (tables, figures, claims): one rule each, same body; evaluation ->
+# (published figure, inputs, params, mem_mb, further outputs). Script: ../scripts/<evaluation>.py.
+# The script path comes from params.evaluation: Snakemake resolves a script path again when
+# a job runs, when a loop variable holds the last name any loop gave it.
+GRAPH_JOINT_MAP = {"joint_map": lambda wc: joint_map_path(wc.dataset)}
+GRAPH_EVALUATIONS = {
+    "du2022_fig4_12": ("Fig. 4.12", {"queries": graph_search_tables}, {}, 2000, {}),
+    "du2022_fig4_9": (
+        "Fig. 4.9",
+        {"models": graph_diversity_models, "clips": f"{PREP}/clips.npz", "metadata": f"{PREP}/metadata.csv",
+         "joint_map": joint_map_input},
+        {"options": graph_params("diversity", keys=["seed"]), **GRAPH_JOINT_MAP},
+        3000,
+        {},
+    ),
+    "du2022_sec4_6_1": (
+        "Sec. 4.6.1",
+        {"models": graph_all_models, "metadata": f"{PREP}/metadata.csv", "dense": graph_dense_metadata},
+        {},
+        2000,
+        {},
+    ),
+    "du2022_fig4_10": (
+        "Fig. 4.10",
+        {"models": graph_synthesis_models, "clips": f"{PREP}/clips.npz", "metadata": f"{PREP}/metadata.csv",
+         "joint_map": joint_map_input},
+        {"options": graph_params("synthesis", keys=["seed"]), **GRAPH_JOINT_MAP},
+        3000,
+        {"gif": "results/{dataset}/figures/du2022_fig4_10.gif"},
+    ),
+}
 
+for _ev, (_figure, _input, _params, _mem_mb, _extra) in GRAPH_EVALUATIONS.items():
+    register_evaluation(_ev, paper="du2022", extra=list(_extra.values()))
 
-rule du2022_fig4_9:
-    input:
-        walk=f"{GRAPH}/walk_leftStance.npz",
-        walk_meta=f"{GRAPH}/walk_leftStance.json",
-        pick=f"{GRAPH}/pick_reach.npz",
-        pick_meta=f"{GRAPH}/pick_reach.json",
-        clips=f"{PREP}/clips.npz",
-        metadata=f"{PREP}/metadata.csv",
-        joint_map=joint_map_input,
-    output:
-        table=in_report(
-            ev_table("du2022_fig4_9"), "du2022", "../report/du2022_fig4_9.rst", figure="Fig. 4.9", kind="table"
-        ),
-        figure=in_report(
-            ev_figure("du2022_fig4_9"), "du2022", "../report/du2022_fig4_9.rst", figure="Fig. 4.9", kind="figure"
-        ),
-        claims=ev_claims("du2022_fig4_9"),
-    params:
-        options=GRAPH_CFG,
-        joint_map=lambda wc: joint_map_path(wc.dataset),
-    log:
-        ev_log("du2022_fig4_9"),
-    benchmark:
-        ev_benchmark("du2022_fig4_9")
-    threads: 1
-    resources:
-        mem_mb=3000,
-    conda:
-        ENV
-    script:
-        "../scripts/du2022_fig4_9.py"
-
-
-rule du2022_sec4_6_1:
-    input:
-        models=graph_all_models,
-        clips=f"{PREP}/clips.npz",
-        metadata=f"{PREP}/metadata.csv",
-    output:
-        table=in_report(
-            ev_table("du2022_sec4_6_1"), "du2022", "../report/du2022_sec4_6_1.rst", figure="Sec. 4.6.1", kind="table"
-        ),
-        figure=in_report(
-            ev_figure("du2022_sec4_6_1"), "du2022", "../report/du2022_sec4_6_1.rst", figure="Sec. 4.6.1",
-            kind="figure",
-        ),
-        claims=ev_claims("du2022_sec4_6_1"),
-    params:
-        options=GRAPH_CFG,
-    log:
-        ev_log("du2022_sec4_6_1"),
-    benchmark:
-        ev_benchmark("du2022_sec4_6_1")
-    threads: 1
-    resources:
-        mem_mb=2000,
-    conda:
-        ENV
-    script:
-        "../scripts/du2022_sec4_6_1.py"
-
-
-rule du2022_fig4_10:
-    input:
-        models=graph_synthesis_models,
-        clips=f"{PREP}/clips.npz",
-        metadata=f"{PREP}/metadata.csv",
-        joint_map=joint_map_input,
-    output:
-        table=in_report(
-            ev_table("du2022_fig4_10"), "du2022", "../report/du2022_fig4_10.rst", figure="Fig. 4.10", kind="table"
-        ),
-        figure=in_report(
-            ev_figure("du2022_fig4_10"), "du2022", "../report/du2022_fig4_10.rst", figure="Fig. 4.10", kind="figure"
-        ),
-        gif=in_report(
-            "results/{dataset}/figures/du2022_fig4_10.gif", "du2022", "../report/du2022_fig4_10.rst",
-            figure="Fig. 4.10", kind="animation",
-        ),
-        claims=ev_claims("du2022_fig4_10"),
-    params:
-        options=GRAPH_CFG,
-        joint_map=lambda wc: joint_map_path(wc.dataset),
-    log:
-        ev_log("du2022_fig4_10"),
-    benchmark:
-        ev_benchmark("du2022_fig4_10")
-    threads: 1
-    resources:
-        mem_mb=3000,
-    conda:
-        ENV
-    script:
-        "../scripts/du2022_fig4_10.py"
+    rule:
+        name:
+            _ev
+        input:
+            **_input,
+        output:
+            table=in_report(ev_table(_ev), "du2022", f"../report/{_ev}.rst", figure=_figure, kind="table"),
+            figure=in_report(ev_figure(_ev), "du2022", f"../report/{_ev}.rst", figure=_figure, kind="figure"),
+            claims=ev_claims(_ev),
+            **{k: in_report(p, "du2022", f"../report/{_ev}.rst", figure=_figure, kind="animation")
+               for k, p in _extra.items()},
+        params:
+            evaluation=_ev,  # names the script (a script path is resolved again when the job runs)
+            **_params,
+        log:
+            ev_log(_ev),
+        benchmark:
+            ev_benchmark(_ev)
+        threads: 1
+        resources:
+            mem_mb=_mem_mb,
+        conda:
+            ENV
+        script:
+            "../scripts/{params.evaluation}.py"

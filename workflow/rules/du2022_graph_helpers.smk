@@ -1,9 +1,21 @@
-# Helpers of graph.smk (Du 2022 ch. 4, Morphable Graph), kept apart from its rules
+# Helpers of du2022_graph.smk (Du 2022 ch. 4, Morphable Graph), kept apart from its rules
 # (snakemake --lint flags a rule file that defines functions).
 
 GRAPH_CFG = config["graph"]
 GRAPH = "results/{dataset}/models/du2022/graph"
 GRAPH_DENSE = "pick_reach_dense"
+
+
+def graph_params(*sections, keys=()):
+    """``keys`` of config.graph plus every key of its subsections ``sections``, flat (for
+    ``params:``; see config_params)."""
+    return config_params("graph", list(keys) + [f"{s}.{k}" for s in sections for k in GRAPH_CFG[s]])
+
+
+def graph_dense_entry(wildcards):
+    """What the dense picks read of the dataset's entry: its source, subjects and seed."""
+    entry = dataset_config(wildcards.dataset)
+    return {k: entry.get(k) for k in ("source", "subjects", "seed")}
 
 
 def graph_has_dense(dataset):
@@ -44,6 +56,18 @@ def graph_search_tables(wildcards):
 
 def graph_all_models(wildcards):
     return graph_model_files(wildcards.dataset, graph_all_primitives(wildcards.dataset))
+
+
+def graph_dense_metadata(wildcards):
+    """The dense picks' metadata, where the dataset has the dense primitive (Sec. 4.6.1)."""
+    if not graph_has_dense(wildcards.dataset):
+        return []
+    return [f"{GRAPH}/dense_picks/metadata.csv".format(dataset=wildcards.dataset)]
+
+
+def graph_diversity_models(wildcards):
+    """Models of Fig. 4.9: walk leftStance and pick reach."""
+    return graph_model_files(wildcards.dataset, ["walk_leftStance", "pick_reach"])
 
 
 def graph_synthesis_models(wildcards):

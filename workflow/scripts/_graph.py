@@ -1,5 +1,4 @@
-"""Shared by the Morphable Graph rule scripts (Du 2022 ch. 4): config -> library options,
-clips of one primitive, joint map, models, figure saving."""
+"""Loaders shared by the Morphable Graph rule scripts (Du 2022 ch. 4)."""
 
 from __future__ import annotations
 
@@ -7,6 +6,7 @@ from pathlib import Path
 
 
 def joint_map(snakemake):
+    """The dataset's joint map (``params.joint_map``), or the CMU one."""
     from motionvar.core import cmu_joint_map
     from motionvar.io.joint_map_file import load_joint_map
 
@@ -14,47 +14,22 @@ def joint_map(snakemake):
     return load_joint_map(path) if path else cmu_joint_map()
 
 
-def primitive_options(options: dict):
-    from motionvar.du2022.graph import PrimitiveOptions
-
-    m = options["model"]
-    return PrimitiveOptions(
-        n_basis=m["n_basis"], n_components=m["n_components"], gmm_components=(m["gmm_min"], m["gmm_max"]),
-        gmm_criterion=m["gmm_criterion"], reg_covar=m["reg_covar"], sfpca_max_iter=m["sfpca_max_iter"],
-        sfpca_weight_groups=m["sfpca_weight_groups"], sfpca_eval_frames=m["sfpca_eval_frames"], seed=options["seed"],
-    )
-
-
-def primitive_clips(clips_path: str, primitive: str):
-    """(motions, metadata rows) of one primitive from a packed dataset; ValueError naming
-    the file and the primitives it has when there are too few."""
+def dataset(clips_path: str):
+    """The packed dataset whose ``clips.npz`` is ``clips_path``."""
     from motionvar.io import load_dataset
 
-    ds = load_dataset(Path(clips_path).parent)
-    mask = (ds.metadata["primitive"] == primitive).to_numpy()
-    if mask.sum() < 3:
-        have = ds.metadata["primitive"].value_counts().to_dict()
-        raise ValueError(f"{clips_path}: {int(mask.sum())} clips of primitive {primitive!r} (need >= 3; config "
-                         f"graph.primitives / graph.search.primitives); clips per primitive: {have}")
-    pairs = ds.select(mask)
-    return [m for _, m in pairs], ds.metadata[mask].reset_index(drop=True)
+    return load_dataset(Path(clips_path).parent)
 
 
-def semantic_index(jm, skeleton, semantic: str, key: str) -> int:
-    if semantic not in jm.joints:
-        raise KeyError(f"config {key}: {semantic!r} is not a semantic joint of the joint map "
-                       f"({', '.join(sorted(jm.joints))})")
-    return jm.index(skeleton, semantic)
-
-
-def load_model(path: str):
+def models(paths) -> dict:
+    """The motion primitives saved at the ``.npz`` files among ``paths``, by name, in order."""
     from motionvar.du2022.graph import MotionPrimitive
 
-    return MotionPrimitive.load(path)
+    loaded = [MotionPrimitive.load(p) for p in paths if str(p).endswith(".npz")]
+    return {m.name: m for m in loaded}
 
 
-def save(fig, path: str) -> None:
-    import matplotlib.pyplot as plt
-
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+def model_bytes(paths) -> dict:
+    """Bytes on disk (npz + json) of the models at the ``.npz`` files among ``paths``, by name."""
+    return {Path(p).stem: sum(Path(p).with_suffix(s).stat().st_size for s in (".npz", ".json"))
+            for p in paths if str(p).endswith(".npz")}

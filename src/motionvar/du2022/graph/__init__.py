@@ -4,7 +4,8 @@ synthesis by Levenberg-Marquardt and graph-walk generation.
 
 - :mod:`.primitive`: :class:`MotionPrimitive` (DTW time warping + SFPCA + GMM/BIC,
   Sec. 4.4.1, Eq. 4.1): ``fit``, ``sample``, ``log_prob``, ``key_frame_pose`` (f_k(M(s))
-  at key frames), ``to_motions`` (back-projection), ``save``/``load`` (npz + json).
+  at key frames), ``to_motions`` (back-projection), ``save``/``load`` (npz + json);
+  :func:`primitive_clips` (the clips of one primitive in a dataset).
 - :mod:`.constraints`: :class:`Constraint` (position, orientation, heading),
   :class:`Objective` (Eq. 4.2, counts evaluations), :func:`random_constraints` (Sec. 4.6.2).
 - :mod:`.trees`: :class:`SpacePartitioningTree` (k-means, GMM, median; beam search,
@@ -13,15 +14,16 @@ synthesis by Levenberg-Marquardt and graph-walk generation.
 - :mod:`.synthesis`: :func:`optimize_map` (Eq. 4.9 by Levenberg-Marquardt).
 - :mod:`.morphable_graph`: :class:`MorphableGraph` (edges from the prep metadata),
   :func:`follow_path` and :func:`synthesize_step` (Algorithm 1).
-- :mod:`.evaluation`: the measures of Fig. 4.9 (coverage), Fig. 4.12 (search comparison)
-  and Sec. 4.6.1 (compactness).
+- :mod:`.evaluations`: one module per evaluation of Sec. 4.6 (Fig. 4.9 coverage, Fig. 4.10
+  constrained generation, Fig. 4.12 search comparison, Sec. 4.6.1 compactness), each
+  returning an EvaluationResult; :mod:`.figures` draws them.
 """
 
 from .constraints import Constraint, Objective, random_constraints
 from .morphable_graph import (
     MorphableGraph, Path2D, StepResult, WalkSettings, concatenate_steps, follow_path, place_motion, synthesize_step,
 )
-from .primitive import MotionPrimitive, PrimitiveOptions, select_gmm
+from .primitive import MotionPrimitive, PrimitiveOptions, primitive_clips, select_gmm
 from .synthesis import MapResult, optimize_map
 from .trees import (
     TREE_KINDS, KeyFramePositionIndex, SearchResult, SpacePartitioningTree, brute_force, random_search, tree_search,
@@ -30,6 +32,6 @@ from .trees import (
 __all__ = [
     "TREE_KINDS", "Constraint", "KeyFramePositionIndex", "MapResult", "MorphableGraph", "MotionPrimitive", "Objective",
     "Path2D", "PrimitiveOptions", "SearchResult", "SpacePartitioningTree", "StepResult", "WalkSettings",
-    "brute_force", "concatenate_steps", "follow_path", "optimize_map", "place_motion", "random_constraints",
-    "random_search", "select_gmm", "synthesize_step", "tree_search",
+    "brute_force", "concatenate_steps", "follow_path", "optimize_map", "place_motion", "primitive_clips",
+    "random_constraints", "random_search", "select_gmm", "synthesize_step", "tree_search",
 ]

@@ -20,7 +20,8 @@ Fitting follows the thesis step by step:
    thesis uses BIC; DFKI's code defaults to AIC).
 
 The model keeps only what synthesis needs (mean, weights, eigenfunctions, GMM, bone
-offsets): no motion data (Sec. 4.6.1, "Compactness"). Save/load is npz + json (no pickles).
+offsets): no motion data (Sec. 4.6.1, "Compactness"). Save/load is npz + json (no pickles,
+:mod:`motionvar.io.model_file`).
 """
 
 from __future__ import annotations
@@ -31,12 +32,16 @@ from dataclasses import asdict, dataclass
 from pathlib import Path
 
 import numpy as np
+import pandas as pd
 from sklearn.mixture import GaussianMixture
 from threadpoolctl import threadpool_limits
 
 from ...core.motion import Motion
 from ...core.quaternions import qnormalize
 from ...core.skeleton import Skeleton
+from ...io.dataset import MotionDataset
+from ...io.atomic import atomic_write
+from ...io.model_file import load_model, model_base
 from ..fda import SFPCA, BSplineBasis, FunctionalMotions, frame_times
 from ...prep import apply_warp, warp_to_median
 from .kinematics import chain_fk
@@ -101,6 +106,20 @@ def select_gmm(X: np.ndarray, k_range: tuple[int, int], criterion: str = "bic", 
             if best is None or scores[k] < scores[best.n_components]:
                 best = gmm
     return best, scores
+
+
+def primitive_clips(dataset: MotionDataset, primitive: str,
+                    source: str = "dataset") -> tuple[list[Motion], pd.DataFrame]:
+    """(motions, metadata rows) of one primitive from a loaded dataset
+    ; ValueError naming ``source`` (its file) and the
+    primitives it has when there are fewer than 3 clips."""
+    mask = (dataset.metadata["primitive"] == primitive).to_numpy()
+    if mask.sum() < 3:
+        have = dataset.metadata["primitive"].value_counts().to_dict()
+        raise ValueError(f"{source}: {int(mask.sum())} clips of primitive {primitive!r} (need >= 3; config "
+                         f"graph.primitives / graph.search.primitives); clips per primitive: {have}")
+    pairs = dataset.select(mask)
+    return [m for _, m in pairs], dataset.metadata[mask].reset_index(drop=True)
 
 
 def _gmm_from_arrays(weights: np.ndarray, means: np.ndarray, covariances: np.ndarray) -> GaussianMixture:
@@ -289,38 +308,40 @@ class MotionPrimitive:
 
     # ---- persistence -----------------------------------------------------------------
     def save(self, path: str | Path) -> list[Path]:
-        """Write ``path``.npz (arrays) and ``path``.json (names, settings); returns both paths."""
-        base = Path(path)
-        base = base.with_suffix("") if base.suffix in (".npz", ".json") else base
-        base.parent.mkdir(parents=True, exist_ok=True)
+        """Write ``path``.npz (arrays) and ``path``.json (names, settings); returns both paths.
+
+        Both go through :func:`motionvar.io.atomic.atomic_write` (no half-written file);
+        the JSON is written without a trailing newline, as the models of Sec. 4.6.1's size
+        table always were (:func:`~motionvar.io.model_file.save_model` adds one)."""
+        base = model_base(path)
         g = self.gmm_
         arrays = dict(mean=self.mean_, weights=self.weights_, components=self.components_,
                       explained_variance_ratio=self.explained_variance_ratio_, offsets=self.skeleton.offsets,
                       parents=self.skeleton.parents, gmm_weights=g.weights_, gmm_means=g.means_,
                       gmm_covariances=g.covariances_)
-        npz, js = base.with_suffix(".npz"), base.with_suffix(".json")
-        with open(npz, "wb") as fh:
-            np.savez(fh, **arrays)
         meta = dict(format_version=FORMAT_VERSION, name=self.name, joint_names=list(self.skeleton.names),
                     fps=self.fps, n_frames=self.n_frames, n_basis=self.basis.n_basis, degree=self.basis.degree,
                     gmm_scores={str(k): v for k, v in self.gmm_scores_.items()}, options=asdict(self.options))
-        js.write_text(json.dumps(meta, indent=1))
+
+        def write_npz(tmp: Path) -> None:
+            with open(tmp, "wb") as fh:  # a file object: np.savez would append .npz to the name
+                np.savez(fh, **arrays)
+
+        npz = atomic_write(base.with_suffix(".npz"), write_npz)
+        js = atomic_write(base.with_suffix(".json"), lambda tmp: tmp.write_text(json.dumps(meta, indent=1)))
         return [npz, js]
 
     @classmethod
     def load(cls, path: str | Path) -> "MotionPrimitive":
         """Read a primitive written by :meth:`save` (``path`` with or without suffix)."""
-        base = Path(path)
-        base = base.with_suffix("") if base.suffix in (".npz", ".json") else base
-        npz, js = base.with_suffix(".npz"), base.with_suffix(".json")
+        base = model_base(path)
         try:
-            meta = json.loads(js.read_text())
-            with np.load(npz, allow_pickle=False) as z:
-                a = {k: z[k] for k in z.files}
+            a, meta = load_model(base)
         except (OSError, ValueError) as exc:
             raise ValueError(f"{base}: not a readable motion primitive ({exc})") from exc
         if meta.get("format_version") != FORMAT_VERSION:
-            raise ValueError(f"{js}: format_version {meta.get('format_version')} (expected {FORMAT_VERSION})")
+            raise ValueError(f"{base.with_suffix('.json')}: format_version {meta.get('format_version')} "
+                             f"(expected {FORMAT_VERSION})")
         opts = dict(meta["options"])
         opts["gmm_components"] = tuple(opts["gmm_components"])
         sk = Skeleton(names=tuple(meta["joint_names"]), parents=a["parents"], offsets=a["offsets"])
