@@ -1,14 +1,18 @@
 """Functional data analysis (Du 2022, ch. 3): B-splines, FPCA, normalised FPCA, SFPCA, GPLVM."""
 
+import json
 import math
+import re
 
+import matplotlib.pyplot as plt
 import numpy as np
+import pandas as pd
 import pytest
 import torch
 from scipy.integrate import simpson
 
 from motionvar.core import Motion, Skeleton
-from motionvar.core.quaternions import qmul, quat_about_axis
+from motionvar.core.quaternions import quat_about_axis
 from motionvar.du2022.fda import (
     FPCA,
     SFPCA,
@@ -22,13 +26,27 @@ from motionvar.du2022.fda import (
     WeightedFPCA,
     align_quaternion_signs,
     bspline_fit_rmse,
+    canonical_primitives,
+    choose_basis_sizes,
     choose_n_basis,
     feature_error,
+    functional_primitive,
     functional_std,
     knn_accuracy,
     latent_separation,
+    n_basis_of,
     observation_error,
 )
+from motionvar.du2022.fda.evaluations import (
+    curves_table,
+    evaluate_fig3_9,
+    evaluate_fig3_10,
+    evaluate_fig3_11,
+    evaluate_table3_1,
+    reconstruction_curves,
+)
+from motionvar.du2022.fda.evaluations.table3_1 import smallest_dim
+from motionvar.du2022.fda.figures import draw_fig3_9, draw_fig3_10, draw_fig3_11, draw_table3_1
 
 
 def chain_skeleton(n_joints=5, scale=1.0):
@@ -244,19 +262,27 @@ def test_fpca_bad_input(data):
 
 
 def test_save_load_round_trip(tmp_path, data):
+    """Models are saved as .npz arrays + .json settings (motionvar.io.model_file)."""
     fd, _, clips = data
     for model in (FPCA(4).fit(fd), SFPCA(4, max_iter=3).fit(fd)):
         path = tmp_path / f"{type(model).__name__}.npz"
-        model.save(path)
-        back = FPCA.load(path)
+        files = model.save(path)
+        assert sorted(f.name for f in files) == sorted([path.name, path.with_suffix(".json").name])
+        settings = json.loads(path.with_suffix(".json").read_text())
+        assert settings["class_name"] == type(model).__name__ and settings["n_basis"] == 8
+        back = FPCA.load(path.with_suffix(""))
         assert type(back) is type(model)
         assert np.allclose(back.transform(fd), model.transform(fd))
         assert np.allclose(back.inverse_transform(model.transform(fd)), model.reconstruct(fd))
         motions = back.to_motions(model.transform(fd)[:2], fps=120.0, skeleton=clips[0].skeleton)
         assert len(motions) == 2 and motions[0].n_frames == fd.n_frames
+    assert back.init_ == model.init_ and back.n_iter_ == model.n_iter_ and back.loss_ == model.loss_
     (tmp_path / "bad.npz").write_bytes(b"not a zip")
+    (tmp_path / "bad.json").write_text(json.dumps({"kind": "du2022.fpca", "class_name": "FPCA"}))
     with pytest.raises(ValueError, match="bad.npz"):
         FPCA.load(tmp_path / "bad.npz")
+    with pytest.raises(FileNotFoundError, match="missing.npz: model file missing"):
+        FPCA.load(tmp_path / "missing.npz")
 
 
 # ---- SFPCA (Eq. 3.6-3.8) ------------------------------------------------------------
@@ -413,3 +439,173 @@ def test_knn_accuracy_and_separation():
     assert latent_separation(mixed, labels)["silhouette"] < 0.2
     with pytest.raises(ValueError, match="two distinct labels"):
         latent_separation(apart, np.zeros(60))
+
+
+# ---- the primitives of a dataset and the evaluations (Fig. 3.9-3.11, Table 3.1) --------
+
+class StandInDataset:
+    """What the evaluations use of motionvar.io.MotionDataset: ``metadata`` and ``motion(i)``."""
+
+    def __init__(self, motions, metadata):
+        self.motions, self.metadata = list(motions), metadata.reset_index(drop=True)
+
+    def motion(self, i):
+        return self.motions[i]
+
+
+@pytest.fixture(scope="module")
+def prep_dataset():
+    """Two primitives of two behaviours (with generator-style labels) and one too small."""
+    clips, labels = make_clips(40, seed=7, lengths=(28, 40))
+    variants = np.array(["forward", "left", "right"])[labels]
+    primitive = np.array(["walk_leftStance"] * 24 + ["pick_reach"] * 14 + ["pick_retrieve"] * 2)
+    meta = pd.DataFrame({
+        "clip_id": [f"c{i:02d}" for i in range(40)], "behaviour": [p.split("_")[0] for p in primitive],
+        "primitive": primitive, "variant": variants, "n_frames": [c.n_frames for c in clips], "fps": 120.0,
+    })
+    return StandInDataset(clips, meta)
+
+
+@pytest.fixture(scope="module")
+def canonical_dataset(prep_dataset):
+    motions, meta = canonical_primitives(prep_dataset, ["walk", "pick"], min_clips=3, time_warping="dtw")
+    return StandInDataset(motions, meta)
+
+
+def test_canonical_primitives(prep_dataset, canonical_dataset):
+    meta = canonical_dataset.metadata
+    assert sorted(meta["primitive"].unique()) == ["pick_reach", "walk_leftStance"]  # pick_retrieve: 2 < 3 clips
+    for primitive, g in meta.groupby("primitive"):
+        lengths = {canonical_dataset.motion(i).n_frames for i in g.index}
+        ref = prep_dataset.metadata.set_index("clip_id").loc[g["canonical_reference"].iloc[0]]
+        assert lengths == {ref["n_frames"]} and g["canonical_reference"].nunique() == 1
+    assert "source_frames" in meta and "n_frames" not in meta
+    linear, _ = canonical_primitives(prep_dataset, ["pick"], min_clips=3, time_warping="linear")
+    assert len(linear) == 14 and len({m.n_frames for m in linear}) == 1
+    with pytest.raises(ValueError, match="fda.behaviours: \\['jump'\\]"):
+        canonical_primitives(prep_dataset, ["walk", "jump"], 3, "dtw")
+    with pytest.raises(ValueError, match="no primitive has fda.min_clips"):
+        canonical_primitives(prep_dataset, ["pick"], 50, "dtw")
+
+
+def test_basis_sizes_and_fig3_9(canonical_dataset):
+    rmse, chosen = choose_basis_sizes(canonical_dataset, [4, 6, 8, 10], 0.05)
+    assert list(chosen["primitive"]) == ["pick_reach", "walk_leftStance"]
+    assert len(rmse) == 8 and rmse.groupby("primitive")["chosen"].sum().tolist() == [1, 1]
+    assert n_basis_of(chosen, "pick_reach") == int(chosen["n_basis"].iloc[0])
+    with pytest.raises(ValueError, match="n_basis.csv: no basis size for primitive 'run'"):
+        n_basis_of(chosen, "run", "n_basis.csv")
+    with pytest.raises(ValueError, match="every K exceeds"):
+        choose_basis_sizes(canonical_dataset, [500], 0.05)
+
+    result = evaluate_fig3_9(rmse, 0.05)
+    table = result.table
+    assert len(table) == 8 + 8 and set(table.loc[table["primitive"] == "(all)", "behaviour"]) == {"pick", "walk"}
+    # pooled RMSE of a behaviour with one primitive is that primitive's RMSE
+    pooled = table[(table["primitive"] == "(all)") & (table["behaviour"] == "pick")]["rmse_cm"].to_numpy()
+    assert np.allclose(pooled, rmse[rmse["primitive"] == "pick_reach"]["rmse_cm"])
+    (claim,) = result.claims
+    assert claim.claim_id == "du2022.fig3_9.rmse_decreases_with_k" and claim.verdict == "reproduced"
+    assert "2/2 behaviours strictly decreasing" in claim.measured
+    fig = draw_fig3_9(result)
+    assert len(fig.axes) == 2
+    plt.close(fig)
+
+
+@pytest.fixture(scope="module")
+def fda_curves(canonical_dataset):
+    """The Fig. 3.10-3.11 measurements of both primitives, in two parts each as the pipeline."""
+    options = dict(dims=[1, 3, 100], latent_dim=3, seed=0, sfpca={"max_iter": 3, "eval_frames_per_basis": 2},
+                   gplvm={"n_inducing": 6, "max_iter": 8, "noise_init": 0.01, "discriminative_sigma2": 1.0,
+                          "n_clusters": 3})
+    out = []
+    for primitive in ("walk_leftStance", "pick_reach"):
+        fd, meta = functional_primitive(canonical_dataset, primitive, 6)
+        for methods in (["fpca", "normalized_fpca", "sfpca"], ["gplvm"]):
+            out.append(reconstruction_curves(fd, meta["variant"], primitive, methods, **options))
+    return out
+
+
+def test_reconstruction_curves(fda_curves):
+    z = fda_curves[0]
+    assert str(z["primitive"]) == "walk_leftStance" and list(z["methods"]) == ["fpca", "normalized_fpca", "sfpca"]
+    assert list(z["dims"]) == [1, 3] and int(z["latent_dim"]) == 3  # d = 100 > clips - 1 dropped
+    assert z["labels"].dtype.kind == "U" and len(z["labels"]) == 24 == int(z["n_clips"])
+    for method in z["methods"]:
+        assert z[f"{method}/feature_error"].shape == (2,) and z[f"{method}/latent"].shape == (24, 3)
+    assert np.all(np.diff(z["fpca/feature_error"]) < 0)
+    assert str(fda_curves[3]["gplvm/info"][0]).split()[1] == "it,"
+    table = curves_table(fda_curves)
+    assert len(table) == 2 * 4 * 2 and set(table["method"]) == {"fpca", "normalized_fpca", "sfpca", "gplvm"}
+    fd = FunctionalMotions.from_motions(make_clips(4)[0], n_basis=6)
+    with pytest.raises(ValueError, match="dims: none <= 3"):
+        reconstruction_curves(fd, ["a"] * 4, "tiny", ["fpca"], [5], 2, 0, {}, {})
+
+
+def test_fig3_10(fda_curves):
+    methods = ["fpca", "normalized_fpca", "sfpca", "gplvm"]
+    result = evaluate_fig3_10(fda_curves, methods, ["walk_leftStance", "pick_reach"], "pick_reach")
+    assert len(result.table) == 16 and "fit_seconds" in result.table
+    ids = [c.claim_id.split(".")[-1] for c in result.claims]
+    assert ids == ["fpca_lowest_feature_error", "sfpca_lowest_observation_error",
+                   "normalized_fpca_beats_fpca_observation_pick", "errors_decrease_with_dims"]
+    first = result.claims[0]  # FPCA minimises the feature-space error (Eq. 3.3)
+    assert first.verdict == "reproduced" and first.measured.startswith("FPCA lowest in 4/4")
+    assert re.match(r"\d+/12 curves monotone", result.claims[3].measured)  # 2 primitives x 3 FPCAs x 2 spaces
+    no_pick = evaluate_fig3_10(fda_curves[:2], methods, ["walk_leftStance"], "pick_reach")
+    assert len(no_pick.claims) == 3
+    fig = draw_fig3_10(result)
+    assert len(fig.axes) == 4
+    plt.close(fig)
+
+
+def test_fig3_11(fda_curves):
+    methods = ["fpca", "normalized_fpca", "sfpca", "gplvm"]
+    result = evaluate_fig3_11(fda_curves, methods, ["walk_leftStance", "pick_reach"], "pick_reach", knn=3,
+                              tsne_perplexity=30.0, seed=0)
+    table = result.table
+    assert list(table.columns) == ["primitive", "method", "latent_dim", "n_clips", "silhouette", "knn3_accuracy"]
+    assert len(table) == 8 and table["latent_dim"].eq(3).all()
+    for z in fda_curves:  # the measures of the table are those of the latent coordinates
+        for method in z["methods"]:
+            row = table[(table["primitive"] == str(z["primitive"])) & (table["method"] == method)].iloc[0]
+            sep = latent_separation(z[f"{method}/latent"], z["labels"], 3)
+            assert row["silhouette"] == sep["silhouette"] and row["knn3_accuracy"] == sep["knn_accuracy"]
+    (claim,) = result.claims
+    assert claim.claim_id == "du2022.fig3_11.sfpca_best_separation_pick" and "3-NN accuracy" in claim.measured
+    panels = result.figure["panels"]
+    assert len(panels) == 2 and panels[1][0]["xy"].shape == (14, 2)
+    fig = draw_fig3_11(result)
+    assert len(fig.axes) == 8
+    plt.close(fig)
+
+
+def test_smallest_dim_bisection():
+    calls = []
+
+    def error(d):
+        calls.append(d)
+        return 10.0 / d
+
+    d, seen = smallest_dim(error, 40, 1.0)
+    assert d == 10 and seen[10] == 1.0 and seen[9] > 1.0 and len(calls) == len(set(calls)) < 10
+    assert smallest_dim(error, 5, 1.0)[0] is None
+
+
+def test_table3_1(canonical_dataset):
+    _, chosen = choose_basis_sizes(canonical_dataset, [4, 6], 0.05)
+    result = evaluate_table3_1(canonical_dataset, chosen, {"max_iter": 3}, reference_components=3,
+                               max_components=50, observation_error_cm=1.0)
+    table = result.table.set_index("primitive")
+    assert list(table.index) == ["pick_reach", "walk_leftStance"] and result.claims == []
+    assert table.loc["pick_reach", "clips"] == 14 and table.loc["pick_reach", "published_dims"] == 45
+    assert table.loc["walk_leftStance", "sfpca_reference_dims"] == 3
+    for primitive, row in table.iterrows():
+        for name in ("sfpca", "fpca"):
+            d = row[f"latent_dims_{name}"]
+            assert 1 <= d <= row["clips"] - 1 and row[f"error_at_dims_{name}_cm"] <= 1.0
+            curve = dict(result.figure["curves"][(primitive, name)])
+            assert curve[int(d)] == row[f"error_at_dims_{name}_cm"] and (d == 1 or curve.get(int(d) - 1, 2.0) > 1.0)
+    fig = draw_table3_1(result)
+    assert len(fig.axes) == 2
+    plt.close(fig)

@@ -2,6 +2,7 @@
 # (Fig. 3.9), FPCA, normalized FPCA, SFPCA and a Bayesian GPLVM (Fig. 3.10, 3.11), latent
 # dimensions per primitive (Table 3.1). Options: config.fda (config/schema.yaml). Inputs:
 # the aligned primitives of results/{dataset}/prep/, warped to a canonical timeline here.
+# Library: motionvar.du2022.fda (evaluations/, figures.py).
 
 include: "du2022_fda_helpers.smk"
 
@@ -14,7 +15,7 @@ rule du2022_fda_canonical:
         clips=f"{FDA}/canonical/clips.npz",
         metadata=f"{FDA}/canonical/metadata.csv",
     params:
-        options=config["fda"],
+        options=config_params("fda", ["behaviours", "min_clips", "time_warping"]),
     log:
         ev_log("du2022_fda_canonical"),
     benchmark:
@@ -36,7 +37,7 @@ rule du2022_fda_basis:
         rmse=f"{FDA}/basis_rmse.csv",
         n_basis=f"{FDA}/n_basis.csv",
     params:
-        options=config["fda"],
+        options=config_params("fda", ["basis.n_basis", "basis.min_relative_drop"]),
     log:
         ev_log("du2022_fda_basis"),
     benchmark:
@@ -50,28 +51,6 @@ rule du2022_fda_basis:
         "../scripts/du2022_fda_basis.py"
 
 
-rule du2022_fig3_9:
-    input:
-        rmse=f"{FDA}/basis_rmse.csv",
-    output:
-        table=in_report(ev_table("du2022_fig3_9"), "du2022", "../report/du2022_fig3_9.rst", figure="Fig. 3.9", kind="table"),
-        figure=in_report(ev_figure("du2022_fig3_9"), "du2022", "../report/du2022_fig3_9.rst", figure="Fig. 3.9", kind="figure"),
-        claims=ev_claims("du2022_fig3_9"),
-    params:
-        options=config["fda"],
-    log:
-        ev_log("du2022_fig3_9"),
-    benchmark:
-        ev_benchmark("du2022_fig3_9")
-    threads: 1
-    resources:
-        mem_mb=1000,
-    conda:
-        ENV
-    script:
-        "../scripts/du2022_fig3_9.py"
-
-
 rule du2022_fda_curves:
     input:
         clips=f"{FDA}/canonical/clips.npz",
@@ -82,7 +61,7 @@ rule du2022_fda_curves:
     wildcard_constraints:
         part="|".join(FDA_PARTS),
     params:
-        options=config["fda"],
+        options=config_params("fda", ["seed", "reconstruction.dims", "latent.n_components", "sfpca", "gplvm"]),
         methods=lambda wc: FDA_PARTS[wc.part],
     log:
         ev_log("du2022_fda_curves", "{primitive}_{part}"),
@@ -97,71 +76,75 @@ rule du2022_fda_curves:
         "../scripts/du2022_fda_curves.py"
 
 
-rule du2022_fig3_10:
-    input:
-        curves=fda_curve_files(),
-    output:
-        table=in_report(ev_table("du2022_fig3_10"), "du2022", "../report/du2022_fig3_10.rst", figure="Fig. 3.10", kind="table"),
-        figure=in_report(ev_figure("du2022_fig3_10"), "du2022", "../report/du2022_fig3_10.rst", figure="Fig. 3.10", kind="figure"),
-        claims=ev_claims("du2022_fig3_10"),
-    params:
-        options=config["fda"],
-        methods=FDA_METHODS,
-    log:
-        ev_log("du2022_fig3_10"),
-    benchmark:
-        ev_benchmark("du2022_fig3_10")
-    threads: 1
-    resources:
-        mem_mb=2000,
-    conda:
-        ENV
-    script:
-        "../scripts/du2022_fig3_10.py"
+# The evaluations (tables, figures, claims): one rule each, same body; evaluation ->
+# (published figure or table, inputs, params, mem_mb). Script: ../scripts/<evaluation>.py,
+# named through params (a script: line is evaluated when the job runs, after the loop).
+FDA_CANONICAL = {"clips": f"{FDA}/canonical/clips.npz", "metadata": f"{FDA}/canonical/metadata.csv"}
+FDA_EVALUATIONS = {
+    "du2022_fig3_9": (
+        "Fig. 3.9",
+        {"rmse": f"{FDA}/basis_rmse.csv"},
+        {"options": config_params("fda", ["basis.min_relative_drop"])},
+        1000,
+    ),
+    "du2022_fig3_10": (
+        "Fig. 3.10",
+        {"curves": fda_curve_files()},
+        {
+            "options": config_params("fda", ["reconstruction.primitives", "reconstruction.pick_primitive"]),
+            "methods": FDA_METHODS,
+        },
+        2000,
+    ),
+    "du2022_fig3_11": (
+        "Fig. 3.11",
+        {"curves": fda_curve_files()},
+        {
+            "options": config_params(
+                "fda",
+                ["seed", "reconstruction.primitives", "reconstruction.pick_primitive", "latent.knn",
+                 "latent.tsne_perplexity"],
+            ),
+            "methods": FDA_METHODS,
+        },
+        2000,
+    ),
+    "du2022_table3_1": (
+        "Table 3.1",
+        {**FDA_CANONICAL, "n_basis": f"{FDA}/n_basis.csv"},
+        {
+            "options": config_params(
+                "fda",
+                ["sfpca", "table.reference_components", "table.max_components", "table.observation_error_cm"],
+            ),
+        },
+        4000,
+    ),
+}
 
+for _fda_ev, (_figure, _input, _params, _mem_mb) in FDA_EVALUATIONS.items():
+    register_evaluation(_fda_ev, paper="du2022")
 
-rule du2022_fig3_11:
-    input:
-        curves=fda_curve_files(),
-    output:
-        table=in_report(ev_table("du2022_fig3_11"), "du2022", "../report/du2022_fig3_11.rst", figure="Fig. 3.11", kind="table"),
-        figure=in_report(ev_figure("du2022_fig3_11"), "du2022", "../report/du2022_fig3_11.rst", figure="Fig. 3.11", kind="figure"),
-        claims=ev_claims("du2022_fig3_11"),
-    params:
-        options=config["fda"],
-        methods=FDA_METHODS,
-    log:
-        ev_log("du2022_fig3_11"),
-    benchmark:
-        ev_benchmark("du2022_fig3_11")
-    threads: 1
-    resources:
-        mem_mb=2000,
-    conda:
-        ENV
-    script:
-        "../scripts/du2022_fig3_11.py"
-
-
-rule du2022_table3_1:
-    input:
-        clips=f"{FDA}/canonical/clips.npz",
-        metadata=f"{FDA}/canonical/metadata.csv",
-        n_basis=f"{FDA}/n_basis.csv",
-    output:
-        table=in_report(ev_table("du2022_table3_1"), "du2022", "../report/du2022_table3_1.rst", figure="Table 3.1", kind="table"),
-        figure=in_report(ev_figure("du2022_table3_1"), "du2022", "../report/du2022_table3_1.rst", figure="Table 3.1", kind="figure"),
-        claims=ev_claims("du2022_table3_1"),
-    params:
-        options=config["fda"],
-    log:
-        ev_log("du2022_table3_1"),
-    benchmark:
-        ev_benchmark("du2022_table3_1")
-    threads: 1
-    resources:
-        mem_mb=4000,
-    conda:
-        ENV
-    script:
-        "../scripts/du2022_table3_1.py"
+    rule:
+        name:
+            _fda_ev
+        input:
+            **_input,
+        output:
+            table=in_report(ev_table(_fda_ev), "du2022", f"../report/{_fda_ev}.rst", figure=_figure, kind="table"),
+            figure=in_report(ev_figure(_fda_ev), "du2022", f"../report/{_fda_ev}.rst", figure=_figure, kind="figure"),
+            claims=ev_claims(_fda_ev),
+        params:
+            evaluation=_fda_ev,
+            **_params,
+        log:
+            ev_log(_fda_ev),
+        benchmark:
+            ev_benchmark(_fda_ev)
+        threads: 1
+        resources:
+            mem_mb=_mem_mb,
+        conda:
+            ENV
+        script:
+            "../scripts/{params.evaluation}.py"

@@ -1,15 +1,10 @@
-# Helpers of fda.smk (Du 2022 ch. 3), kept apart from its rules (snakemake --lint flags a
-# rule file that defines functions).
+# Helpers of du2022_fda.smk (Du 2022 ch. 3), kept apart from its rules (snakemake --lint flags
+# a rule file that defines functions).
 
 FDA = "results/{dataset}/models/du2022_fda"
 FDA_METHODS = ["fpca", "normalized_fpca", "sfpca", "gplvm"]
 # the curves of one primitive are computed in two jobs that can run side by side
 FDA_PARTS = {"pca": ["fpca", "normalized_fpca", "sfpca"], "gplvm": ["gplvm"]}
-
-register_evaluation("du2022_fig3_9", paper="du2022")
-register_evaluation("du2022_fig3_10", paper="du2022")
-register_evaluation("du2022_fig3_11", paper="du2022")
-register_evaluation("du2022_table3_1", paper="du2022")
 
 
 def fda_curve_files():

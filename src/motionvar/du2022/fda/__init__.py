@@ -11,7 +11,7 @@ Typical use (one motion primitive, e.g. the aligned walk_leftStance clips)::
     z = model.transform(fd)                                     # (N, 20) latent scores
     coefs = model.inverse_transform(z)                          # (N, K, D) back
     clips = model.to_motions(z, fps=120, skeleton=skeleton)     # back to Motions
-    model.save("walk_leftStance.npz"); model = SFPCA.load("walk_leftStance.npz")
+    model.save("walk_leftStance"); model = SFPCA.load("walk_leftStance")  # .npz + .json
 
 API:
 
@@ -27,29 +27,40 @@ API:
   weights), sklearn-style: ``fit(fd)``, ``transform(fd or coefs) -> (N, n)``,
   ``inverse_transform(z) -> (N, K, D)``, ``reconstruct(fd, n_components=None)`` (the
   eigenfunctions are nested: one fit serves every smaller dimension),
-  ``to_motions(z, fps, skeleton=None)``, ``save(path)``, ``FPCA.load(path)`` (returns the
-  saved class). Fitted attributes end in ``_``: ``mean_``, ``function_weights_``,
+  ``to_motions(z, fps, skeleton=None)``, ``save(path)`` (``.npz`` arrays + ``.json``
+  settings, :mod:`motionvar.io.model_file`), ``FPCA.load(path)`` (returns the saved
+  class). Fitted attributes end in ``_``: ``mean_``, ``function_weights_``,
   ``components_``, ``eigenfunctions_``, ``explained_variance_ratio_``, ...; SFPCA adds
   ``init_``, ``loss_``, ``n_iter_``, ``fit_time_s_``. SFPCA's options: ``gradient``
   ("autograd" or the thesis' "finite_difference"), ``weight_groups``, ``max_iter``,
   ``n_eval_frames`` (frames at which its objective runs forward kinematics).
 - :class:`BayesianGPLVM` (arrays) and :class:`FunctionalGPLVM` (functional data): the
   nonlinear baseline (Titsias & Lawrence 2010, optional discriminative prior).
-- :mod:`.evaluation`: :func:`feature_error`, :func:`observation_error`,
-  :func:`latent_separation` (silhouette, leave-one-out k-NN accuracy).
+- :mod:`.primitives`: a dataset's primitives as functional data:
+  :func:`canonical_primitives` (time warping to a canonical timeline),
+  :func:`choose_basis_sizes` (K per primitive, Fig. 3.9 cut-off), :func:`n_basis_of`,
+  :func:`primitive_motions`, :func:`functional_primitive`, :func:`sfpca_for`.
+- :mod:`.evaluations`: one module per figure or table (Fig. 3.9-3.11, Table 3.1) and the
+  shared measures :func:`feature_error`, :func:`observation_error`, :func:`knn_accuracy`,
+  :func:`latent_separation` (silhouette, leave-one-out k-NN accuracy);
+  :mod:`.figures` draws them.
 """
 
-from .bspline import BSplineBasis, choose_n_basis, frame_times
-from .evaluation import feature_error, knn_accuracy, latent_separation, observation_error
-from .fpca import FPCA, NormalizedFPCA, WeightedFPCA, functional_std, zscore_weights
-from .functions import FunctionalMotions, FunctionLayout, align_quaternion_signs, bspline_fit_rmse
 from ...models.bayesian_gplvm import BayesianGPLVM
+from .bspline import BSplineBasis, choose_n_basis, frame_times
+from .fpca import FPCA, NormalizedFPCA, WeightedFPCA, functional_std, zscore_weights
 from .functional_gplvm import FunctionalGPLVM
+from .functions import FunctionalMotions, FunctionLayout, align_quaternion_signs, bspline_fit_rmse
+from .primitives import (
+    canonical_primitives, choose_basis_sizes, functional_primitive, n_basis_of, primitive_motions, sfpca_for,
+)
 from .sfpca import SFPCA, ObservationObjective, TopEigenvectors
+from .evaluations.measures import feature_error, knn_accuracy, latent_separation, observation_error
 
 __all__ = [
     "BSplineBasis", "BayesianGPLVM", "FPCA", "FunctionLayout", "FunctionalGPLVM", "FunctionalMotions",
     "NormalizedFPCA", "ObservationObjective", "SFPCA", "TopEigenvectors", "WeightedFPCA", "align_quaternion_signs",
-    "bspline_fit_rmse", "choose_n_basis", "feature_error", "frame_times", "functional_std", "knn_accuracy",
-    "latent_separation", "observation_error", "zscore_weights",
+    "bspline_fit_rmse", "canonical_primitives", "choose_basis_sizes", "choose_n_basis", "feature_error",
+    "frame_times", "functional_primitive", "functional_std", "knn_accuracy", "latent_separation", "n_basis_of",
+    "observation_error", "primitive_motions", "sfpca_for", "zscore_weights",
 ]

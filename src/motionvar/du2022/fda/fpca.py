@@ -23,10 +23,12 @@ from sklearn.decomposition import PCA
 
 from ...core.motion import Motion
 from ...core.skeleton import Skeleton
+from ...io.model_file import load_model, save_model
 from .bspline import BSplineBasis
 from .functions import FunctionalMotions, FunctionLayout
 
 _SAVED_CLASSES: dict[str, type] = {}
+SAVED_KIND = "du2022.fpca"  # the "kind" of a saved FPCA-family model's settings
 
 
 def functional_std(X: FunctionalMotions) -> np.ndarray:
@@ -173,48 +175,50 @@ class FPCA:
         return fd.to_motions(skeleton, fps)
 
     # ---- persistence ---------------------------------------------------------------
-    _EXTRA_SAVED: tuple[str, ...] = ()
+    _SAVED_ARRAYS = ("parents_", "offsets_mean_", "function_weights_", "mean_", "components_", "explained_variance_",
+                     "explained_variance_ratio_", "singular_values_")
+    _EXTRA_SAVED: tuple[str, ...] = ()  # fitted scalars kept in the JSON settings
 
-    def save(self, path: str | Path) -> None:
-        """Write the fitted model to an .npz file (no pickles)."""
+    def save(self, path: str | Path) -> list[Path]:
+        """Write the fitted model as ``<base>.npz`` (arrays) and ``<base>.json`` (class and
+        sizes) with :func:`motionvar.io.model_file.save_model` (``path`` with or without
+        suffix); returns both paths."""
         if not hasattr(self, "components_"):
             raise RuntimeError(f"{type(self).__name__} is not fitted yet: nothing to save")
-        arrays = {
-            "class_name": np.array(type(self).__name__),
-            "n_components": np.array(self.n_components),
-            "n_basis": np.array(self.basis_.n_basis),
-            "degree": np.array(self.basis_.degree),
-            "n_joints": np.array(self.layout_.n_joints),
-            "n_frames": np.array(self.n_frames_),
+        settings = {
+            "kind": SAVED_KIND,
+            "class_name": type(self).__name__,
+            "n_components": int(self.n_components),
+            "n_basis": int(self.basis_.n_basis),
+            "degree": int(self.basis_.degree),
+            "n_joints": int(self.layout_.n_joints),
+            "n_frames": int(self.n_frames_),
         }
-        for name in ("parents_", "offsets_mean_", "function_weights_", "mean_", "components_", "explained_variance_",
-                     "explained_variance_ratio_", "singular_values_", *self._EXTRA_SAVED):
-            arrays[name] = np.asarray(getattr(self, name))
-        path = Path(path)
-        path.parent.mkdir(parents=True, exist_ok=True)
-        with open(path, "wb") as fh:
-            np.savez(fh, **arrays)
+        for name in self._EXTRA_SAVED:
+            value = getattr(self, name)
+            settings[name] = value.item() if isinstance(value, np.generic) else value
+        arrays = {name: np.asarray(getattr(self, name)) for name in self._SAVED_ARRAYS}
+        return save_model(path, arrays, settings)
 
     @classmethod
     def load(cls, path: str | Path) -> "FPCA":
         """Read a model written by :meth:`save` (returns the saved class)."""
-        try:
-            with np.load(path, allow_pickle=False) as z:
-                a = {k: z[k] for k in z.files}
-        except Exception as exc:
-            raise ValueError(f"{path}: not a readable FPCA model ({exc})") from exc
-        name = str(a.get("class_name", ""))
+        a, settings = load_model(path, kind=SAVED_KIND)
+        name = settings.get("class_name", "")
         if name not in _SAVED_CLASSES:
             raise ValueError(f"{path}: unknown model class {name!r}")
         model = _SAVED_CLASSES[name].__new__(_SAVED_CLASSES[name])
-        model.n_components = int(a["n_components"])
-        model.basis_ = BSplineBasis(int(a["n_basis"]), int(a["degree"]))
-        model.layout_ = FunctionLayout(int(a["n_joints"]))
-        model.n_frames_ = int(a["n_frames"])
-        for name in ("parents_", "offsets_mean_", "function_weights_", "mean_", "components_", "explained_variance_",
-                     "explained_variance_ratio_", "singular_values_", *model._EXTRA_SAVED):
-            value = a[name]
-            setattr(model, name, value.item() if value.ndim == 0 else value)
+        model.n_components = int(settings["n_components"])
+        model.basis_ = BSplineBasis(int(settings["n_basis"]), int(settings["degree"]))
+        model.layout_ = FunctionLayout(int(settings["n_joints"]))
+        model.n_frames_ = int(settings["n_frames"])
+        missing = [n for n in (*model._SAVED_ARRAYS, *model._EXTRA_SAVED) if n not in a and n not in settings]
+        if missing:
+            raise ValueError(f"{path}: saved {name} lacks {missing}")
+        for n in model._SAVED_ARRAYS:
+            setattr(model, n, a[n])
+        for n in model._EXTRA_SAVED:
+            setattr(model, n, settings[n])
         model._gram_sqrt, model._gram_isqrt = model.basis_.gram_sqrt()
         K, D = model.mean_.shape
         model.eigenfunctions_ = np.einsum("kl,nld->nkd", model._gram_isqrt, model.components_.reshape(-1, K, D))

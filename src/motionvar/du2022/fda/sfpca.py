@@ -86,7 +86,7 @@ class ObservationObjective:
         X: the clips' functional data.
         n_components: latent dimension.
         n_eval_frames: canonical frames at which f_k is evaluated (default ``X.n_frames``).
-        dtype: torch dtype of the forward kinematics (float32 is 2x faster, STACK.md);
+        dtype: torch dtype of the forward kinematics (float32 is 2x faster, docs/stack.md);
             the eigen-decomposition is always float64.
     """
 

@@ -1,5 +1,6 @@
-"""Measures of Du 2022, Sec. 3.3.5: reconstruction errors in feature and observation
-space (Fig. 3.10) and how well labelled clips stay apart in a latent space (Fig. 3.11).
+"""Measures shared by the Du 2022 ch. 3 evaluations (Sec. 3.3.5): reconstruction errors
+in feature and observation space (Fig. 3.10, Table 3.1) and how well labelled clips stay
+apart in a latent space (Fig. 3.11).
 """
 
 from __future__ import annotations
@@ -7,7 +8,7 @@ from __future__ import annotations
 import numpy as np
 from sklearn.metrics import silhouette_score
 
-from .functions import FunctionalMotions
+from ..functions import FunctionalMotions
 
 
 def feature_error(X: FunctionalMotions, coefs_hat: np.ndarray) -> float:

@@ -1,0 +1,133 @@
+"""The measurements behind Du 2022 Fig. 3.10-3.11 for one primitive: for each method (FPCA,
+normalized FPCA, SFPCA, Bayesian GPLVM) the average reconstruction error in feature and
+observation space per number of latent dimensions, and the clips' latent coordinates at
+the Fig. 3.11 dimension. They are measured once per primitive (the SFPCA and GPLVM fits
+take minutes) and read by :func:`.fig3_10.evaluate_fig3_10` and
+:func:`.fig3_11.evaluate_fig3_11`.
+
+The measurements of one primitive are a flat dict of arrays (saved as one ``.npz``; they
+are results, not a fitted model): ``primitive``, ``dims``, ``latent_dim``, ``labels``,
+``n_basis``, ``n_clips``, ``canonical_frames``, ``methods`` and per method, keys prefixed
+by its name, ``<method>/feature_error``, ``/observation_error``, ``/fit_seconds``,
+``/info`` (one entry per dimension) and ``<method>/latent`` (clips x latent_dim).
+"""
+
+from __future__ import annotations
+
+import logging
+import time
+from collections.abc import Mapping, Sequence
+from typing import Any
+
+import numpy as np
+import pandas as pd
+
+from ..fpca import FPCA, NormalizedFPCA
+from ..functional_gplvm import FunctionalGPLVM
+from ..functions import FunctionalMotions
+from ..primitives import sfpca_for
+from .measures import feature_error, observation_error
+
+log = logging.getLogger(__name__)
+
+METHODS = ("fpca", "normalized_fpca", "sfpca", "gplvm")
+
+
+def kmeans_labels(fd: FunctionalMotions, positions: np.ndarray, n_clusters: int, seed: int) -> np.ndarray:
+    """Thesis Sec. 3.3.5: labels of the discriminative prior from k-means++ on the clips'
+    joint-position trajectories."""
+    from sklearn.cluster import KMeans
+
+    x = positions.reshape(fd.n_clips, -1)
+    return KMeans(n_clusters=n_clusters, init="k-means++", n_init=10, random_state=seed).fit_predict(x)
+
+
+def method_curves(
+    method: str, fd: FunctionalMotions, reference: np.ndarray, dims: Sequence[int], latent_dim: int, seed: int,
+    sfpca: Mapping[str, Any], gplvm: Mapping[str, Any],
+) -> tuple[list[tuple[float, float, float, str]], np.ndarray]:
+    """([(feature error, observation error, fit seconds, note) per d in ``dims``], latent
+    coordinates at ``latent_dim``) of one method. ``reference``: the clips' joint positions
+    (``fd.positions()``); ``sfpca``: options of :func:`sfpca_for`; ``gplvm``: ``n_inducing``,
+    ``max_iter``, ``noise_init``, ``discriminative_sigma2`` (None: no prior), ``n_clusters``."""
+
+    def errors(coefs):
+        return feature_error(fd, coefs), observation_error(fd, coefs, reference=reference)
+
+    rows = []
+    if method in ("fpca", "normalized_fpca"):
+        start = time.perf_counter()
+        cls = FPCA if method == "fpca" else NormalizedFPCA
+        model = cls(max(max(dims), latent_dim)).fit(fd)  # nested eigenfunctions: one fit serves every d
+        fit_s = time.perf_counter() - start
+        for d in dims:
+            rows.append((*errors(model.reconstruct(fd, d)), fit_s, ""))
+        return rows, model.transform(fd)[:, :latent_dim]
+
+    labels_dp = None
+    if method == "gplvm" and gplvm["discriminative_sigma2"] is not None:
+        labels_dp = kmeans_labels(fd, reference, min(gplvm["n_clusters"], fd.n_clips - 1), seed)
+    latent = None
+    for d in sorted(set(dims) | {latent_dim}):
+        start = time.perf_counter()
+        if method == "sfpca":
+            model = sfpca_for(fd, d, **sfpca).fit(fd)
+            note = f"init {model.init_}, {model.n_iter_} it, loss {model.loss_:.4g} cm^2"
+        else:
+            model = FunctionalGPLVM(d, n_inducing=gplvm["n_inducing"], max_iter=gplvm["max_iter"],
+                                    noise_init=gplvm["noise_init"],
+                                    discriminative_sigma2=gplvm["discriminative_sigma2"],
+                                    random_state=seed).fit(fd, labels_dp)
+            note = f"{model.gplvm_.n_iter_} it, {model.gplvm_.message_[:40]}"
+        fit_s = time.perf_counter() - start
+        log.info("%s d=%d: %.1f s, %s", method, d, fit_s, note)
+        if d == latent_dim:
+            latent = model.transform(fd)
+        if d in dims:
+            rows.append((*errors(model.reconstruct(fd)), fit_s, note))
+    return rows, latent
+
+
+def reconstruction_curves(
+    fd: FunctionalMotions, labels: Sequence[str], primitive: str, methods: Sequence[str], dims: Sequence[int],
+    latent_dim: int, seed: int, sfpca: Mapping[str, Any], gplvm: Mapping[str, Any],
+) -> dict[str, np.ndarray]:
+    """The Fig. 3.10-3.11 measurements of one primitive (module docstring) for ``methods``.
+    ``dims`` above clips - 1 (the rank of the centred data) are dropped and ``latent_dim``
+    capped there; ``labels``: one per clip (Fig. 3.11 colours)."""
+    n_max = fd.n_clips - 1  # rank of the centred data
+    dims = sorted({d for d in dims if d <= n_max})
+    if not dims:
+        raise ValueError(f"config fda.reconstruction.dims: none <= {n_max} (clips - 1 of {primitive})")
+    latent_dim = min(latent_dim, n_max)
+    reference = fd.positions()
+    out = {
+        "primitive": np.array(primitive), "dims": np.array(dims), "latent_dim": np.array(latent_dim),
+        "labels": np.array([str(v) for v in labels], dtype=str),
+        "n_basis": np.array(fd.basis.n_basis), "n_clips": np.array(fd.n_clips),
+        "canonical_frames": np.array(fd.n_frames), "methods": np.array(methods, dtype=str),
+    }
+    for method in methods:
+        rows, latent = method_curves(method, fd, reference, dims, latent_dim, seed, sfpca, gplvm)
+        feat, obs, seconds, notes = zip(*rows)
+        out.update({f"{method}/feature_error": np.array(feat), f"{method}/observation_error": np.array(obs),
+                    f"{method}/fit_seconds": np.array(seconds), f"{method}/info": np.array(notes, dtype=str),
+                    f"{method}/latent": latent})
+    return out
+
+
+def curves_table(curves: Sequence[Mapping[str, np.ndarray]]) -> pd.DataFrame:
+    """One row per (primitive, method, dimension) of the measurements of several primitives
+    (the Fig. 3.10 table)."""
+    rows = []
+    for z in curves:
+        for method in z["methods"]:
+            for i, d in enumerate(z["dims"]):
+                rows.append({
+                    "primitive": str(z["primitive"]), "method": str(method), "dims": int(d),
+                    "feature_error": float(z[f"{method}/feature_error"][i]),
+                    "observation_error_cm": float(z[f"{method}/observation_error"][i]),
+                    "fit_seconds": float(z[f"{method}/fit_seconds"][i]), "n_clips": int(z["n_clips"]),
+                    "n_basis": int(z["n_basis"]), "info": str(z[f"{method}/info"][i]),
+                })
+    return pd.DataFrame(rows)
