@@ -132,7 +132,7 @@ def plot_identification(ax_bar: Axes, ax_conf: Axes, table, confusion: dict) -> 
 def plot_repetition(ax: Axes, pooled: dict[str, np.ndarray]) -> None:
     """Best-match normalised cross-correlation of every window, per source (box plots)."""
     names = list(pooled)
-    ax.boxplot([pooled[k] for k in names], vert=False, widths=0.6, showfliers=False)
+    ax.boxplot([pooled[k] for k in names], orientation="horizontal", widths=0.6, showfliers=False)
     for k, name in enumerate(names):
         v = pooled[name]
         jitter = np.random.default_rng(k).uniform(-0.15, 0.15, len(v))
