@@ -43,25 +43,31 @@ def save_model(path: str | Path, arrays: dict[str, np.ndarray], settings: dict[s
     return [npz, js]
 
 
-def load_model(path: str | Path, kind: str | None = None) -> tuple[dict[str, np.ndarray], dict[str, Any]]:
-    """Read ``(arrays, settings)`` written by :func:`save_model`. With ``kind``, the
-    settings must say ``"kind": kind``. Errors name the file."""
-    base = model_base(path)
-    npz, js = base.with_suffix(".npz"), base.with_suffix(".json")
-    for f in (npz, js):
+def _read_settings(data_file: Path, js: Path, kind: str | None) -> dict[str, Any]:
+    """The settings JSON beside ``data_file``, checked for ``kind``; errors name the file."""
+    for f in (data_file, js):
         if not f.is_file():
             raise FileNotFoundError(f"{f}: model file missing")
     try:
         settings = json.loads(js.read_text())
     except (OSError, ValueError) as exc:
         raise ValueError(f"{js}: not a readable model settings file ({exc})") from exc
+    if kind is not None and settings.get("kind") != kind:
+        raise ValueError(f"{js}: not a saved {kind} (kind {settings.get('kind')!r})")
+    return settings
+
+
+def load_model(path: str | Path, kind: str | None = None) -> tuple[dict[str, np.ndarray], dict[str, Any]]:
+    """Read ``(arrays, settings)`` written by :func:`save_model`. With ``kind``, the
+    settings must say ``"kind": kind``. Errors name the file."""
+    base = model_base(path)
+    npz = base.with_suffix(".npz")
+    settings = _read_settings(npz, base.with_suffix(".json"), kind)
     try:
         with np.load(npz, allow_pickle=False) as z:
             arrays = {k: z[k] for k in z.files}
     except (OSError, ValueError) as exc:
         raise ValueError(f"{npz}: not a readable model array file ({exc})") from exc
-    if kind is not None and settings.get("kind") != kind:
-        raise ValueError(f"{js}: not a saved {kind} (kind {settings.get('kind')!r})")
     return arrays, settings
 
 
@@ -81,18 +87,10 @@ def load_torch_model(path: str | Path, kind: str | None = None) -> tuple[dict, d
     import torch
 
     base = model_base(path)
-    pt, js = base.with_suffix(".pt"), base.with_suffix(".json")
-    for f in (pt, js):
-        if not f.is_file():
-            raise FileNotFoundError(f"{f}: model file missing")
-    try:
-        settings = json.loads(js.read_text())
-    except (OSError, ValueError) as exc:
-        raise ValueError(f"{js}: not a readable model settings file ({exc})") from exc
+    pt = base.with_suffix(".pt")
+    settings = _read_settings(pt, base.with_suffix(".json"), kind)
     try:
         state = torch.load(pt, weights_only=True)
     except Exception as exc:  # torch raises several kinds for a corrupt file
         raise ValueError(f"{pt}: not a readable torch weights file ({exc})") from exc
-    if kind is not None and settings.get("kind") != kind:
-        raise ValueError(f"{js}: not a saved {kind} (kind {settings.get('kind')!r})")
     return state, settings
