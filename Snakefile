@@ -38,10 +38,11 @@ include: "workflow/rules/du2022_graph.smk"
 include: "workflow/rules/du2022_style.smk"
 include: "workflow/rules/ma2010.smk"
 include: "workflow/rules/egges2004.smk"
+include: "workflow/rules/applicability.smk"
 include: "workflow/rules/report.smk"
 
 
 rule all:
     default_target: True
     input:
-        [path for dataset in run_datasets() for path in default_outputs(dataset)],
+        all_outputs,

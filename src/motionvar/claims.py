@@ -2,6 +2,13 @@
 
 A claim is one statement a paper makes that our data can check. Its verdict is always
 computed from measured numbers by one of the helpers below, never written by hand.
+
+Verdicts of a claim that was checked: ``reproduced``, ``partial``, ``not reproduced``.
+Two more say why a claim was not decided, each with its reason in the note:
+``not testable`` (even the ideal, e.g. brute force, cannot meet the bar on this data) and
+``not applicable`` (the dataset lacks what the evaluation needs: no idle clips, one
+subject). An evaluation that finds its input insufficient raises :class:`NotApplicable`
+or returns :func:`not_applicable_result`.
 """
 
 from __future__ import annotations
@@ -15,7 +22,9 @@ from typing import Any
 
 import pandas as pd
 
-VERDICTS = ("reproduced", "partial", "not reproduced")
+CHECKED_VERDICTS = ("reproduced", "partial", "not reproduced")
+UNDECIDED_VERDICTS = ("not testable", "not applicable")
+VERDICTS = CHECKED_VERDICTS + UNDECIDED_VERDICTS
 CLAIM_COLUMNS = ("claim_id", "paper", "source", "statement", "published", "measured", "verdict", "note")
 
 
@@ -40,6 +49,19 @@ class Claim:
             raise ValueError(f"claim {self.claim_id}: verdict {self.verdict!r} not in {VERDICTS}")
         if not self.claim_id.startswith(self.paper + "."):
             raise ValueError(f"claim {self.claim_id}: id must start with the paper key {self.paper!r}")
+        if self.verdict in UNDECIDED_VERDICTS and not self.note.strip():
+            raise ValueError(f"claim {self.claim_id}: a {self.verdict!r} claim needs its reason in the note")
+
+
+class NotApplicable(Exception):
+    """Raised by an evaluation (or the loading of its inputs) when the dataset lacks what
+    it needs; the rule then writes :func:`not_applicable_result` with ``reason``
+    instead of failing. ``reason`` speaks of the user's data ("no idle clips: Egges 2004
+    needs standing idle motion")."""
+
+    def __init__(self, reason: str) -> None:
+        super().__init__(reason)
+        self.reason = reason
 
 
 @dataclass
@@ -52,6 +74,36 @@ class EvaluationResult:
     table: pd.DataFrame
     claims: list[Claim]
     figure: dict[str, Any] = field(default_factory=dict)
+
+
+_SOURCE_KINDS = {"fig": "Fig.", "table": "Table", "sec": "Sec."}
+
+
+def evaluation_source(evaluation: str) -> str:
+    """The paper's label of an evaluation from its name: ``ma2010_fig6`` -> "Fig. 6",
+    ``du2022_sec4_6_1`` -> "Sec. 4.6.1" (the name itself when it follows no pattern)."""
+    parts = evaluation.split("_")[1:]
+    for i, part in enumerate(parts):
+        for prefix, label in _SOURCE_KINDS.items():
+            if part.startswith(prefix) and part[len(prefix):].isdigit():
+                return f"{label} {'.'.join([part[len(prefix):], *parts[i + 1:]])}"
+    return evaluation
+
+
+def not_applicable_result(evaluation: str, reason: str, checks: str = "", source: str = "") -> EvaluationResult:
+    """The outputs of an evaluation that a dataset cannot support: one claim
+    ``<paper>.<evaluation>.not_applicable`` with verdict ``not applicable`` and ``reason``
+    in its note, a one-row table saying so, and the reason for the figure."""
+    paper, _, rest = evaluation.partition("_")
+    source = source or evaluation_source(evaluation)
+    statement = checks or f"The checks of {source}."
+    claim = Claim(
+        claim_id=f"{paper}.{rest or evaluation}.not_applicable", paper=paper, source=source, statement=statement,
+        published="-", measured="-", verdict="not applicable", note=reason,
+    )
+    table = pd.DataFrame([{"evaluation": evaluation, "source": source, "verdict": "not applicable", "reason": reason}])
+    return EvaluationResult(table=table, claims=[claim], figure={"title": f"{paper} {source}", "reason": reason,
+                                                                 "not_applicable": True})
 
 
 def verdict_from_bool(ok: bool) -> str:

@@ -172,8 +172,13 @@ def in_report(path, paper, caption, **labels):
 
 
 def gif_pages(dataset):
-    """The report pages of the GIFs whose paths vary only with the dataset."""
-    return [f"{p}.html".format(dataset=dataset) for p in GIF_PAGES if re.fullmatch(r"[^{}]*(\{dataset\}[^{}]*)*", p)]
+    """The report pages of the GIFs whose paths vary only with the dataset and that no
+    evaluation owns (those come with their evaluation: evaluation_outputs)."""
+    owned = {p for spec in EVALUATIONS.values() for p in spec["extra"]}
+    return [
+        f"{p}.html".format(dataset=dataset) for p in GIF_PAGES
+        if p not in owned and re.fullmatch(r"[^{}]*(\{dataset\}[^{}]*)*", p)
+    ]
 
 
 def register_evaluation(ev, paper, extra=()):
@@ -186,22 +191,59 @@ def register_evaluation(ev, paper, extra=()):
     EVALUATIONS[ev] = {"paper": paper, "extra": list(extra)}
 
 
+# Applicability (rules/applicability.smk): checkpoint applicability decides from a
+# dataset's metadata which evaluations it supports; the others give "not applicable"
+# outputs under results/{dataset}/not_applicable/.
+APPLICABILITY = "results/{dataset}/applicability.csv"
+NOT_APPLICABLE = "results/{dataset}/not_applicable"
+
+
+def not_applicable_outputs(ev):
+    """Table, figure and claims of an evaluation the dataset cannot support."""
+    return {k: f"{NOT_APPLICABLE}/{ev}.{ext}" for k, ext in (("table", "csv"), ("figure", "png"), ("claims", "json"))}
+
+
+def applicable(dataset):
+    """Evaluation -> whether the dataset supports it (checkpoint applicability)."""
+    import pandas as pd
+
+    path = checkpoints.applicability.get(dataset=dataset).output[0]
+    table = pd.read_csv(path, dtype={"evaluation": str}, keep_default_na=False)
+    status = dict(zip(table["evaluation"], table["applicable"].astype(str) == "True"))
+    missing = sorted(set(EVALUATIONS) - set(status))
+    if missing:
+        raise WorkflowError(f"{path}: no applicability decided for {missing} (rerun rule applicability)")
+    return status
+
+
+def _evaluation_files(dataset, ev, ok):
+    if not ok:
+        return [p.format(dataset=dataset) for p in not_applicable_outputs(ev).values()]
+    extra = [p.format(dataset=dataset) for p in EVALUATIONS[ev]["extra"]]
+    pages = [f"{p}.html".format(dataset=dataset) for p in EVALUATIONS[ev]["extra"] if p in GIF_PAGES]
+    return [ev_table(ev).format(dataset=dataset), ev_figure(ev).format(dataset=dataset),
+            ev_claims(ev).format(dataset=dataset), *extra, *pages]
+
+
 def evaluation_outputs(dataset):
-    """Every registered evaluation's outputs for one dataset."""
-    out = []
-    for ev, spec in EVALUATIONS.items():
-        for pattern in [ev_table(ev), ev_figure(ev), ev_claims(ev), *spec["extra"]]:
-            out.append(pattern.format(dataset=dataset))
-    return out
+    """Every registered evaluation's outputs for one dataset: its own where the dataset
+    supports it, else its not-applicable table, figure and claims."""
+    return [p for ev, ok in applicable(dataset).items() if ev in EVALUATIONS for p in _evaluation_files(dataset, ev, ok)]
 
 
 def claim_files(dataset):
-    return [ev_claims(ev).format(dataset=dataset) for ev in EVALUATIONS]
+    """The claims files of all registered evaluations (not-applicable ones included)."""
+    status = applicable(dataset)
+    return [
+        (ev_claims(ev) if status[ev] else not_applicable_outputs(ev)["claims"]).format(dataset=dataset)
+        for ev in EVALUATIONS
+    ]
 
 
 def default_outputs(dataset):
     """What `snakemake` builds for one dataset: the data figures, the preprocessed
-    clips, every registered evaluation, the merged claims and their summary."""
+    clips, every registered evaluation (or its not-applicable outputs), the merged
+    claims and their summary."""
     return [
         f"results/{dataset}/prep/metadata.csv",
         f"results/{dataset}/figures/dataset_overview.png",
@@ -211,3 +253,8 @@ def default_outputs(dataset):
         f"results/{dataset}/claims.csv",
         f"results/{dataset}/claims_summary.html",
     ]
+
+
+def all_outputs(wildcards):
+    """Input function of rule all: the default outputs of every dataset in run_datasets."""
+    return [path for dataset in run_datasets() for path in default_outputs(dataset)]

@@ -10,9 +10,12 @@ from pathlib import Path
 
 import pandas as pd
 
-from ..claims import CLAIM_COLUMNS, VERDICTS
+from ..claims import CHECKED_VERDICTS, CLAIM_COLUMNS, UNDECIDED_VERDICTS, VERDICTS
 
-VERDICT_COLOURS = {"reproduced": "#c9ecd0", "partial": "#ffe8a8", "not reproduced": "#f6c6c6"}
+VERDICT_COLOURS = {
+    "reproduced": "#c9ecd0", "partial": "#ffe8a8", "not reproduced": "#f6c6c6",
+    "not testable": "#d6e4f0", "not applicable": "#e4e4e4",
+}
 
 
 def read_claims_table(path: str | Path) -> pd.DataFrame:
@@ -43,13 +46,18 @@ td.note { font-size: 0.85em; color: #444; }
 .id { font-family: monospace; font-size: 0.75em; overflow-wrap: anywhere; color: #555; }
 .counts span { display: inline-block; padding: 0.15em 0.6em; margin-right: 0.5em; border-radius: 0.3em; }
 p.none { color: #666; font-style: italic; }
+.counts span.apart { background: none; color: #555; font-size: 0.85em; padding: 0; }
 """
 
 
 def _counts(verdicts: pd.Series) -> str:
-    return "".join(
-        f'<span style="background:{VERDICT_COLOURS[v]}">{int((verdicts == v).sum())} {v}</span>' for v in VERDICTS
-    )
+    """Counts of the checked verdicts, then (apart) those not decided, when there are any."""
+    def span(v: str) -> str:
+        return f'<span style="background:{VERDICT_COLOURS[v]}">{int((verdicts == v).sum())} {v}</span>'
+
+    checked = "".join(span(v) for v in CHECKED_VERDICTS)
+    undecided = [span(v) for v in UNDECIDED_VERDICTS if (verdicts == v).any()]
+    return checked + (' <span class="apart">not decided:</span> ' + "".join(undecided) if undecided else "")
 
 
 def claims_html(

@@ -1,0 +1,35 @@
+"""What the Ma et al. 2010 evaluations need from a dataset (:mod:`motionvar.applicability`):
+walking clips of the modelled styles and variants, long enough to hold gait cycles."""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+from ..applicability import Need, Requirement
+
+PAPER = "ma2010"
+
+# evaluation -> (source, what it checks, minimum number of walking clips)
+EVALUATIONS = {
+    "ma2010_fig3": ("Fig. 3", "Key frames (foot strikes, Eq. 1-4) align the walking cycles of different clips.", 1),
+    "ma2010_fig6": ("Fig. 6", "Leave-one-out: the synthesized cycle has the held-out clip's stride (within 1.2 cm); "
+                              "Kriging beats RBF (MK05).", 2),
+    "ma2010_fig7b": ("Fig. 7b", "Strides far outside the examples are synthesized less reliably.", 2),
+    "ma2010_fig8": ("Fig. 8a", "At a fixed style, variants differ as much as the examples do, at the same stride.", 2),
+    "ma2010_sec7_4": ("Sec. 7.4", "Ours is the most natural of six methods (foot skating, jerk, discontinuities).", 2),
+    "ma2010_sec8": ("Sec. 8", "Synthesis runs faster than real time.", 2),
+}
+
+
+def requirements(walk_styles: Sequence[str], walk_variants: Sequence[str]) -> list[Requirement]:
+    """One requirement per evaluation: walking clips (``behaviour`` walk) of
+    ``walk_styles`` and ``walk_variants`` (config ma2010; an empty list accepts any)."""
+    styles = "/".join(walk_styles) if walk_styles else "any-style"
+    where = {"behaviour": ("walk",), "style": tuple(walk_styles), "variant": tuple(walk_variants)}
+    out = []
+    for ev, (source, checks, n) in EVALUATIONS.items():
+        need = Need(what=f"{styles} walking clips", stage="data", where=where, min_count=n,
+                    why="Ma 2010 models the gait cycles of walking (Sec. 4); set ma2010.walk_styles and "
+                        "ma2010.walk_variants to labels your data has")
+        out.append(Requirement(ev, PAPER, source, checks, (need,)))
+    return out

@@ -1,0 +1,106 @@
+"""Applicability: evaluations declare what they need, a dataset that lacks it gets
+`not applicable` claims with the reason (decided from the data), and the summary counts
+them apart from the checked claims."""
+
+from __future__ import annotations
+
+import json
+
+import pandas as pd
+import pytest
+from rule_scripts import FakeSnakemake, Named, run
+
+from motionvar.applicability import Need, Requirement, applicability_table, unmet
+from motionvar.claims import Claim, NotApplicable, evaluation_source, not_applicable_result
+from motionvar.du2022.requirements import fda_requirements, graph_requirements, style_requirements
+from motionvar.egges2004.requirements import requirements as egges2004_requirements
+from motionvar.ma2010.requirements import requirements as ma2010_requirements
+from motionvar.report.summary import claims_html
+
+
+def _meta(rows):
+    return pd.DataFrame(rows, columns=["clip_id", "subject", "behaviour", "style", "variant", "primitive"]).astype(str)
+
+
+DATA = _meta([
+    ("w1", "s1", "walk", "neutral", "forward", ""), ("w2", "s2", "walk", "neutral", "forward", ""),
+    ("w3", "s1", "walk", "proud", "forward", ""), ("r1", "s1", "run", "neutral", "", ""),
+])
+PREP = _meta([
+    ("w1_0", "s1", "walk", "neutral", "forward", "walk_leftStance"),
+    ("w1_1", "s1", "walk", "neutral", "forward", "walk_rightStance"),
+    ("w2_0", "s2", "walk", "neutral", "forward", "walk_leftStance"),
+    ("w3_0", "s1", "walk", "proud", "forward", "walk_leftStance"),
+])
+
+
+def test_unmet_names_what_is_missing_and_why():
+    need = Need(what="idle recordings", why="Egges 2004 models standing", where={"behaviour": ("idle",)}, min_count=2)
+    assert unmet(need, DATA) == ("needs at least 2 idle recordings (clips with behaviour idle), the dataset has none: "
+                                 "Egges 2004 models standing")
+    walks = Need(what="walks", why="w", where={"behaviour": ("walk",)}, min_count=2, min_subjects=3)
+    assert "from at least 3 subjects, the dataset has 2" in unmet(walks, DATA)
+    variants = Need(what="walks", why="w", where={"behaviour": ("walk",)}, min_distinct={"variant": 2})
+    assert "at least 2 different variant values, the dataset has 1 (forward)" in unmet(variants, DATA)
+    assert unmet(Need(what="walks", why="w", where={"behaviour": ("walk",), "variant": ()}), DATA) is None
+
+
+def test_every_paper_declares_its_evaluations_and_decides_from_the_data():
+    reqs = [*ma2010_requirements(["neutral"], ["forward"]),
+            *fda_requirements(["walk"], 1, ["walk_leftStance"], "pick_reach"),
+            *graph_requirements(["walk_leftStance"], ["walk_leftStance"], ["walk_leftStance"], "pick_reach", 1),
+            *style_requirements(["proud"], ["walk_leftStance"], ["walk_leftStance"], "walk_leftStance", 1),
+            *egges2004_requirements(1)]
+    table = applicability_table(reqs, {"data": DATA, "prep": PREP}).set_index("evaluation")
+    assert table.loc["ma2010_fig6", "applicable"] and table.loc["du2022_fig3_10", "applicable"]
+    assert table.loc["du2022_table5_1", "applicable"] and table.loc["du2022_fig4_12", "applicable"]
+    assert not table.loc["egges2004_speed", "applicable"]
+    assert "idle recordings" in table.loc["egges2004_speed", "reason"]
+    assert not table.loc["du2022_fig3_11", "applicable"] and "pick_reach" in table.loc["du2022_fig3_11", "reason"]
+    assert not table.loc["du2022_fig4_10", "applicable"]
+
+
+def test_not_applicable_result_is_one_claim_with_the_reason():
+    result = not_applicable_result("egges2004_repetition", "no idle clips", checks="No repeats.", source="Sec. 6")
+    (claim,) = result.claims
+    assert claim.claim_id == "egges2004.repetition.not_applicable" and claim.verdict == "not applicable"
+    assert claim.note == "no idle clips" and claim.source == "Sec. 6"
+    assert result.table["reason"].tolist() == ["no idle clips"]
+    with pytest.raises(ValueError, match="needs its reason"):
+        Claim("ma2010.x", "ma2010", "Fig. 6", "s", "p", "m", "not applicable", note="")
+
+
+@pytest.mark.parametrize("ev, source", [("ma2010_fig6", "Fig. 6"), ("du2022_sec4_6_1", "Sec. 4.6.1"),
+                                        ("du2022_table5_1", "Table 5.1"), ("egges2004_speed", "egges2004_speed")])
+def test_evaluation_source(ev, source):
+    assert evaluation_source(ev) == source
+
+
+def test_summary_counts_undecided_verdicts_apart():
+    claims = [Claim("ma2010.a", "ma2010", "Fig. 6", "s", "p", "m", "reproduced"),
+              not_applicable_result("ma2010_fig8", "one subject").claims[0]]
+    table = pd.DataFrame([c.__dict__ for c in claims])
+    html = claims_html(table, {"ma2010": "Ma et al. 2010"})
+    assert "not decided:" in html and "1 not applicable" in html and "1 reproduced" in html
+
+
+def test_an_evaluation_that_raises_not_applicable_writes_its_outputs(tmp_path):
+    def main(snakemake):
+        raise NotApplicable("only 1 gait cycle; leave-one-out needs 3")
+
+    out = Named(table=str(tmp_path / "t.csv"), figure=str(tmp_path / "f.png"), claims=str(tmp_path / "c.json"),
+                gif=str(tmp_path / "a.gif"))
+    run(FakeSnakemake(tmp_path, "ma2010_fig6", output=out, wildcards=Named(dataset="xia")), main)
+    (claim,) = json.loads((tmp_path / "c.json").read_text())
+    assert claim["verdict"] == "not applicable" and "leave-one-out needs 3" in claim["note"] and "xia" in claim["note"]
+    assert (tmp_path / "f.png").stat().st_size > 0 and (tmp_path / "a.gif").stat().st_size > 0
+    assert pd.read_csv(tmp_path / "t.csv")["verdict"].tolist() == ["not applicable"]
+
+
+def test_not_applicable_in_a_model_rule_is_an_error_line(tmp_path, capsys):
+    def main(snakemake):
+        raise NotApplicable("no idle clips")
+
+    with pytest.raises(SystemExit):
+        run(FakeSnakemake(tmp_path, "egges2004_model", output=Named(model=str(tmp_path / "m.npz"))), main)
+    assert "ERROR rule egges2004_model: not applicable to this dataset: no idle clips" in capsys.readouterr().err

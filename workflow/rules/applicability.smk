@@ -1,0 +1,61 @@
+# Which evaluations a dataset supports, decided from its data (motionvar.applicability and
+# each paper's requirements.py): checkpoint applicability reads the clips' and the
+# primitives' metadata; the default target then asks for each supported evaluation's
+# outputs and, for the others, for a "not applicable" table, figure and claim naming what
+# the data lacks (rules not_applicable_<paper>). Included after every paper's rule file.
+
+
+checkpoint applicability:
+    input:
+        data=f"{DATA}/metadata.csv",
+        prep=f"{PREP}/metadata.csv",
+    output:
+        APPLICABILITY,
+    params:
+        evaluations=list(EVALUATIONS),
+        ma2010=config_params("ma2010", ["walk_styles", "walk_variants"]),
+        fda=config_params("fda", ["behaviours", "min_clips", "reconstruction.primitives",
+                                  "reconstruction.pick_primitive"]),
+        graph=config_params("graph", ["primitives", "synthesis.reach_primitive"]),
+        graph_search=config_params("graph", ["search.primitives"]),
+        style=config_params("style", ["styles", "vae_primitives", "style_primitives", "distance_primitive"]),
+        idle=config_params("idle", ["held_out_clips"]),
+    log:
+        ev_log("applicability"),
+    benchmark:
+        ev_benchmark("applicability")
+    threads: 1
+    resources:
+        mem_mb=1000,
+    conda:
+        ENV
+    script:
+        "../scripts/applicability.py"
+
+
+for _na_paper in ("ma2010", "du2022", "egges2004"):
+
+    rule:
+        name:
+            f"not_applicable_{_na_paper}"
+        input:
+            APPLICABILITY,
+        output:
+            table=in_report(not_applicable_outputs("{ev}")["table"], _na_paper, "../report/not_applicable.rst",
+                            figure="not applicable", kind="table"),
+            figure=in_report(not_applicable_outputs("{ev}")["figure"], _na_paper, "../report/not_applicable.rst",
+                             figure="not applicable", kind="figure"),
+            claims=not_applicable_outputs("{ev}")["claims"],
+        wildcard_constraints:
+            ev=f"{_na_paper}_\\w+",
+        log:
+            ev_log(f"not_applicable_{_na_paper}", "{ev}"),
+        benchmark:
+            ev_benchmark(f"not_applicable_{_na_paper}", "{ev}")
+        threads: 1
+        resources:
+            mem_mb=500,
+        conda:
+            ENV
+        script:
+            "../scripts/not_applicable.py"
