@@ -43,7 +43,9 @@ def folder(tmp_path) -> Path:
 
 def test_import_folder(folder):
     motions, meta = import_bvh_folder(folder, "labels.csv", unit_cm=CMU_UNIT_CM, joint_map=cmu_joint_map())
-    assert list(meta.columns) == ["clip_id", "subject", "behaviour", "style", "variant", "primitive", "source_file", "take"]
+    assert list(meta.columns) == ["clip_id", "subject", "behaviour", "style", "variant", "primitive", "source_file",
+                                  "source_behaviour", "source_style", "take"]
+    assert meta["source_behaviour"].tolist() == ["walk", "walk", "run"]
     assert meta["clip_id"].tolist() == ["a", "b", "c"]
     assert meta["subject"].tolist() == ["02", "02", "07"]
     assert meta["style"].tolist() == ["neutral", "proud", ""]
@@ -137,7 +139,7 @@ def test_topology_mismatch_names_the_file(folder):
     write_bvh(folder / "other.bvh", Motion(sk, np.zeros((3, 3)), Q.qidentity((3, 2)), fps=30.0))
     csv = _labels(folder, "file,subject,behaviour,style\na.bvh,02,walk,x\nother.bvh,02,walk,x\n")
     with pytest.raises(DatasetError, match=rf"{folder / 'other.bvh'}: skeleton topology or channel layout differs"):
-        import_bvh_folder(folder, csv, unit_cm=CMU_UNIT_CM)
+        import_bvh_folder(folder, csv, unit_cm=CMU_UNIT_CM, mixed_rigs="error")
 
 
 def test_channel_layout_mismatch_names_the_file(folder):
@@ -148,7 +150,7 @@ def test_channel_layout_mismatch_names_the_file(folder):
     write_bvh(folder / "zxy.bvh", m, scale=CMU_UNIT_CM)
     csv = _labels(folder, "file,subject,behaviour,style\na.bvh,02,walk,x\nzxy.bvh,02,walk,x\n")
     with pytest.raises(DatasetError, match="zxy.bvh: skeleton topology or channel layout differs"):
-        import_bvh_folder(folder, csv, unit_cm=CMU_UNIT_CM)
+        import_bvh_folder(folder, csv, unit_cm=CMU_UNIT_CM, mixed_rigs="error")
 
 
 def test_joint_map_that_does_not_fit(folder):
@@ -204,7 +206,7 @@ def test_real_cmu_folder_drops_tpose_and_rejects_other_rig(tmp_path):
     assert jump_raw > 45 > 10 > jump_new
     csv.write_text(csv.read_text() + "131_01.bvh,131,walk,jackson\n")
     with pytest.raises(DatasetError, match="131_01.bvh: skeleton topology"):
-        import_bvh_folder(folder, csv, unit_cm=CMU_UNIT_CM)
+        import_bvh_folder(folder, csv, unit_cm=CMU_UNIT_CM, mixed_rigs="error")
     assert isinstance(meta, pd.DataFrame)
 
 
@@ -218,3 +220,138 @@ def test_joint_map_file_naming_absent_joints_names_the_yaml_file(folder, tmp_pat
     path.write_text(yaml.safe_dump({"joints": {**jm.joints, "head": "Skull"}}))
     with pytest.raises(DatasetError, match=r"joint map for .*a.bvh \(.*my_rig.yaml\): joints not in the skeleton"):
         import_bvh_folder(folder, "labels.csv", unit_cm=CMU_UNIT_CM, joint_map=load_joint_map(path))
+
+
+# ---------------------------------------------------------------- labels as users write them
+
+
+def test_behaviour_vocabulary_is_the_segmenters():
+    from motionvar.io.bvh_dataset import BEHAVIOURS
+    from motionvar.prep import SEGMENTERS
+
+    assert sorted(BEHAVIOURS) == sorted(SEGMENTERS)
+
+
+def test_aliases_map_the_source_words_and_keep_them(folder):
+    _labels(folder, "file,subject,behaviour,style\na.bvh,02,walk_step,normal\nb.bvh,02,sidestep_left,sexy\n"
+                    "sub/c.bvh,07,jog,normal\n")
+    _, meta = import_bvh_folder(
+        folder, "labels.csv", unit_cm=CMU_UNIT_CM,
+        behaviour_aliases={"walk_step": "walk", "sidestep_left": {"behaviour": "sidestep", "variant": "left"},
+                           "jog": "run"},
+        style_aliases={"sexy": "female"}, neutral_style="normal",
+    )
+    assert meta["behaviour"].tolist() == ["walk", "sidestep", "run"]
+    assert meta["variant"].tolist() == ["", "left", ""]
+    assert meta["style"].tolist() == ["neutral", "female", "neutral"]
+    assert meta["source_behaviour"].tolist() == ["walk_step", "sidestep_left", "jog"]
+    assert meta["source_style"].tolist() == ["normal", "sexy", "normal"]
+
+
+def test_behaviours_no_paper_uses_are_left_out_unread(folder, caplog):
+    (folder / "broken.bvh").write_text("not a BVH file")  # left out, so never parsed
+    _labels(folder, "file,subject,behaviour,style\na.bvh,02,walk,x\nb.bvh,02,jump,x\nbroken.bvh,02,kick,x\n"
+                    "sub/c.bvh,02,jump,x\n")
+    with caplog.at_level("WARNING"):
+        motions, meta = import_bvh_folder(folder, "labels.csv", unit_cm=CMU_UNIT_CM)
+    assert meta["clip_id"].tolist() == ["a"] and len(motions) == 1
+    assert "left out 3 clips of behaviours no paper uses: jump 2, kick 1" in caplog.text
+
+
+LABEL_WORD_ERRORS = {
+    # name: (labels CSV rows, import keyword arguments, expected message)
+    "no behaviour left": ("a.bvh,02,walk_step,x\n", {},
+                          "no clip has a behaviour the papers use (idle, pick, place, run, sidestep, walk); found "
+                          "walk_step: map the source's words with behaviour_aliases"),
+    "alias to an unknown behaviour": ("a.bvh,02,walk_step,x\n", {"behaviour_aliases": {"walk_step": "stroll"}},
+                                      "behaviour_aliases: walk_step -> 'stroll' is not a behaviour the papers use"),
+    "malformed alias": ("a.bvh,02,walk_step,x\n", {"behaviour_aliases": {"walk_step": {"variant": "l"}}},
+                        "behaviour_aliases: walk_step: expected a behaviour or"),
+    "variant clash": ("a.bvh,02,walk,x,\nb.bvh,02,side_l,x,right\n",
+                      {"behaviour_aliases": {"side_l": {"behaviour": "sidestep", "variant": "left"}}},
+                      "labels.csv:3: variant 'right' contradicts behaviour_aliases (side_l -> variant 'left')"),
+    "neutral twice": ("a.bvh,02,walk,normal\n", {"neutral_style": "normal", "style_aliases": {"normal": "calm"}},
+                      "neutral_style 'normal' is also in style_aliases (-> 'calm')"),
+    "bad mixed_rigs": ("a.bvh,02,walk,x\n", {"mixed_rigs": "majority"}, "mixed_rigs: 'majority' is not one of"),
+}
+
+
+@pytest.mark.parametrize("case", list(LABEL_WORD_ERRORS))
+def test_bad_label_words_are_named(folder, case):
+    rows, kw, expected = LABEL_WORD_ERRORS[case]
+    header = "file,subject,behaviour,style" + (",variant" if case == "variant clash" else "")
+    _labels(folder, header + "\n" + rows)
+    with pytest.raises(DatasetError) as info:
+        import_bvh_folder(folder, "labels.csv", unit_cm=CMU_UNIT_CM, **kw)
+    assert expected in str(info.value)
+
+
+def test_unused_aliases_are_logged(folder, caplog):
+    with caplog.at_level("WARNING"):
+        import_bvh_folder(folder, "labels.csv", unit_cm=CMU_UNIT_CM, behaviour_aliases={"walk_stepp": "walk"})
+    assert "aliases that match no clip: walk_stepp" in caplog.text
+
+
+# ---------------------------------------------------------------- mixed rigs, re-rooting
+
+
+def _other_rig(path: Path) -> None:
+    sk = Skeleton(names=("Hips", "Spine"), parents=np.array([-1, 0]), offsets=np.array([[0, 0, 0], [0, 10.0, 0]]))
+    write_bvh(path, Motion(sk, np.zeros((3, 3)), Q.qidentity((3, 2)), fps=30.0))
+
+
+def test_mixed_rigs_leave_the_minority_out(folder, caplog):
+    _other_rig(folder / "other.bvh")
+    _labels(folder, "file,subject,behaviour,style\na.bvh,02,walk,x\nother.bvh,02,walk,x\nb.bvh,02,walk,x\n")
+    with caplog.at_level("WARNING"):
+        motions, meta = import_bvh_folder(folder, "labels.csv", unit_cm=CMU_UNIT_CM, joint_map=cmu_joint_map())
+    assert meta["clip_id"].tolist() == ["a", "b"] and len(motions) == 2
+    assert "left out 1 clips on another rig than the other 2 (2 joints, not 31): other.bvh" in caplog.text
+
+
+def test_mixed_rigs_without_a_majority_stop(folder):
+    _other_rig(folder / "other.bvh")
+    _labels(folder, "file,subject,behaviour,style\na.bvh,02,walk,x\nother.bvh,02,walk,x\n")
+    with pytest.raises(DatasetError, match="no rig holds a majority of the clips"):
+        import_bvh_folder(folder, "labels.csv", unit_cm=CMU_UNIT_CM)
+
+
+def _floor_rooted_folder(tmp_path: Path) -> Path:
+    from test_reroot import floor_rooted
+
+    d = tmp_path / "floor"
+    d.mkdir()
+    for seed in range(2):
+        write_bvh(d / f"w{seed}.bvh", floor_rooted(translations=True, seed=seed))
+    (d / "labels.csv").write_text("file,subject,behaviour,style\nw0.bvh,1,walk,n\nw1.bvh,1,walk,n\n")
+    return d
+
+
+def test_import_reroots_at_the_joint_maps_hips(tmp_path, caplog):
+    """A ROOT below which the pelvis hangs (Bandai's joint_Root): joint 0 becomes the hips."""
+    from test_reroot import floor_rooted
+
+    d = _floor_rooted_folder(tmp_path)
+    with caplog.at_level("INFO"):
+        motions, _ = import_bvh_folder(d, "labels.csv", unit_cm=1.0, joint_map=cmu_joint_map())
+    assert "re-rooting every clip at the joint map's hips Hips (the BVH ROOT is Ground)" in caplog.text
+    for seed, m in enumerate(motions):
+        ref = read_bvh(d / f"w{seed}.bvh")
+        assert m.skeleton.names == cmu_skeleton().names
+        assert np.abs(m.positions() - ref.positions()[:, 1:]).max() < 1e-6
+        assert np.abs(m.positions() - floor_rooted(True, seed=seed).positions()[:, 1:]).max() < 1e-3  # file precision
+
+
+def test_joint_map_groups_listing_a_joint_above_the_hips(tmp_path):
+    d = _floor_rooted_folder(tmp_path)
+    jm = cmu_joint_map()
+    jm = JointMap(jm.joints, {**jm.groups, "upper_body": ("Ground",) + jm.groups["upper_body"]}, origin="my.yaml")
+    with pytest.raises(DatasetError, match=r"\(my.yaml\): groups list \['Ground'\], above the hips Hips; .*delete"):
+        import_bvh_folder(d, "labels.csv", unit_cm=1.0, joint_map=jm)
+
+
+def test_hips_whose_ancestors_have_other_children_is_refused(folder):
+    jm = cmu_joint_map()
+    jm = JointMap({**jm.joints, "hips": "LowerBack"}, {})
+    with pytest.raises(DatasetError, match="hips = LowerBack is not the BVH ROOT and cannot make LowerBack the root"):
+        import_bvh_folder(folder, "labels.csv", unit_cm=CMU_UNIT_CM, joint_map=jm)

@@ -45,7 +45,8 @@ def test_defaults_are_filled_per_source():
     bvh = cfg["datasets"]["mine"]
     assert bvh == {
         "source": "bvh", "path": "x", "unit_cm": 1.0, "labels": "labels.csv", "drop_first_frame": False,
-        "joint_map": None,
+        "joint_map": None, "behaviour_aliases": {}, "style_aliases": {}, "neutral_style": None,
+        "mixed_rigs": "skip_minority", "plausibility_check": True,
     }  # and none of the synthetic keys leaked in
     assert cfg["prep"] == PrepOptions().to_dict()
     assert cfg["report"]["animation_fps"] == 20

@@ -9,6 +9,7 @@ import pytest
 from bvh_files import real_bvh_dir
 
 from motionvar.core import cmu_joint_map
+from motionvar.core.reroot import reroot
 from motionvar.io import JointMapError, load_joint_map, read_bvh
 
 MAPS = Path(__file__).resolve().parents[1] / "config/joint_maps"
@@ -36,7 +37,7 @@ def test_map_fits_its_rig(name, rel):
     if not path.is_file():
         pytest.skip(f"{path} absent")
     jm = load_joint_map(MAPS / f"{name}.yaml")
-    m = read_bvh(path)
+    m = reroot(read_bvh(path), jm.joints["hips"])  # as imported: the hips joint is the root
     sk = m.skeleton
     jm.validate(sk, source=name)
     # the groups partition the rig: every joint listed once

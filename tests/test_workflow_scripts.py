@@ -110,7 +110,8 @@ def bvh_folder(tmp_path, labels):
     folder = tmp_path / "bvh"
     folder.mkdir()
     sk = cmu_skeleton()
-    motion = Motion(sk, np.tile([0.0, 95.0, 0.0], (10, 1)), qidentity((10, sk.n_joints)), 30.0)
+    root = np.column_stack([np.zeros(10), np.full(10, 95.0), np.linspace(0.0, 30.0, 10)])  # 1 m/s forward
+    motion = Motion(sk, root, qidentity((10, sk.n_joints)), 30.0)  # a stiff walk, but the gates pass it
     write_bvh(folder / "walk_01.bvh", motion)
     (folder / "labels.csv").write_text(labels)
     return folder
@@ -168,3 +169,52 @@ def test_data_script_reads_a_deeply_nested_rig(tmp_path, capsys):
         run(fake, script("data").main)
     assert "joints not in the skeleton" in capsys.readouterr().err
     assert not out.exists() or not any(out.iterdir())
+
+
+def floor_rooted_folder(tmp_path, hips):
+    """The CMU rig under an extra ROOT ``Ground`` at floor level (as Bandai's joint_Root),
+    walking at 1 m/s, and a joint map whose ``hips`` is ``hips``."""
+    from motionvar.core import Skeleton
+
+    cmu = cmu_skeleton()
+    names = ("Ground",) + cmu.names
+    parents = np.concatenate([[-1], cmu.parents + 1])
+    parents[1] = 0
+    offsets = np.vstack([[0.0, 0.0, 0.0], cmu.offsets])
+    offsets[1] = [0.0, 95.0, 0.0]
+    sk = Skeleton(names, parents, offsets, {j + 1: o for j, o in cmu.end_sites.items()})
+    root = np.column_stack([np.zeros(30), np.zeros(30), np.linspace(0.0, 100.0, 30)])
+    folder = tmp_path / "bvh"
+    folder.mkdir()
+    write_bvh(folder / "walk_01.bvh", Motion(sk, root, qidentity((30, len(names))), 30.0))
+    (folder / "labels.csv").write_text("file,subject,behaviour,style\nwalk_01.bvh,s1,walk,neutral\n")
+    jm = (Path(__file__).resolve().parents[1] / "config/joint_maps/cmu.yaml").read_text()
+    (folder / "rig.yaml").write_text(jm.replace("  hips: Hips\n", f"  hips: {hips}\n"))
+    return folder
+
+
+def test_data_script_stops_when_the_hips_is_a_floor_point(tmp_path, capsys):
+    folder = floor_rooted_folder(tmp_path, hips="Ground")
+    out, fake = data_fake(tmp_path, bvh_entry(folder, joint_map=str(folder / "rig.yaml")))
+    with pytest.raises(SystemExit):
+        run(fake, script("data").main)
+    err = capsys.readouterr().err.strip()
+    assert err.startswith("ERROR rule data: datasets.mine: pelvis (joint map hips = Ground) is ") and len(
+        err.splitlines()) == 1
+    assert "1/1 clips outside 60-130 cm" in err and f"check the joint map's 'hips' ({folder / 'rig.yaml'})" in err
+    assert not out.exists() or not any(out.iterdir())
+    fake.params.entry["plausibility_check"] = False  # expert switch: the same data goes through
+    run(fake, script("data").main)
+    assert (out / "metadata.csv").is_file()
+
+
+def test_data_script_reroots_at_the_hips_and_passes(tmp_path):
+    from motionvar.io import load_dataset
+
+    folder = floor_rooted_folder(tmp_path, hips="Hips")
+    out, fake = data_fake(tmp_path, bvh_entry(folder, joint_map=str(folder / "rig.yaml")))
+    run(fake, script("data").main)
+    clip = load_dataset(out).motion(0)
+    assert clip.skeleton.names == cmu_skeleton().names  # Ground is gone, Hips is joint 0
+    assert np.allclose(clip.root_pos[:, 1], 95.0) and np.isclose(clip.root_pos[-1, 2], 100.0)
+    assert "plausibility over 1 clips" in Path(fake.log[0]).read_text()

@@ -256,5 +256,5 @@ def default_outputs(dataset):
 
 
 def all_outputs(wildcards):
-    """Input function of rule all: the default outputs of every dataset in run_datasets."""
+    """Input function of the default target: the default outputs of every dataset in run_datasets."""
     return [path for dataset in run_datasets() for path in default_outputs(dataset)]

@@ -1,5 +1,7 @@
 # Stage 1: the clips of a dataset, packed (results/{dataset}/data/clips.npz +
-# metadata.csv): the synthetic generator or a labelled BVH folder (config.datasets).
+# metadata.csv): the synthetic generator or a labelled BVH folder (config.datasets),
+# re-rooted at the pelvis where the BVH ROOT is not, and passed through the sanity gates
+# (motionvar.io.plausibility) before anything is written.
 
 
 rule data:

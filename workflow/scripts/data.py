@@ -1,36 +1,36 @@
-"""Rule data: generate the synthetic dataset or import a labelled BVH folder, and pack
-it into results/{dataset}/data/ (clips.npz + metadata.csv)."""
+"""Rule data: the synthetic generator or a labelled BVH folder, through the sanity gates
+(motionvar.io.plausibility), packed into results/{dataset}/data/ (clips.npz + metadata.csv)."""
 
+import logging
 from pathlib import Path
+
+from motionvar.core import cmu_joint_map
+from motionvar.io import import_bvh_folder, load_joint_map, save_dataset
+from motionvar.io.plausibility import plausibility_gate
+
+KEYS = ("drop_first_frame", "behaviour_aliases", "style_aliases", "neutral_style", "mixed_rigs")
 
 
 def load(entry: dict, workers: int = 1):
-    """(motions, metadata) of one config.datasets entry; the generator runs ``workers``
-    processes (the rule's threads; the output does not depend on it)."""
+    """(motions, metadata, joint map) of a config.datasets entry; ``workers``: the generator's processes."""
     if entry["source"] == "synthetic":
-        from motionvar.synth import SynthSpec, generate_dataset
-
-        return generate_dataset(SynthSpec(**{k: v for k, v in entry.items() if k != "source"}), workers=workers)
-    from motionvar.core import cmu_joint_map
-    from motionvar.io.bvh_dataset import import_bvh_folder
-    from motionvar.io.joint_map_file import load_joint_map
-
-    joint_map = load_joint_map(entry["joint_map"]) if entry["joint_map"] else cmu_joint_map()
-    return import_bvh_folder(entry["path"], entry["labels"], entry["unit_cm"],
-                             drop_first_frame=entry["drop_first_frame"], joint_map=joint_map)
+        from motionvar.synth import SynthSpec, generate_dataset  # imported only for synthetic data
+        spec = SynthSpec(**{k: v for k, v in entry.items() if k != "source"})
+        return (*generate_dataset(spec, workers=workers), cmu_joint_map())
+    jm = load_joint_map(entry["joint_map"]) if entry["joint_map"] else cmu_joint_map()
+    kw = {k: entry[k] for k in KEYS if k in entry}
+    return (*import_bvh_folder(entry["path"], entry["labels"], entry["unit_cm"], joint_map=jm, **kw), jm)
 
 
 def main(snakemake) -> None:
-    import logging
-
-    from motionvar.io import save_dataset
-
+    entry, name = dict(snakemake.params.entry), snakemake.wildcards.dataset
     try:
-        motions, metadata = load(dict(snakemake.params.entry), workers=snakemake.threads)
+        motions, metadata, joint_map = load(entry, workers=snakemake.threads)
+        plausibility_gate(motions, metadata, joint_map, entry.get("unit_cm"), entry.get("plausibility_check", True))
     except ValueError as exc:
-        raise ValueError(f"datasets.{snakemake.wildcards.dataset}: {exc}") from exc
+        raise ValueError(f"datasets.{name}: {exc}") from exc
     save_dataset(Path(snakemake.output.clips).parent, motions, metadata)
-    logging.info("%s: %d clips, %d frames", snakemake.wildcards.dataset, len(motions), sum(m.n_frames for m in motions))
+    logging.info("%s: %d clips, %d frames", name, len(motions), sum(m.n_frames for m in motions))
 
 
 if "snakemake" in globals():

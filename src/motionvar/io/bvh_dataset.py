@@ -1,9 +1,24 @@
 """Import a labelled folder of BVH files as clips plus a metadata table, and export
-single clips as BVH (docs/design.md, "Datasets").
+single clips as BVH (docs/design.md, "Datasets"; README, "Your own BVH data").
 
 The labels CSV has one row per clip with the columns ``file`` (path relative to the
 folder), ``subject``, ``behaviour`` and ``style``; any further columns (``variant``,
-``primitive``, ...) are carried into the metadata. Only the labelled files are read.
+``primitive``, ...) are carried into the metadata.
+
+Labels as users write them: ``behaviour_aliases`` maps the source's behaviour words to
+ours (optionally with a variant: ``sidestep_left -> sidestep, variant left``),
+``style_aliases`` its style words, and ``neutral_style`` names its neutral style (mapped to
+``neutral``). The source's words stay in the columns ``source_behaviour`` and
+``source_style``. Clips whose behaviour (after the aliases) is not one the papers use
+(:data:`BEHAVIOURS`) are left out with a count in the log; only the kept files are read.
+
+Mixed rigs: with ``mixed_rigs="skip_minority"`` the clips whose skeleton (topology or
+channel layout) differs from the most common one are left out, named in the log;
+``"error"`` stops at the first such file.
+
+A ROOT that is not the pelvis (the joint map's ``hips`` is not joint 0, e.g. Bandai's
+ground-projected ``joint_Root``): every clip is re-rooted at the hips
+(:func:`motionvar.core.reroot.reroot`), so that joint 0 is the pelvis downstream.
 
 The CMU files of the cgspeed conversion start with a synthetic T-pose at frame 0 that
 the converter added; pass ``drop_first_frame=True`` to remove it (the 3dsMax-friendly
@@ -12,18 +27,33 @@ release, e.g. 131_*.bvh, has none). No heuristic tries to detect it.
 
 from __future__ import annotations
 
+import logging
+from collections import Counter
+from collections.abc import Mapping
 from pathlib import Path
 
 import pandas as pd
 
 from ..core.joint_map import JointMap
 from ..core.motion import Motion
+from ..core.reroot import RerootError, reroot, reroot_skeleton
 from ..core.skeleton import Skeleton
 from .bvh import read_bvh, write_bvh
 from .dataset import DatasetError
 
+log = logging.getLogger(__name__)
+
 REQUIRED_COLUMNS = ("file", "subject", "behaviour", "style")
-METADATA_COLUMNS = ("clip_id", "subject", "behaviour", "style", "variant", "primitive", "source_file")
+METADATA_COLUMNS = (
+    "clip_id", "subject", "behaviour", "style", "variant", "primitive", "source_file",
+    "source_behaviour", "source_style",
+)
+#: The behaviours the papers use (the segmenters of motionvar.prep.segmentation.SEGMENTERS;
+#: tests check that the two agree).
+BEHAVIOURS = ("idle", "pick", "place", "run", "sidestep", "walk")
+MIXED_RIGS = ("error", "skip_minority")
+#: A behaviour alias: a behaviour, or {"behaviour": ..., "variant": ...}.
+BehaviourAlias = str | Mapping[str, str]
 
 
 def _read_labels(labels_csv: Path) -> pd.DataFrame:
@@ -37,32 +67,160 @@ def _read_labels(labels_csv: Path) -> pd.DataFrame:
     for col in REQUIRED_COLUMNS:
         if col not in labels.columns:
             raise DatasetError(f"{labels_csv}: missing required column {col!r} (has {list(labels.columns)})")
+    reserved = [c for c in ("source_behaviour", "source_style", "clip_id", "source_file") if c in labels.columns]
+    if reserved:
+        raise DatasetError(f"{labels_csv}: columns {reserved} are written by the import; rename them")
     if labels.empty:
         raise DatasetError(f"{labels_csv}: no clips listed")
+    labels.index = labels.index + 2  # the CSV line of each row (header = line 1)
     return labels
+
+
+def _alias_target(word: str, alias: BehaviourAlias) -> tuple[str, str]:
+    """(behaviour, variant) of one behaviour alias; ValueError naming it if malformed."""
+    if isinstance(alias, str):
+        behaviour, variant = alias, ""
+    elif isinstance(alias, Mapping) and isinstance(alias.get("behaviour"), str) and set(alias) <= {"behaviour", "variant"}:
+        behaviour, variant = alias["behaviour"], str(alias.get("variant", ""))
+    else:
+        raise DatasetError(f"behaviour_aliases: {word}: expected a behaviour or {{behaviour: ..., variant: ...}}; "
+                           f"got {alias!r}")
+    if behaviour not in BEHAVIOURS:
+        raise DatasetError(f"behaviour_aliases: {word} -> {behaviour!r} is not a behaviour the papers use "
+                           f"({', '.join(BEHAVIOURS)})")
+    return behaviour, variant
+
+
+def apply_label_aliases(
+    labels: pd.DataFrame,
+    behaviour_aliases: Mapping[str, BehaviourAlias] | None = None,
+    style_aliases: Mapping[str, str] | None = None,
+    neutral_style: str | None = None,
+    labels_csv: str | Path = "labels",
+) -> pd.DataFrame:
+    """Labels with our behaviour/style words; the source's in ``source_behaviour`` and
+    ``source_style``. An alias with a variant fills an empty ``variant``; a row whose own
+    variant differs is an error naming its CSV line (the index of ``labels``)."""
+    behaviour_aliases = dict(behaviour_aliases or {})
+    style_aliases = dict(style_aliases or {})
+    if neutral_style:
+        if style_aliases.get(neutral_style, "neutral") != "neutral":
+            raise DatasetError(f"neutral_style {neutral_style!r} is also in style_aliases "
+                               f"(-> {style_aliases[neutral_style]!r}); keep one")
+        style_aliases[neutral_style] = "neutral"
+    out = labels.copy()
+    out["source_behaviour"] = out["behaviour"].str.strip()
+    out["source_style"] = out["style"].str.strip()
+    targets = {w: _alias_target(w, a) for w, a in behaviour_aliases.items()}
+    out["behaviour"] = out["source_behaviour"].map(lambda w: targets[w][0] if w in targets else w)
+    alias_variant = out["source_behaviour"].map(lambda w: targets[w][1] if w in targets else "")
+    own = out["variant"].str.strip() if "variant" in out else pd.Series("", index=out.index)
+    clash = (alias_variant != "") & (own != "") & (own != alias_variant)
+    if clash.any():
+        line = clash.idxmax()
+        raise DatasetError(f"{labels_csv}:{line}: variant {own[line]!r} contradicts behaviour_aliases "
+                           f"({out.at[line, 'source_behaviour']} -> variant {alias_variant[line]!r})")
+    out["variant"] = own.where(own != "", alias_variant)
+    out["style"] = out["source_style"].map(lambda w: style_aliases.get(w, w))
+    unused = [w for w in behaviour_aliases if w not in set(out["source_behaviour"])]
+    unused += [w for w in style_aliases if w not in set(out["source_style"])]
+    if unused:
+        log.warning("%s: aliases that match no clip: %s", labels_csv, ", ".join(unused))
+    return out
+
+
+def keep_paper_behaviours(labels: pd.DataFrame, labels_csv: str | Path = "labels") -> pd.DataFrame:
+    """The rows whose behaviour is in :data:`BEHAVIOURS`; the others are logged by count.
+    DatasetError if none is left."""
+    keep = labels["behaviour"].isin(BEHAVIOURS)
+    if not keep.any():
+        found = ", ".join(sorted(set(labels["behaviour"])))
+        raise DatasetError(f"{labels_csv}: no clip has a behaviour the papers use ({', '.join(BEHAVIOURS)}); "
+                           f"found {found}: map the source's words with behaviour_aliases")
+    if not keep.all():
+        counts = labels.loc[~keep, "behaviour"].value_counts().sort_index()
+        log.warning("left out %d clips of behaviours no paper uses: %s", int((~keep).sum()),
+                    ", ".join(f"{b} {n}" for b, n in counts.items()))
+    return labels[keep]
 
 
 def _layout(sk: Skeleton) -> tuple:
     return sk.names, tuple(sk.parents.tolist()), sk.rotation_orders, sk.position_channels
 
 
+def _describe_difference(a: Skeleton, b: Skeleton) -> str:
+    if a.n_joints != b.n_joints:
+        return f"{a.n_joints} joints, not {b.n_joints}"
+    if a.names != b.names or not (a.parents == b.parents).all():
+        return "another joint hierarchy"
+    return "another channel layout"
+
+
 def _check_files(labels: pd.DataFrame, folder: Path, labels_csv: Path) -> list[Path]:
-    """Paths of the labelled files; errors name the CSV line (header = line 1)."""
+    """Paths of the labelled files; errors name the CSV line (the index of ``labels``)."""
     paths = []
-    for i, name in enumerate(labels["file"].str.strip()):
-        line = i + 2
+    for line, name in labels["file"].str.strip().items():
         if not name:
             raise DatasetError(f"{labels_csv}:{line}: empty 'file' entry")
         path = folder / name
         if not path.is_file():
             raise DatasetError(f"{labels_csv}:{line}: labelled file {name!r} does not exist in {folder}")
         paths.append(path)
-    stems = pd.Series([p.stem for p in paths])
+    stems = pd.Series([p.stem for p in paths], index=labels.index)
     dup = stems[stems.duplicated(keep=False)]
     if len(dup):
-        lines = ", ".join(str(i + 2) for i in dup.index)
+        lines = ", ".join(str(i) for i in dup.index)
         raise DatasetError(f"{labels_csv}: duplicate clip ids {sorted(set(dup))} (file stems at lines {lines})")
     return paths
+
+
+def _one_rig(motions: list[Motion], paths: list[Path], mixed_rigs: str) -> list[int]:
+    """Indices of the clips on the most common rig; the others are left out (logged) or,
+    with ``mixed_rigs="error"``, stop the import at the first one."""
+    keys = [_layout(m.skeleton) for m in motions]
+    if mixed_rigs == "error":
+        for k, p in zip(keys, paths):
+            if k != keys[0]:
+                raise DatasetError(f"{p}: skeleton topology or channel layout differs from {paths[0]} (all clips "
+                                   f"must share one; mixed_rigs: skip_minority leaves the minority out)")
+        return list(range(len(motions)))
+    counts = Counter(keys).most_common()
+    if len(counts) > 1 and counts[0][1] == counts[1][1]:
+        a, b = (paths[keys.index(k)] for k, _ in counts[:2])
+        raise DatasetError(f"{b}: skeleton topology or channel layout differs from {a}, and no rig holds a "
+                           f"majority of the clips ({counts[0][1]} and {counts[1][1]}): label one rig per dataset")
+    kept = [i for i, k in enumerate(keys) if k == counts[0][0]]
+    if len(kept) < len(motions):
+        ref = motions[kept[0]].skeleton
+        left = [i for i in range(len(motions)) if keys[i] != counts[0][0]]
+        log.warning("left out %d clips on another rig than the other %d (%s): %s", len(left), len(kept),
+                    _describe_difference(motions[left[0]].skeleton, ref), ", ".join(paths[i].name for i in left))
+    return kept
+
+
+def _fit_joint_map(joint_map: JointMap, skeleton: Skeleton, source: str) -> int:
+    """Validate ``joint_map`` on ``skeleton``; the index of its hips. If the hips is not
+    joint 0, check that the rig can be re-rooted there and that the groups list no joint
+    above it."""
+    try:
+        joint_map.validate(skeleton, source=source)
+    except ValueError as exc:
+        raise DatasetError(str(exc)) from exc
+    hips = joint_map.index(skeleton, "hips")
+    if hips == 0:
+        return hips
+    where = f"{source} ({joint_map.origin})" if joint_map.origin else source
+    try:
+        new, _ = reroot_skeleton(skeleton, hips)
+    except RerootError as exc:
+        raise DatasetError(f"{where}: hips = {skeleton.names[hips]} is not the BVH ROOT and {exc}") from exc
+    above = [n for g, ns in joint_map.groups.items() for n in ns if n not in new.names]
+    if above:
+        raise DatasetError(f"{where}: groups list {above}, above the hips {skeleton.names[hips]}; the clips are "
+                           f"re-rooted at the hips, which removes them: delete them from the groups")
+    log.info("re-rooting every clip at the joint map's hips %s (the BVH ROOT is %s)",
+             skeleton.names[hips], skeleton.names[0])
+    return hips
 
 
 def import_bvh_folder(
@@ -71,13 +229,19 @@ def import_bvh_folder(
     unit_cm: float,
     drop_first_frame: bool = False,
     joint_map: JointMap | None = None,
+    behaviour_aliases: Mapping[str, BehaviourAlias] | None = None,
+    style_aliases: Mapping[str, str] | None = None,
+    neutral_style: str | None = None,
+    mixed_rigs: str = "skip_minority",
 ) -> tuple[list[Motion], pd.DataFrame]:
     """Read the BVH files listed in ``labels_csv`` (a relative path is taken inside
     ``folder``) with lengths scaled by ``unit_cm`` (cm per file unit, e.g.
     ``CMU_UNIT_CM``). Returns the clips and their metadata (one row per clip, columns
-    :data:`METADATA_COLUMNS` plus any extra label columns). All files must share one
-    topology and channel layout; ``joint_map``, if given, must fit that skeleton.
+    :data:`METADATA_COLUMNS` plus any extra label columns). Aliases, behaviours left out,
+    mixed rigs and re-rooting at the joint map's hips: see the module docstring.
     """
+    if mixed_rigs not in MIXED_RIGS:
+        raise DatasetError(f"mixed_rigs: {mixed_rigs!r} is not one of {list(MIXED_RIGS)}")
     folder = Path(folder)
     labels_csv = Path(labels_csv)
     if not labels_csv.is_absolute():
@@ -87,32 +251,30 @@ def import_bvh_folder(
     if not any(folder.rglob("*.bvh")):
         raise DatasetError(f"{folder}: no .bvh files in the folder")
     labels = _read_labels(labels_csv)
+    labels = apply_label_aliases(labels, behaviour_aliases, style_aliases, neutral_style, labels_csv)
+    labels = keep_paper_behaviours(labels, labels_csv)
     paths = _check_files(labels, folder, labels_csv)
-    motions: list[Motion] = []
-    for path in paths:
-        m = read_bvh(path, scale=unit_cm)
-        if motions and _layout(m.skeleton) != _layout(motions[0].skeleton):
-            raise DatasetError(
-                f"{path}: skeleton topology or channel layout differs from {paths[0]} (all clips must share one)"
-            )
-        if drop_first_frame:
-            if m.n_frames < 2:
-                raise DatasetError(f"{path}: only {m.n_frames} frame; cannot drop the first frame")
-            m = m.slice(1, m.n_frames)
-        motions.append(m)
+    motions = [read_bvh(path, scale=unit_cm) for path in paths]
+    kept = _one_rig(motions, paths, mixed_rigs)
+    motions, paths, labels = [motions[i] for i in kept], [paths[i] for i in kept], labels.iloc[kept]
+    if drop_first_frame:
+        short = [p for p, m in zip(paths, motions) if m.n_frames < 2]
+        if short:
+            raise DatasetError(f"{short[0]}: only 1 frame; cannot drop the first frame")
+        motions = [m.slice(1, m.n_frames) for m in motions]
     if joint_map is not None:
-        try:
-            joint_map.validate(motions[0].skeleton, source=f"joint map for {paths[0]}")
-        except ValueError as exc:
-            raise DatasetError(str(exc)) from exc
+        hips = _fit_joint_map(joint_map, motions[0].skeleton, source=f"joint map for {paths[0]}")
+        motions = [reroot(m, hips) for m in motions]
     meta = pd.DataFrame({
         "clip_id": [p.stem for p in paths],
         "subject": labels["subject"].to_numpy(),
         "behaviour": labels["behaviour"].to_numpy(),
         "style": labels["style"].to_numpy(),
-        "variant": labels["variant"].to_numpy() if "variant" in labels else "",
+        "variant": labels["variant"].to_numpy(),
         "primitive": labels["primitive"].to_numpy() if "primitive" in labels else "",
         "source_file": [str(p) for p in paths],
+        "source_behaviour": labels["source_behaviour"].to_numpy(),
+        "source_style": labels["source_style"].to_numpy(),
     })
     extra = [c for c in labels.columns if c not in METADATA_COLUMNS and c != "file"]
     for c in extra:
