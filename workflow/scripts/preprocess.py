@@ -1,5 +1,6 @@
 """Rule preprocess: foot contacts, segmentation into primitives and alignment of a
-packed dataset (motionvar.prep), written to results/{dataset}/prep/."""
+packed dataset (motionvar.prep), written to results/{dataset}/prep/; the primitives and
+clips dropped (too short, none found) are counted in the log and listed in dropped.csv."""
 
 
 def main(snakemake) -> None:
@@ -9,18 +10,21 @@ def main(snakemake) -> None:
     from motionvar.core import cmu_joint_map
     from motionvar.io import load_dataset, save_dataset
     from motionvar.io.joint_map_file import load_joint_map
-    from motionvar.prep import PrepOptions, preprocess_dataset
+    from motionvar.prep import PrepOptions, drop_summary, preprocess_dataset
 
     try:
         options = PrepOptions.from_dict(snakemake.params.options)
     except ValueError as exc:
         raise ValueError(f"config prep: {exc}") from exc
-    path = snakemake.params.joint_map
+    path, name = snakemake.params.joint_map, snakemake.wildcards.dataset
     joint_map = load_joint_map(path) if path else cmu_joint_map()
     dataset = load_dataset(Path(snakemake.input.clips).parent)
-    motions, metadata = preprocess_dataset(dataset, joint_map, options)
-    save_dataset(Path(snakemake.output.clips).parent, motions, metadata)
-    logging.info("%d clips in, %d primitives out", len(dataset), len(motions))
+    result = preprocess_dataset(dataset, joint_map, options, name=name)
+    prep = Path(snakemake.output.clips).parent
+    save_dataset(prep, result.motions, result.metadata)
+    result.dropped.to_csv(getattr(snakemake.output, "dropped", prep / "dropped.csv"), index=False, float_format="%.6g")
+    summary = drop_summary(result, len(dataset), name, options.min_primitive_s)
+    (logging.warning if len(result.dropped) else logging.info)("%s", summary)
 
 
 if "snakemake" in globals():

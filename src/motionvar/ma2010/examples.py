@@ -201,9 +201,13 @@ def walk_cycles(
         motions, meta["clip_id"].iloc[idx].tolist(), joint_map, min_prominence, min_separation_s
     )
     if len(cycles) < 3:
+        seconds = np.array([m.duration for m in motions])
+        found = "no complete gait cycle" if not cycles else f"only {len(cycles)} complete gait cycle(s)"
         raise ValueError(
-            f"{what}: {len(idx)} walking clips gave {len(cycles)} complete gait cycles; need at least 3 (more "
-            "subjects, or other walking styles)"
+            f"{what}: {found} in the {len(idx)} walk clips (they last {seconds.min():.2g}-{seconds.max():.2g} s, "
+            f"median {np.median(seconds):.2g} s); need at least 3. A cycle (Sec. 4.2) runs from the legs "
+            "farthest apart with the left foot ahead, through the same with the right foot ahead, to the left ahead "
+            "again: two steps, so a clip needs two foot strikes of each foot, a walk of at least ~2 s"
         )
     sk = standard_skeleton([c.skeleton for c in cycles])
     clips = build_clipset(cycles, keys, sk, joint_map, n_frames, clip_ids=table["clip_id"].tolist())

@@ -42,7 +42,8 @@ def draw_fig3(result: EvaluationResult) -> Figure:
         ax_s.plot(t[mn], s[mn], "^", color="tab:blue", label="key frame (minimum)")
         for f in strikes:
             ax_s.axvline(f / m.fps, color="tab:green", lw=0.8, alpha=0.6)
-        ax_s.plot([], [], color="tab:green", lw=0.8, label="foot strike (ground truth)")
+        source = result.figure.get("strike_source", {}).get(behaviour, "detected")
+        ax_s.plot([], [], color="tab:green", lw=0.8, label=f"foot strike ({source})")
         ax_s.set_xlabel("time (s)")
         ax_s.set_ylabel("S_M (cm)")
         ax_s.set_title(f"{behaviour} {cid}: D_l = {ex.signal.d_lower:.0f}, D_u = {ex.signal.d_upper:.0f}", fontsize=10)

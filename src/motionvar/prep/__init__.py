@@ -8,15 +8,16 @@ from .intervals import (
     parse_intervals, parse_segments,
 )
 from .options import PrepOptions
-from .pipeline import preprocess_dataset
+from .pipeline import DROPPED_COLUMNS, Preprocessed, drop_summary, preprocess_dataset
 from .resample import resample_motion, sample_motion
 from .segmentation import SEGMENTERS, contact_onsets, segment_motion
 from .timewarp import apply_warp, dtw_path, dtw_warp, median_length_index, pose_features, warp_to_median
 
 __all__ = [
-    "SEGMENTERS", "FootContacts", "PrepOptions", "Segment", "align_motion", "align_motions", "apply_warp",
-    "clean_mask", "clip_directions", "contact_onsets", "detect_foot_contacts", "dtw_path", "dtw_warp",
-    "facing_directions", "format_intervals", "format_segments", "intervals_to_mask", "joint_speeds",
-    "mask_to_intervals", "median_length_index", "parse_intervals", "parse_segments", "pose_features",
-    "preprocess_dataset", "resample_motion", "sample_motion", "segment_motion", "start_facing", "warp_to_median",
+    "DROPPED_COLUMNS", "SEGMENTERS", "FootContacts", "PrepOptions", "Preprocessed", "Segment", "align_motion",
+    "align_motions", "apply_warp", "clean_mask", "clip_directions", "contact_onsets", "detect_foot_contacts",
+    "drop_summary", "dtw_path", "dtw_warp", "facing_directions", "format_intervals", "format_segments",
+    "intervals_to_mask", "joint_speeds", "mask_to_intervals", "median_length_index", "parse_intervals",
+    "parse_segments", "pose_features", "preprocess_dataset", "resample_motion", "sample_motion", "segment_motion",
+    "start_facing", "warp_to_median",
 ]

@@ -41,22 +41,38 @@ def yaw_to_x(direction: np.ndarray) -> np.ndarray:
     return np.arctan2(direction[..., 2], direction[..., 0])
 
 
-def _check_batch(motions: Sequence[Motion], joint_map: JointMap) -> None:
+def clip_labels(n: int, clip_ids: Sequence[str] | None) -> list[str]:
+    """Names of ``n`` clips for messages: "clip <id>", or "motion <i>" without ids."""
+    if clip_ids is None:
+        return [f"motion {i}" for i in range(n)]
+    if len(clip_ids) != n:
+        raise ValueError(f"{len(clip_ids)} clip ids for {n} motions")
+    return [f"clip {c}" for c in clip_ids]
+
+
+def _check_batch(motions: Sequence[Motion], joint_map: JointMap, clip_ids: Sequence[str] | None = None) -> None:
     if len(motions) == 0:
         raise ValueError("alignment: no motions given")
+    names = clip_labels(len(motions), clip_ids)
     sk0 = motions[0].skeleton
-    for i, m in enumerate(motions):
+    for m, name in zip(motions, names):  # loop over clips
         if not m.skeleton.same_topology(sk0):
-            raise ValueError(f"alignment: motion {i} has another skeleton topology than motion 0")
+            raise ValueError(f"alignment: {name} has another skeleton topology than {names[0]}")
+        if m.n_frames == 0:
+            raise ValueError(f"alignment: {name} has no frames")
+        if not (np.isfinite(m.root_pos).all() and np.isfinite(m.rotations).all()):
+            raise ValueError(f"alignment: {name} has NaN or inf root positions or rotations")
     missing = [s for s in ("left_hip", "right_hip") if s not in joint_map.joints]
     if missing:
         raise ValueError(f"alignment: the joint map lacks semantic joints {missing}")
 
 
-def start_facing(motions: Sequence[Motion], joint_map: JointMap, n_frames: int = 1) -> np.ndarray:
+def start_facing(
+    motions: Sequence[Motion], joint_map: JointMap, n_frames: int = 1, clip_ids: Sequence[str] | None = None
+) -> np.ndarray:
     """(N, 3) facing direction of each clip, averaged over its first ``n_frames`` frames
-    (one FK over all clips at once)."""
-    _check_batch(motions, joint_map)
+    (one FK over all clips at once); ``clip_ids`` name the clips in errors."""
+    _check_batch(motions, joint_map, clip_ids)
     sk = motions[0].skeleton
     idx = [np.minimum(np.arange(n_frames), m.n_frames - 1) for m in motions]
     rot = np.stack([m.rotations[i] for m, i in zip(motions, idx)])  # (N, k, J, 4)
@@ -74,12 +90,15 @@ def start_facing(motions: Sequence[Motion], joint_map: JointMap, n_frames: int =
     return facing_directions(pos, lh, rh).mean(axis=1)
 
 
-def clip_directions(motions: Sequence[Motion], joint_map: JointMap, options: PrepOptions | None = None) -> np.ndarray:
+def clip_directions(
+    motions: Sequence[Motion], joint_map: JointMap, options: PrepOptions | None = None,
+    clip_ids: Sequence[str] | None = None,
+) -> np.ndarray:
     """(N, 3) direction of each clip per ``options.heading``: "hips" (start facing) or
     "movement" (first to last root position; clips travelling less than 1 cm, such as
-    idle standing, fall back to the hips)."""
+    idle standing, fall back to the hips); ``clip_ids`` name the clips in errors."""
     opt = options or PrepOptions()
-    facing = start_facing(motions, joint_map, opt.heading_frames)
+    facing = start_facing(motions, joint_map, opt.heading_frames, clip_ids)
     if opt.heading == "hips":
         return facing
     travel = np.stack([m.root_pos[-1] - m.root_pos[0] for m in motions]) * np.array([1.0, 0.0, 1.0])
@@ -107,15 +126,19 @@ def transform_on_floor(motions: Sequence[Motion], yaw: np.ndarray, origin: np.nd
 
 
 def align_motions(
-    motions: Sequence[Motion], joint_map: JointMap, options: PrepOptions | None = None
+    motions: Sequence[Motion], joint_map: JointMap, options: PrepOptions | None = None,
+    clip_ids: Sequence[str] | None = None,
 ) -> list[Motion]:
     """Aligned copies of ``motions`` (Ma 2010 Eq. 5-6): each starts with its root above
-    the origin (height kept) and its direction (``options.heading``) along +x."""
-    d = clip_directions(motions, joint_map, options)
+    the origin (height kept) and its direction (``options.heading``) along +x.
+    ``clip_ids`` name the clips in errors (empty or non-finite clips)."""
+    d = clip_directions(motions, joint_map, options, clip_ids)
     origin = np.stack([m.root_pos[0] for m in motions]) * np.array([1.0, 0.0, 1.0])
     return transform_on_floor(motions, yaw_to_x(d), origin)
 
 
-def align_motion(motion: Motion, joint_map: JointMap, options: PrepOptions | None = None) -> Motion:
+def align_motion(
+    motion: Motion, joint_map: JointMap, options: PrepOptions | None = None, clip_id: str | None = None
+) -> Motion:
     """One clip aligned as in :func:`align_motions`."""
-    return align_motions([motion], joint_map, options)[0]
+    return align_motions([motion], joint_map, options, None if clip_id is None else [clip_id])[0]

@@ -44,8 +44,17 @@ class PrepOptions:
     Pipeline:
         use_ground_truth_segments: cut at the metadata's ``segments`` column instead of
             detecting contacts (synthetic data: the generator's ground truth).
-        skip_unsegmentable: drop clips in which no primitive is found (with a warning)
-            instead of raising.
+        min_primitive_s: primitives shorter than this (s) are dropped and counted (noisy
+            contacts on real data cut slivers of 1-5 frames, which no later step can warp
+            or resample). No step of human locomotion is shorter: a walking step lasts
+            0.5-0.6 s, a running step 0.33-0.4 s at 150-180 steps/min (docs/gait.md), a
+            sprint step 0.2 s at 5 steps/s. A walk's end primitive (the last heel strike to
+            the clip's end) holds the closing weight transfer and the standing that follows:
+            0.225 s with the generator's minimum of 0.1 s standing (tests/test_prep.py). The
+            workflow's synthetic data have no primitive under 0.33 s. Whatever the value, a
+            primitive needs at least 2 frames.
+        skip_unsegmentable: drop clips in which no primitive is found or left (counted)
+            instead of raising; with False such a clip stops the run, naming it.
         units_cm: centimetres per length unit of the motions (1.0: motions in cm).
     """
 
@@ -60,12 +69,13 @@ class PrepOptions:
     heading: str = "hips"
     heading_frames: int = 1
     use_ground_truth_segments: bool = False
-    skip_unsegmentable: bool = False
+    min_primitive_s: float = 0.2
+    skip_unsegmentable: bool = True
     units_cm: float = 1.0
 
     def __post_init__(self) -> None:
         positive = ("contact_velocity_cm_s", "contact_height_cm", "units_cm")
-        non_negative = ("velocity_window_s", "min_contact_s", "min_gap_s", "hand_smooth_s")
+        non_negative = ("velocity_window_s", "min_contact_s", "min_gap_s", "hand_smooth_s", "min_primitive_s")
         for name in positive:
             if not getattr(self, name) > 0:
                 raise ValueError(f"PrepOptions.{name} must be positive; got {getattr(self, name)!r}")

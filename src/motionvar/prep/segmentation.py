@@ -158,6 +158,16 @@ SEGMENTERS: dict[str, Callable[[Motion, JointMap, np.ndarray, PrepOptions], list
 }
 """Behaviour -> segmenter(motion, joint_map, positions, options)."""
 
+SEGMENT_NEEDS: dict[str, str] = {
+    "walk": "a heel strike of one foot followed by one of the other foot (a step), or a start or end standing still",
+    "run": "a landing of one foot followed by one of the other foot",
+    "sidestep": "two landings of the trailing foot",
+    "pick": "a hand movement to a target and back",
+    "place": "a hand movement to a target and back",
+    "idle": "at least 2 frames",
+}
+"""Behaviour -> what a clip must hold for its segmenter to find a primitive (for messages)."""
+
 
 def segment_motion(
     motion: Motion, behaviour: str, joint_map: JointMap, options: PrepOptions | None = None

@@ -19,7 +19,7 @@ import numpy as np
 from dtaidistance import dtw
 
 from ..core.motion import Motion
-from .resample import sample_motion
+from .resample import clip_name, sample_motion
 
 
 def pose_features(motion: Motion) -> np.ndarray:
@@ -29,28 +29,39 @@ def pose_features(motion: Motion) -> np.ndarray:
     return pos.reshape(motion.n_frames, -1)
 
 
-def _features(x: Motion | np.ndarray, what: str) -> np.ndarray:
+def _features(x: Motion | np.ndarray, what: str, clip_id: str | None = None) -> np.ndarray:
+    name = what if clip_id is None else f"{what} clip {clip_id}"
+    if isinstance(x, Motion) and x.n_frames < 2:
+        raise ValueError(f"dtw_warp: {name} has {x.n_frames} frame(s); need at least 2")
     f = pose_features(x) if isinstance(x, Motion) else np.asarray(x, dtype=float)
     if f.ndim == 1:
         f = f[:, None]
     if f.ndim != 2 or f.shape[0] < 2:
-        raise ValueError(f"dtw_warp: {what} must be a Motion or (T, D) features with T >= 2; got shape {f.shape}")
+        raise ValueError(f"dtw_warp: {name} must be a Motion or (T, D) features with T >= 2; got shape {f.shape}")
     if not np.all(np.isfinite(f)):
-        raise ValueError(f"dtw_warp: {what} features contain NaN or inf")
+        raise ValueError(f"dtw_warp: {name} features contain NaN or inf")
     return np.ascontiguousarray(f, dtype=np.double)
 
 
-def dtw_path(source: Motion | np.ndarray, reference: Motion | np.ndarray, window: int | None = None) -> np.ndarray:
+def dtw_path(
+    source: Motion | np.ndarray, reference: Motion | np.ndarray, window: int | None = None,
+    clip_id: str | None = None, reference_id: str | None = None,
+) -> np.ndarray:
     """(L, 2) DTW path of (source frame, reference frame) pairs, from (0, 0) to the
-    last frames of both (dtaidistance, C implementation, multivariate Euclidean)."""
-    src, ref = _features(source, "source"), _features(reference, "reference")
+    last frames of both (dtaidistance, C implementation, multivariate Euclidean);
+    ``clip_id`` and ``reference_id`` name the two clips in errors."""
+    src, ref = _features(source, "source", clip_id), _features(reference, "reference", reference_id)
     if src.shape[1] != ref.shape[1]:
-        raise ValueError(f"dtw_warp: source has {src.shape[1]} features per frame, reference {ref.shape[1]}")
+        raise ValueError(f"dtw_warp: source{'' if clip_id is None else ' clip ' + str(clip_id)} has {src.shape[1]} "
+                         f"features per frame, reference{'' if reference_id is None else ' clip ' + str(reference_id)} "
+                         f"{ref.shape[1]}")
     kwargs = {}
     if window is not None:
         need = abs(len(src) - len(ref)) + 1
         if not (isinstance(window, (int, np.integer)) and window >= need):
-            raise ValueError(f"dtw_warp: window must be an integer >= {need} for these lengths; got {window!r}")
+            which = "" if clip_id is None else f", clip {clip_id}"
+            raise ValueError(f"dtw_warp: window must be an integer >= {need} for these lengths "
+                             f"({len(src)} and {len(ref)} frames{which}); got {window!r}")
         kwargs["window"] = int(window)
     if src.shape[1] == 1:
         path = dtw.warping_path_fast(src[:, 0].copy(), ref[:, 0].copy(), **kwargs)
@@ -59,19 +70,23 @@ def dtw_path(source: Motion | np.ndarray, reference: Motion | np.ndarray, window
     return np.asarray(path, dtype=np.int64).reshape(-1, 2)
 
 
-def dtw_warp(source: Motion | np.ndarray, reference: Motion | np.ndarray, window: int | None = None) -> np.ndarray:
+def dtw_warp(
+    source: Motion | np.ndarray, reference: Motion | np.ndarray, window: int | None = None,
+    clip_id: str | None = None, reference_id: str | None = None,
+) -> np.ndarray:
     """Warping function (n_ref,) from canonical (reference) frames to source frames.
 
     Args:
         source: the clip to warp, a Motion (pose features are computed) or (T, D) features.
         reference: the canonical clip (Du: the median-length clip of the primitive), same kind.
         window: optional Sakoe-Chiba band in frames (at least the length difference + 1).
+        clip_id, reference_id: name the source and the reference clip in errors.
     Returns:
         warp[j] = mean source frame matched to reference frame j, except that the ends
         are pinned (warp[0] = 0, warp[-1] = T_source - 1: the clips start and end
         together); non-decreasing.
     """
-    path = dtw_path(source, reference, window)
+    path = dtw_path(source, reference, window, clip_id, reference_id)
     n_ref = int(path[:, 1].max()) + 1
     counts = np.bincount(path[:, 1], minlength=n_ref)
     warp = np.bincount(path[:, 1], weights=path[:, 0].astype(float), minlength=n_ref) / counts
@@ -95,10 +110,15 @@ def check_warp(warp: np.ndarray, n_source: int) -> np.ndarray:
     return w
 
 
-def apply_warp(motion: Motion, warp: np.ndarray, fps: float | None = None) -> Motion:
+def apply_warp(motion: Motion, warp: np.ndarray, fps: float | None = None, clip_id: str | None = None) -> Motion:
     """The clip on the canonical timeline: frame j is the source at fractional frame
-    warp[j] (linear root, slerp rotations); frame rate ``fps`` (default the clip's)."""
-    return sample_motion(motion, check_warp(warp, motion.n_frames), fps=fps)
+    warp[j] (linear root, slerp rotations); frame rate ``fps`` (default the clip's);
+    ``clip_id`` names the clip in errors."""
+    try:
+        w = check_warp(warp, motion.n_frames)
+    except ValueError as exc:
+        raise ValueError(f"apply_warp: {clip_name(clip_id)}: {exc}") from exc
+    return sample_motion(motion, w, fps=fps, clip_id=clip_id)
 
 
 def median_length_index(motions: Sequence[Motion]) -> int:
@@ -111,9 +131,18 @@ def median_length_index(motions: Sequence[Motion]) -> int:
     return int(order[(len(order) - 1) // 2])
 
 
-def warp_to_median(motions: Sequence[Motion], window: int | None = None) -> tuple[int, list[np.ndarray]]:
+def warp_to_median(
+    motions: Sequence[Motion], window: int | None = None, clip_ids: Sequence[str] | None = None
+) -> tuple[int, list[np.ndarray]]:
     """Warp every clip of one primitive to the median-length clip: (reference index,
-    one warping function per clip, each of the reference's length)."""
+    one warping function per clip, each of the reference's length). ``clip_ids`` name
+    the clips in errors (else "#<index>")."""
+    ids = [f"#{i}" for i in range(len(motions))] if clip_ids is None else [str(c) for c in clip_ids]
+    if len(ids) != len(motions):
+        raise ValueError(f"warp_to_median: {len(ids)} clip ids for {len(motions)} motions")
+    short = [f"{c} ({m.n_frames} frame(s))" for c, m in zip(ids, motions) if m.n_frames < 2]
+    if short:
+        raise ValueError(f"warp_to_median: clips {', '.join(short)} have fewer than 2 frames; DTW needs at least 2")
     ref = median_length_index(motions)
     ref_feat = pose_features(motions[ref])
-    return ref, [dtw_warp(pose_features(m), ref_feat, window) for m in motions]
+    return ref, [dtw_warp(pose_features(m), ref_feat, window, c, ids[ref]) for m, c in zip(motions, ids)]

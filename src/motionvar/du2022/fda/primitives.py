@@ -52,12 +52,14 @@ def canonical_primitives(
             log.warning("primitive %s: %d clips < fda.min_clips=%d, left out", primitive, len(idx), min_clips)
             continue
         motions = [dataset.motion(int(i)) for i in idx]
+        ids = meta["clip_id"].iloc[idx].astype(str).tolist()
         if time_warping == "dtw":
-            ref, warps = warp_to_median(motions)
-            warped = [apply_warp(m, w) for m, w in zip(motions, warps)]
+            ref, warps = warp_to_median(motions, clip_ids=ids)
+            warped = [apply_warp(m, w, clip_id=c) for m, w, c in zip(motions, warps, ids)]
         else:
             ref = median_length_index(motions)
-            warped = [resample_motion(m, motions[ref].n_frames, keep_duration=False) for m in motions]
+            warped = [resample_motion(m, motions[ref].n_frames, keep_duration=False, clip_id=c)
+                      for m, c in zip(motions, ids)]
         rows = meta.iloc[idx].copy()
         rows["source_frames"] = rows["n_frames"]
         rows["canonical_reference"] = meta["clip_id"].iloc[idx[ref]]

@@ -119,6 +119,10 @@ def primitive_clips(dataset: MotionDataset, primitive: str,
         raise ValueError(f"{source}: {int(mask.sum())} clips of primitive {primitive!r} (need >= 3; config "
                          f"graph.primitives / graph.search.primitives); clips per primitive: {have}")
     pairs = dataset.select(mask)
+    short = [f"{row['clip_id']} ({m.n_frames} frame(s))" for row, m in pairs if m.n_frames < 2]
+    if short:
+        raise ValueError(f"{source}: clips {', '.join(short)} of primitive {primitive!r} have fewer than 2 frames; "
+                         "DTW needs at least 2 (config prep.min_primitive_s drops such primitives)")
     return [m for _, m in pairs], dataset.metadata[mask].reset_index(drop=True)
 
 
@@ -174,18 +178,20 @@ class MotionPrimitive:
     # ---- fitting ---------------------------------------------------------------------
     @classmethod
     def fit(cls, motions: Sequence[Motion], name: str = "primitive",
-            options: PrimitiveOptions | None = None) -> "MotionPrimitive":
-        """Fit the primitive to aligned clips of one primitive (module docstring, steps 1-4)."""
+            options: PrimitiveOptions | None = None, clip_ids: Sequence[str] | None = None) -> "MotionPrimitive":
+        """Fit the primitive to aligned clips of one primitive (module docstring, steps 1-4);
+        ``clip_ids`` name the clips in errors (else "<name> #<index>")."""
         opt = options or PrimitiveOptions()
         opt.validate()
         if len(motions) < 3:
             raise ValueError(f"primitive {name}: need at least 3 clips to model; got {len(motions)}")
-        ref, warps = warp_to_median(motions, window=opt.dtw_window)
+        ids = [f"{name} #{i}" for i in range(len(motions))] if clip_ids is None else list(clip_ids)
+        ref, warps = warp_to_median(motions, window=opt.dtw_window, clip_ids=ids)
         n_ref = motions[ref].n_frames
         if n_ref < opt.n_basis:
             raise ValueError(f"primitive {name}: the canonical clip has {n_ref} frames, fewer than "
                              f"n_basis = {opt.n_basis}")
-        warped = [apply_warp(m, w) for m, w in zip(motions, warps)]
+        warped = [apply_warp(m, w, clip_id=c) for m, w, c in zip(motions, warps, ids)]
         fd = FunctionalMotions.from_motions(warped, opt.n_basis, n_frames=n_ref)
         n = int(min(opt.n_components, len(motions) - 1, fd.coefs.shape[1] * fd.coefs.shape[2]))
         sfpca = SFPCA(n_components=n, max_iter=opt.sfpca_max_iter, weight_groups=opt.sfpca_weight_groups,

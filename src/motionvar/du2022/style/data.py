@@ -52,7 +52,9 @@ def primitive_mask(metadata: pd.DataFrame, primitive: str, style: str | None = N
 def primitive_clips(dataset: MotionDataset, primitive: str, style: str | None, n_frames: int) -> tuple[pd.DataFrame, list]:
     """(metadata rows, Motions resampled to ``n_frames``) of one primitive and style."""
     idx = np.flatnonzero(primitive_mask(dataset.metadata, primitive, style))
-    return dataset.metadata.iloc[idx].reset_index(drop=True), [resample_motion(dataset.motion(int(i)), n_frames) for i in idx]
+    ids = dataset.metadata["clip_id"].astype(str).to_numpy()
+    return dataset.metadata.iloc[idx].reset_index(drop=True), [
+        resample_motion(dataset.motion(int(i)), n_frames, clip_id=ids[i]) for i in idx]
 
 
 def primitive_features(
@@ -75,4 +77,4 @@ def select_style_example(metadata: pd.DataFrame, primitive: str, style: str) -> 
 
 def example_features(dataset: MotionDataset, layout: FeatureLayout, clip_id: str, n_frames: int) -> np.ndarray:
     """(n_frames, C) features of one clip, by id, on the canonical timeline."""
-    return motion_features(resample_motion(dataset.by_id(clip_id), n_frames), layout)
+    return motion_features(resample_motion(dataset.by_id(clip_id), n_frames, clip_id=clip_id), layout)

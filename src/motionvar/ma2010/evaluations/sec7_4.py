@@ -53,7 +53,10 @@ def sec7_4_comparison(
     style = np.median(walks.clips.style, axis=0)
     near = nearest_clips(walks.clips, style, n_examples, walks.subjects)
     if len(near) < 2:
-        raise ValueError(f"{walks.source}: {len(near)} subject(s); Sec. 7.4 needs at least 2 example cycles")
+        raise ValueError(
+            f"{walks.source}: {len(set(walks.subjects))} subject(s) among the {walks.clips.n_clips} walking cycles; "
+            "Sec. 7.4 takes its example cycles one per subject (as the five clips of Fig. 1), so it needs cycles of "
+            "at least 2 subjects")
     five = walks.clips.subset(near)
     out = method_sequences(
         five, walks.groups, walks.solver, seconds, n_sequences, seed, structure=structure,
