@@ -19,7 +19,8 @@ from motionvar.report.summary import claims_html
 
 
 def _meta(rows):
-    return pd.DataFrame(rows, columns=["clip_id", "subject", "behaviour", "style", "variant", "primitive"]).astype(str)
+    meta = pd.DataFrame(rows, columns=["clip_id", "subject", "behaviour", "style", "variant", "primitive"]).astype(str)
+    return meta.assign(n_frames="360", fps="120")  # 3-s clips
 
 
 DATA = _meta([
@@ -43,6 +44,8 @@ def test_unmet_names_what_is_missing_and_why():
     variants = Need(what="walks", why="w", where={"behaviour": ("walk",)}, min_distinct={"variant": 2})
     assert "at least 2 different variant values, the dataset has 1 (forward)" in unmet(variants, DATA)
     assert unmet(Need(what="walks", why="w", where={"behaviour": ("walk",), "variant": ()}), DATA) is None
+    long = Need(what="walks", why="w", where={"behaviour": ("walk",)}, min_seconds=4.0)
+    assert "(clips with behaviour walk, at least 4 s long), the dataset has none" in unmet(long, DATA)
 
 
 def test_every_paper_declares_its_evaluations_and_decides_from_the_data():

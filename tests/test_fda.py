@@ -482,8 +482,10 @@ def test_canonical_primitives(prep_dataset, canonical_dataset):
     assert "source_frames" in meta and "n_frames" not in meta
     linear, _ = canonical_primitives(prep_dataset, ["pick"], min_clips=3, time_warping="linear")
     assert len(linear) == 14 and len({m.n_frames for m in linear}) == 1
-    with pytest.raises(ValueError, match="fda.behaviours: \\['jump'\\]"):
-        canonical_primitives(prep_dataset, ["walk", "jump"], 3, "dtw")
+    with_absent, _ = canonical_primitives(prep_dataset, ["pick", "jump"], 3, "linear")  # jump: not in the data
+    assert len(with_absent) == len(linear)
+    with pytest.raises(ValueError, match="fda.behaviours: none of \\['jump'\\] in the prep data"):
+        canonical_primitives(prep_dataset, ["jump"], 3, "dtw")
     with pytest.raises(ValueError, match="no primitive has fda.min_clips"):
         canonical_primitives(prep_dataset, ["pick"], 50, "dtw")
 

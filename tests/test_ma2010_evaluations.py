@@ -12,7 +12,7 @@ import pandas as pd
 import pytest
 from ma2010_toywalk import toy_walk
 
-from motionvar.claims import VERDICTS
+from motionvar.claims import VERDICTS, NotApplicable
 from motionvar.core import cmu_joint_map
 from motionvar.io import load_dataset, save_dataset
 from motionvar.ma2010 import figures
@@ -128,7 +128,7 @@ def test_sec7_4_comparison(walks):
     rbf = t[t["method"] == "rbf"]["variation_between_sequences_cm"]
     assert np.all(ours > 0) and np.allclose(rbf, 0.0)
     check(result, figures.draw_sec7_4, "sec7_4")
-    with pytest.raises(ValueError, match="toy walks: 1 subject"):
+    with pytest.raises(NotApplicable, match="toy walks: 1 subject"):
         sec7_4_comparison(WalkCycles(walks.clips, ["one"] * walks.clips.n_clips, JM, "toy walks"))
 
 

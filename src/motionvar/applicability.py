@@ -26,8 +26,9 @@ class Need:
     imported; ``"prep"``: primitives after segmentation) whose columns take one of the
     given values (``where``: column -> accepted values; an empty tuple accepts any),
     from at least ``min_subjects`` subjects, with at least ``min_distinct[column]``
-    distinct values of a column among them. ``what`` names them in messages ("neutral
-    forward walks"), ``why`` says what the paper does with them."""
+    distinct values of a column among them; with ``min_seconds``, only rows of at least
+    that duration (columns ``n_frames`` and ``fps``) count. ``what`` names them in
+    messages ("neutral forward walks"), ``why`` says what the paper does with them."""
 
     what: str
     why: str
@@ -36,6 +37,7 @@ class Need:
     min_count: int = 1
     min_subjects: int = 1
     min_distinct: Mapping[str, int] = field(default_factory=dict)
+    min_seconds: float = 0.0
 
     def __post_init__(self) -> None:
         if self.stage not in STAGES:
@@ -63,11 +65,17 @@ def _matching(need: Need, meta: pd.DataFrame) -> pd.DataFrame:
         if column not in meta:
             return meta.iloc[0:0]
         mask &= meta[column].astype(str).isin([str(v) for v in values])
+    if need.min_seconds > 0:
+        if not {"n_frames", "fps"} <= set(meta.columns):
+            return meta.iloc[0:0]
+        seconds = pd.to_numeric(meta["n_frames"], errors="coerce") / pd.to_numeric(meta["fps"], errors="coerce")
+        mask &= seconds >= need.min_seconds
     return meta[mask]
 
 
 def _filters(need: Need) -> str:
     parts = [f"{c} {'/'.join(map(str, v))}" for c, v in need.where.items() if v]
+    parts += [f"at least {need.min_seconds:g} s long"] if need.min_seconds > 0 else []
     return ", ".join(parts) if parts else "any"
 
 

@@ -10,6 +10,7 @@ rule preprocess:
     output:
         clips=f"{PREP}/clips.npz",
         metadata=f"{PREP}/metadata.csv",
+        dropped=f"{PREP}/dropped.csv",
     params:
         options=config["prep"],
         joint_map=lambda wc: joint_map_path(wc.dataset),

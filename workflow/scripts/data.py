@@ -8,7 +8,7 @@ from motionvar.core import cmu_joint_map
 from motionvar.io import import_bvh_folder, load_joint_map, save_dataset
 from motionvar.io.plausibility import plausibility_gate
 
-KEYS = ("drop_first_frame", "behaviour_aliases", "style_aliases", "neutral_style", "mixed_rigs")
+KEYS = ("drop_first_frame", "behaviour_aliases", "style_aliases", "neutral_style", "mixed_rigs", "primitive_labels")
 
 
 def load(entry: dict, workers: int = 1):

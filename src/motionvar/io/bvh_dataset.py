@@ -20,6 +20,12 @@ A ROOT that is not the pelvis (the joint map's ``hips`` is not joint 0, e.g. Ban
 ground-projected ``joint_Root``): every clip is re-rooted at the hips
 (:func:`motionvar.core.reroot.reroot`), so that joint 0 is the pelvis downstream.
 
+Clips that are each one primitive already (e.g. DFKI's single walk steps): with
+``primitive_labels = {"column": ..., "names": {label: primitive}}`` each clip gets
+``primitive`` = the name its label maps to and ``segments`` = ``"name:0:n_frames"`` (the
+format of the synthetic data's ground truth, read by ``prep.use_ground_truth_segments``);
+see :func:`primitive_names`.
+
 The CMU files of the cgspeed conversion start with a synthetic T-pose at frame 0 that
 the converter added; pass ``drop_first_frame=True`` to remove it (the 3dsMax-friendly
 release, e.g. 131_*.bvh, has none). No heuristic tries to detect it.
@@ -54,6 +60,8 @@ BEHAVIOURS = ("idle", "pick", "place", "run", "sidestep", "walk")
 MIXED_RIGS = ("error", "skip_minority")
 #: A behaviour alias: a behaviour, or {"behaviour": ..., "variant": ...}.
 BehaviourAlias = str | Mapping[str, str]
+#: Labels of clips that are one primitive each: {"column": labels column, "names": {label value: primitive}}.
+PrimitiveLabels = Mapping[str, object]
 
 
 def _read_labels(labels_csv: Path) -> pd.DataFrame:
@@ -142,6 +150,49 @@ def keep_paper_behaviours(labels: pd.DataFrame, labels_csv: str | Path = "labels
         log.warning("left out %d clips of behaviours no paper uses: %s", int((~keep).sum()),
                     ", ".join(f"{b} {n}" for b, n in counts.items()))
     return labels[keep]
+
+
+def _primitive_label_map(primitive_labels: PrimitiveLabels) -> tuple[str, dict[str, str]]:
+    """(column, {label value: primitive name}) of a ``primitive_labels`` option; label
+    values as text (YAML's 0 and "0" agree). DatasetError naming the key if malformed."""
+    if not isinstance(primitive_labels, Mapping) or set(primitive_labels) != {"column", "names"}:
+        raise DatasetError(f"primitive_labels: expected {{column: ..., names: {{label: primitive, ...}}}}; "
+                           f"got {primitive_labels!r}")
+    column, names = primitive_labels["column"], primitive_labels["names"]
+    if not isinstance(column, str) or not column.strip():
+        raise DatasetError(f"primitive_labels.column: expected a labels column name; got {column!r}")
+    if not isinstance(names, Mapping) or not names:
+        raise DatasetError(f"primitive_labels.names: expected {{label: primitive, ...}}; got {names!r}")
+    bad = {k: v for k, v in names.items() if not isinstance(v, str) or not v.strip() or set(v) & set(":;")}
+    if bad:
+        raise DatasetError(f"primitive_labels.names: {bad} are not primitive names (non-empty, no ':' or ';')")
+    return column.strip(), {str(k).strip(): v.strip() for k, v in names.items()}
+
+
+def primitive_names(
+    labels: pd.DataFrame, primitive_labels: PrimitiveLabels, labels_csv: str | Path = "labels"
+) -> pd.Series:
+    """Each row's primitive name: its value in ``primitive_labels["column"]`` mapped by
+    ``primitive_labels["names"]`` (index: that of ``labels``, the CSV lines). DatasetError
+    naming the CSV line and the mapping for a value the names lack, and for a labels CSV
+    that also has a ``segments`` column or a filled ``primitive`` column of its own."""
+    column, names = _primitive_label_map(primitive_labels)
+    if column not in labels.columns:
+        raise DatasetError(f"{labels_csv}: primitive_labels.column {column!r} is not a column "
+                           f"(has {list(labels.columns)})")
+    if "segments" in labels.columns:
+        raise DatasetError(f"{labels_csv}: has a 'segments' column and primitive_labels sets it; keep one")
+    if column != "primitive" and "primitive" in labels.columns and labels["primitive"].str.strip().ne("").any():
+        raise DatasetError(f"{labels_csv}: has a filled 'primitive' column and primitive_labels sets it "
+                           f"from {column!r}; keep one")
+    values = labels[column].str.strip()
+    unmapped = ~values.isin(list(names))
+    if unmapped.any():
+        line = unmapped.idxmax()
+        mapping = ", ".join(f"{k} -> {v}" for k, v in names.items())
+        raise DatasetError(f"{labels_csv}:{line}: {column} {values[line]!r} is not in primitive_labels.names "
+                           f"({mapping}); {int(unmapped.sum())} rows unmapped")
+    return values.map(names)
 
 
 def _layout(sk: Skeleton) -> tuple:
@@ -233,12 +284,15 @@ def import_bvh_folder(
     style_aliases: Mapping[str, str] | None = None,
     neutral_style: str | None = None,
     mixed_rigs: str = "skip_minority",
+    primitive_labels: PrimitiveLabels | None = None,
 ) -> tuple[list[Motion], pd.DataFrame]:
     """Read the BVH files listed in ``labels_csv`` (a relative path is taken inside
     ``folder``) with lengths scaled by ``unit_cm`` (cm per file unit, e.g.
     ``CMU_UNIT_CM``). Returns the clips and their metadata (one row per clip, columns
     :data:`METADATA_COLUMNS` plus any extra label columns). Aliases, behaviours left out,
-    mixed rigs and re-rooting at the joint map's hips: see the module docstring.
+    mixed rigs and re-rooting at the joint map's hips: see the module docstring. With
+    ``primitive_labels`` (:func:`primitive_names`) every clip is one primitive: its
+    ``primitive`` is the mapped name and a ``segments`` column holds ``"name:0:n_frames"``.
     """
     if mixed_rigs not in MIXED_RIGS:
         raise DatasetError(f"mixed_rigs: {mixed_rigs!r} is not one of {list(MIXED_RIGS)}")
@@ -253,6 +307,8 @@ def import_bvh_folder(
     labels = _read_labels(labels_csv)
     labels = apply_label_aliases(labels, behaviour_aliases, style_aliases, neutral_style, labels_csv)
     labels = keep_paper_behaviours(labels, labels_csv)
+    if primitive_labels is not None:
+        labels = labels.assign(primitive=primitive_names(labels, primitive_labels, labels_csv))
     paths = _check_files(labels, folder, labels_csv)
     motions = [read_bvh(path, scale=unit_cm) for path in paths]
     kept = _one_rig(motions, paths, mixed_rigs)
@@ -279,6 +335,8 @@ def import_bvh_folder(
     extra = [c for c in labels.columns if c not in METADATA_COLUMNS and c != "file"]
     for c in extra:
         meta[c] = labels[c].to_numpy()
+    if primitive_labels is not None:
+        meta["segments"] = [f"{p}:0:{m.n_frames}" for p, m in zip(meta["primitive"], motions)]
     return motions, meta
 
 

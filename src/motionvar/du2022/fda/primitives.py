@@ -42,9 +42,12 @@ def canonical_primitives(
     the clip's own length, and ``canonical_reference``, the clip warped to)."""
     meta = dataset.metadata
     known = set(meta["behaviour"].unique())
-    unknown = [b for b in behaviours if b not in known]
-    if unknown:
-        raise ValueError(f"config fda.behaviours: {unknown} not in the prep data (behaviours: {sorted(known)})")
+    absent = [b for b in behaviours if b not in known]
+    behaviours = [b for b in behaviours if b in known]
+    if not behaviours:
+        raise ValueError(f"config fda.behaviours: none of {absent} in the prep data (behaviours: {sorted(known)})")
+    if absent:
+        log.warning("config fda.behaviours %s: not in the data, left out (the data has %s)", absent, sorted(known))
     out_motions, out_rows = [], []
     for primitive in sorted(meta.loc[meta["behaviour"].isin(behaviours), "primitive"].unique()):
         idx = np.flatnonzero(meta["primitive"].to_numpy() == primitive)

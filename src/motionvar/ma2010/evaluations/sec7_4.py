@@ -12,7 +12,7 @@ import logging
 import numpy as np
 import pandas as pd
 
-from ...claims import Claim, EvaluationResult, verdict_from_fraction
+from ...claims import Claim, EvaluationResult, NotApplicable, verdict_from_fraction
 from ...metrics.jerk import mean_jerk
 from ..comparison import (
     LABELS, METHODS, NATURALNESS_SCORES, NaturalnessReference, best_with_variation, example_pose_sequences,
@@ -53,7 +53,7 @@ def sec7_4_comparison(
     style = np.median(walks.clips.style, axis=0)
     near = nearest_clips(walks.clips, style, n_examples, walks.subjects)
     if len(near) < 2:
-        raise ValueError(
+        raise NotApplicable(
             f"{walks.source}: {len(set(walks.subjects))} subject(s) among the {walks.clips.n_clips} walking cycles; "
             "Sec. 7.4 takes its example cycles one per subject (as the five clips of Fig. 1), so it needs cycles of "
             "at least 2 subjects")
