@@ -355,3 +355,95 @@ def test_hips_whose_ancestors_have_other_children_is_refused(folder):
     jm = JointMap({**jm.joints, "hips": "LowerBack"}, {})
     with pytest.raises(DatasetError, match="hips = LowerBack is not the BVH ROOT and cannot make LowerBack the root"):
         import_bvh_folder(folder, "labels.csv", unit_cm=CMU_UNIT_CM, joint_map=jm)
+
+
+# ---------------------------------------------------------------- clips that are one primitive each
+
+STEP_NAMES = {"0": "walk_start", 2: "walk_rightStance", "3": "walk_leftStance"}  # YAML may give int keys
+
+
+def _step_labels(folder: Path, labels: tuple[str, str, str]) -> Path:
+    return _labels(folder, "file,subject,behaviour,style,primitive_label\n"
+                   + "".join(f"{f},02,walk_step,x,{k}\n" for f, k in zip(["a.bvh", "b.bvh", "sub/c.bvh"], labels)))
+
+
+def test_primitive_labels_give_primitive_and_whole_clip_segments(folder):
+    _step_labels(folder, ("0", " 2", "3"))
+    motions, meta = import_bvh_folder(
+        folder, "labels.csv", unit_cm=CMU_UNIT_CM, drop_first_frame=True, behaviour_aliases={"walk_step": "walk"},
+        primitive_labels={"column": "primitive_label", "names": STEP_NAMES},
+    )
+    assert meta["primitive"].tolist() == ["walk_start", "walk_rightStance", "walk_leftStance"]
+    assert meta["segments"].tolist() == [f"{p}:0:11" for p in meta["primitive"]]  # 12 frames, first dropped
+    assert all(m.n_frames == 11 for m in motions)
+    assert meta["primitive_label"].tolist() == ["0", " 2", "3"]  # the source's label kept
+    _, plain = import_bvh_folder(folder, "labels.csv", unit_cm=CMU_UNIT_CM, behaviour_aliases={"walk_step": "walk"})
+    assert "segments" not in plain.columns and plain["primitive"].tolist() == ["", "", ""]
+
+
+def test_whole_clip_segments_feed_ground_truth_prep(folder, tmp_path):
+    """prep.use_ground_truth_segments keeps each clip whole (through the packed dataset, as
+    in the workflow); min_primitive_s still drops short ones."""
+    from motionvar.prep import PrepOptions, preprocess_dataset
+
+    write_bvh(folder / "b.bvh", cmu_motion(1, frames=60), scale=CMU_UNIT_CM)
+    _step_labels(folder, ("0", "2", "3"))
+    motions, meta = import_bvh_folder(folder, "labels.csv", unit_cm=CMU_UNIT_CM, behaviour_aliases={"walk_step": "walk"},
+                                      primitive_labels={"column": "primitive_label", "names": STEP_NAMES})
+    opts = PrepOptions(use_ground_truth_segments=True, min_primitive_s=0.2)  # 12 frames at 120 fps = 0.1 s: dropped
+    save_dataset(tmp_path / "packed", motions, meta)
+    out = preprocess_dataset(load_dataset(tmp_path / "packed"), cmu_joint_map(), opts)
+    assert out.metadata["source_clip"].tolist() == ["b"]
+    assert out.metadata[["primitive", "start_frame", "stop_frame"]].values.tolist() == [["walk_rightStance", 0, 60]]
+    assert out.motions[0].n_frames == 60
+    assert sorted(out.dropped["clip_id"]) == ["a", "c"] and set(out.dropped["reason"]) == {"too short"}
+
+
+PRIMITIVE_LABEL_ERRORS = {
+    # name: (labels of a, b, c; option; expected message)
+    "unmapped label": (("0", "2", "7"), {"column": "primitive_label", "names": STEP_NAMES},
+                       "labels.csv:4: primitive_label '7' is not in primitive_labels.names "
+                       "(0 -> walk_start, 2 -> walk_rightStance, 3 -> walk_leftStance)"),
+    "empty label": (("0", "", "3"), {"column": "primitive_label", "names": STEP_NAMES},
+                    "labels.csv:3: primitive_label '' is not in primitive_labels.names"),
+    "absent column": (("0", "2", "3"), {"column": "step", "names": STEP_NAMES},
+                      "labels.csv: primitive_labels.column 'step' is not a column"),
+    "no names": (("0", "2", "3"), {"column": "primitive_label", "names": {}}, "primitive_labels.names: expected"),
+    "bad name": (("0", "2", "3"), {"column": "primitive_label", "names": {"0": "walk:start"}},
+                 "primitive_labels.names: {'0': 'walk:start'} are not primitive names"),
+    "missing key": (("0", "2", "3"), {"names": STEP_NAMES}, "primitive_labels: expected {column: ..., names:"),
+}
+
+
+@pytest.mark.parametrize("case", list(PRIMITIVE_LABEL_ERRORS))
+def test_bad_primitive_labels_are_named(folder, case):
+    labels, option, expected = PRIMITIVE_LABEL_ERRORS[case]
+    _step_labels(folder, labels)
+    with pytest.raises(DatasetError) as info:
+        import_bvh_folder(folder, "labels.csv", unit_cm=CMU_UNIT_CM, behaviour_aliases={"walk_step": "walk"},
+                          primitive_labels=option)
+    assert expected in str(info.value), str(info.value)
+
+
+@pytest.mark.parametrize("column", ["segments", "primitive"])
+def test_primitive_labels_with_the_csvs_own_segments_or_primitive(folder, column):
+    _labels(folder, f"file,subject,behaviour,style,primitive_label,{column}\n"
+            "a.bvh,02,walk,x,0,walk_start:0:5\nb.bvh,02,walk,x,2,\nsub/c.bvh,02,walk,x,3,\n")
+    with pytest.raises(DatasetError, match=rf"labels.csv: has a (filled )?'{column}' column and primitive_labels"):
+        import_bvh_folder(folder, "labels.csv", unit_cm=CMU_UNIT_CM,
+                          primitive_labels={"column": "primitive_label", "names": STEP_NAMES})
+
+
+def test_real_dfki_config_maps_every_label(tmp_path):
+    """config/real/dfki_markerless.yaml's primitive_labels: every clip mapped, each whole."""
+    import yaml
+
+    folder = MAPS.parents[2] / "shared/data/real/dfki_markerless"  # ../shared/data/real of the repo root
+    if not folder.is_dir():
+        pytest.skip(f"{folder} absent")
+    cfg = yaml.safe_load((MAPS.parent / "real/dfki_markerless.yaml").read_text())["datasets"]["dfki_markerless"]
+    motions, meta = import_bvh_folder(folder, "labels.csv", unit_cm=0.1, joint_map=load_joint_map(MAPS / "dfki_markerless.yaml"),
+                                      behaviour_aliases=cfg["behaviour_aliases"], primitive_labels=cfg["primitive_labels"])
+    assert meta["primitive"].value_counts().to_dict() == {
+        "walk_rightStance": 127, "walk_leftStance": 103, "walk_start": 83, "walk_end": 83}
+    assert meta["segments"].tolist() == [f"{p}:0:{m.n_frames}" for p, m in zip(meta["primitive"], motions)]
