@@ -10,6 +10,12 @@ from snakemake.utils import min_version
 min_version("9.0")
 
 
+include: "workflow/rules/config_syntax.smk"
+
+
+check_yaml_syntax(os.path.join(workflow.basedir, "config/config.yaml"))
+
+
 configfile: os.path.join(workflow.basedir, "config/config.yaml")
 
 

@@ -110,3 +110,26 @@ def test_bad_config_stops_the_run_naming_the_key(tmp_path, text, expected):
     assert result.returncode != 0
     assert "Invalid configuration: " + expected in result.stdout + result.stderr
     assert not (tmp_path / "results").exists()
+
+
+def test_yaml_syntax_error_names_file_and_line(tmp_path):
+    """Snakemake's own message for a broken YAML config names neither file nor line: the
+    workflow checks config/config.yaml itself, and tools/check_config.py any file."""
+    import shutil
+
+    root = ROOT
+    bad = "datasets:\n  synthetic: {source: synthetic\n  other: 1\n"
+    (tmp_path / "mine.yaml").write_text(bad)
+    tool = subprocess.run([sys.executable, str(root / "tools" / "check_config.py"), str(tmp_path / "mine.yaml")],
+                          capture_output=True, text=True)
+    assert tool.returncode != 0 and f"{tmp_path / 'mine.yaml'}:3:8: not valid YAML" in tool.stderr
+
+    copy = tmp_path / "repo"
+    shutil.copytree(root / "workflow", copy / "workflow")
+    shutil.copytree(root / "config", copy / "config")
+    shutil.copy(root / "Snakefile", copy / "Snakefile")
+    (copy / "config" / "config.yaml").write_text(bad)
+    run = subprocess.run([sys.executable, "-m", "snakemake", "-n", "--workflow-profile", "none"], cwd=copy,
+                         capture_output=True, text=True)
+    assert run.returncode != 0
+    assert f"Invalid configuration file {copy / 'config' / 'config.yaml'}:3:8" in run.stdout + run.stderr
