@@ -20,8 +20,12 @@ def toy_walk(
     fps: float = 120.0,
     knee_amp: float = 1.2,
     twist: float = 0.05,
+    hip_growth: float = 0.0,
 ) -> Motion:
-    """A straight walk along +z (the rest pose faces +z)."""
+    """A straight walk along +z (the rest pose faces +z). ``hip_growth``: relative growth
+    of the hip swing per second (0: a steady walker, whose left- and right-support strides
+    are equal, both being the distance walked per cycle; > 0: a walker lengthening its
+    strides, whose right-support stride, later in the cycle, is the longer)."""
     sk = cmu_skeleton().scaled(height)
     n = int(round(n_cycles * period_s * fps)) + 1
     phi = 2 * np.pi * np.arange(n) / (period_s * fps)
@@ -30,8 +34,9 @@ def toy_walk(
     x = [1.0, 0.0, 0.0]
     ix = sk.index
     swing_l, swing_r = np.maximum(np.cos(phi), 0), np.maximum(-np.cos(phi), 0)
-    rot[:, ix("LeftUpLeg")] = quat_about_axis(x, -hip_amp * np.sin(phi) - 0.5 * knee_amp * swing_l)
-    rot[:, ix("RightUpLeg")] = quat_about_axis(x, hip_amp * np.sin(phi) - 0.5 * knee_amp * swing_r)
+    hip = hip_amp * (1.0 + hip_growth * np.arange(n) / fps)
+    rot[:, ix("LeftUpLeg")] = quat_about_axis(x, -hip * np.sin(phi) - 0.5 * knee_amp * swing_l)
+    rot[:, ix("RightUpLeg")] = quat_about_axis(x, hip * np.sin(phi) - 0.5 * knee_amp * swing_r)
     rot[:, ix("LeftLeg")] = quat_about_axis(x, knee_amp * swing_l)
     rot[:, ix("RightLeg")] = quat_about_axis(x, knee_amp * swing_r)
     down_l = quat_about_axis([0, 0, 1], np.full(n, -1.3))

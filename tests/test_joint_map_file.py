@@ -79,9 +79,9 @@ BAD_MAPS = {
                                "unknown semantic joints ['tail']"),
     "non-string joint": (CMU_TEXT.replace("  head: Head\n", "  head: [Head]\n"), "non-empty strings: ['head']"),
     "unknown group": (CMU_TEXT.replace("  legs:", "  feet:"), "unknown groups ['feet']"),
-    "group not a list": (CMU_TEXT.replace("  upper_body: [Hips, LowerBack, Spine, Spine1, Neck, Neck1, Head]",
-                                          "  upper_body: Hips"), "groups ['upper_body'] must be lists"),
-    "joint in two groups": (CMU_TEXT.replace("upper_body: [Hips,", "upper_body: [LeftArm, Hips,"),
+    "group not a list": (CMU_TEXT.replace("  upper_body: [LowerBack, Spine, Spine1, Neck, Neck1, Head]",
+                                          "  upper_body: Spine"), "groups ['upper_body'] must be lists"),
+    "joint in two groups": (CMU_TEXT.replace("upper_body: [LowerBack,", "upper_body: [LeftArm, LowerBack,"),
                             "listed more than once in groups: ['LeftArm']"),
 }
 

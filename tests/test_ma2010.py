@@ -15,7 +15,9 @@ from motionvar.ma2010.correspondence import (
 )
 from motionvar.ma2010.keyframes import find_extrema, keyframe_signal
 from motionvar.ma2010.network import LOWER_FIRST, UPPER_FIRST
-from motionvar.ma2010.postprocess import blend_weights, landing_frame, reconstruct_root, transition
+from motionvar.ma2010.postprocess import (
+    blend_weights, foot_heights, landing_frame, reconstruct_root, support_foot, transition,
+)
 from motionvar.ma2010.variation import determinative_joints, joint_importance, joint_variation
 
 JM = cmu_joint_map()
@@ -229,8 +231,10 @@ def test_landing_frame_is_the_first_local_maximum():
 
 
 def test_footskate_cleanup_plants_the_lower_foot():
+    """The literal rule (min_support_s=0): the lower foot of every frame is pinned."""
     m = toy_walk(n_cycles=2)
-    solver = root_solver(m.skeleton, JM)
+    solver = root_solver(m.skeleton, JM, min_support_s=0.0)
+    m = solver.motion(m.rotations, m.fps)
     pos = m.positions()
     feet = pos[:, solver.feet]  # (T, 2, 2, 3): ankle and toe of each foot
     above = feet[..., 1] - solver.planted
@@ -245,6 +249,92 @@ def test_footskate_cleanup_plants_the_lower_foot():
     before = feet[t[1:] - 1, support[1:], joint[t[1:], support[1:]]]
     assert np.abs(pinned[1:, [0, 2]] - before[:, [0, 2]])[clear].max() < 1e-6  # it does not slide
     assert np.allclose(pinned[:, 1], solver.planted[support, joint[t, support]])  # and stands on the ground
+
+
+def test_landing_frame_skips_wiggles_unless_read_literally():
+    """A wiggle 3 frames in is the first local maximum (the literal rule lands there); the
+    significant maximum is the distance's real peak (the opposite phase)."""
+    T = 61
+    rot = np.zeros((T, 2, 4))
+    rot[..., 0] = 1
+    angle = np.sin(np.pi * np.arange(T) / (T - 1)) * 2.0  # rises to the middle, falls back
+    angle[3] = angle[4] + 0.02  # a wiggle
+    rot[:, 1] = quat_about_axis([1, 0, 0], angle)
+    assert landing_frame(rot[0], rot, "first_maximum") == 4
+    assert landing_frame(rot[0], rot) == landing_frame(rot[0], rot, "significant_maximum") == 31
+    with pytest.raises(ValueError, match="rule"):
+        landing_frame(rot[0], rot, "last_maximum")
+
+
+def test_support_foot_keeps_a_minimum_contact_time():
+    low = np.zeros((40, 2))
+    low[:, 1] = 1.0  # left lower ...
+    low[10:13, 1] = low[16:18, 1] = -1.0  # ... but for two flickers of the right
+    low[25:, 1] = -1.0  # the right lower for good from frame 25
+    assert np.flatnonzero(np.diff(support_foot(low))).tolist() == [9, 12, 15, 17, 24]  # literal: every flicker
+    s = support_foot(low, min_frames=5)
+    assert (s[:25] == 0).all() and (s[25:] == 1).all()  # one switch, where the right stays lower
+    assert (support_foot(low[:12], min_frames=20) == 0).all()  # no run long enough: the foot lower most
+    with pytest.raises(ValueError, match="foot_low"):
+        support_foot(low[:, :1], 5)
+
+
+@pytest.fixture(scope="module")
+def generator_walks():
+    """Walks of the project's generator (two subjects, neutral and childlike), with their
+    ground truth (stride, contacts)."""
+    from motionvar.synth import generate_walk, make_subjects, sample_walk_params
+
+    rng = np.random.default_rng(1)
+    return [generate_walk(s, sample_walk_params(s, rng, style, n_steps=6))
+            for s in make_subjects(2, seed=7) for style in ("neutral", "childlike")]
+
+
+def support_runs(solver, m):
+    _, _, low = foot_heights(m.rotations, m.skeleton, solver.feet, solver.planted)
+    s = support_foot(low, int(round(solver.min_support_s * m.fps)))
+    cuts = np.flatnonzero(np.diff(s)) + 1
+    return np.diff(np.concatenate([[0], cuts, [len(s)]]))
+
+
+def test_support_never_flips_within_the_minimum_contact_time(generator_walks):
+    """Footskate cleanup of the generator's walks: with the minimum contact time (0.1 s) no
+    support phase is shorter, and the recovered root follows the generator's own (which
+    keeps the stance foot planted) without jumps; the literal per-frame rule flickers in
+    double support and jolts the root by ~0.7 cm."""
+    for m, _ in generator_walks:
+        solver, literal = root_solver(m.skeleton, JM), root_solver(m.skeleton, JM, min_support_s=0.0)
+        runs = support_runs(solver, m)
+        assert runs.min() >= round(0.1 * m.fps) and len(runs) >= 6  # one support phase per step (6 steps)
+        assert support_runs(literal, m).min() < 5  # flicker
+        for s, bound in ((solver, 0.15), (literal, None)):
+            root = s.motion(m.rotations, m.fps).root_pos
+            jump = np.linalg.norm(np.diff(root[:, [0, 2]] - m.root_pos[:, [0, 2]], axis=0), axis=1).max()
+            if bound is not None:
+                assert jump < bound  # cm per frame
+            else:
+                assert jump > 0.3
+
+
+def test_stride_of_an_uncut_generator_walk_matches_its_metadata(generator_walks):
+    """Strides between the cycle's own footfalls on the uncut walk, root recovered by the
+    footskate cleanup, are within 1 % of the generator's stride; so are those of a cut
+    cycle measured between copies of itself; the earlier window measure on the cut cycle
+    comes out several per cent short (the trailing foot's roll-off)."""
+    from motionvar.ma2010.examples import uncut_strides
+
+    for m, truth in generator_walks:
+        solver = root_solver(m.skeleton, JM)
+        cycles = extract_cycles(m, JM).cycles
+        assert len(cycles) >= 1
+        stride = truth["stride_length_cm"]
+        uncut = uncut_strides(m, [c.start + c.key_frames for c in cycles], solver)
+        assert np.abs(uncut / stride - 1).max() < 0.01, (uncut, stride)
+        rot = [space_warp(cut(m, c), JM).rotations for c in cycles]
+        alone = np.stack([normalized_strides(r, c.key_frames, solver, m.fps) for r, c in zip(rot, cycles)])
+        assert np.abs(alone / stride - 1).max() < 0.01, (alone, stride)
+        window = np.stack([normalized_strides(r, c.key_frames, solver, m.fps, "window") for r, c in zip(rot, cycles)])
+        assert (window / stride - 1).min() < -0.02
 
 
 def test_flight_phases_follow_the_predicted_root_height():
@@ -324,3 +414,17 @@ def test_realtime_clips_match_one_by_one_retiming(toy_clips):
     for m, (rot, height) in enumerate(together):
         one, h = retime(sub.rotations[m], sub.reference_keys, sub.key_times[m], sub.fps, sub.root_height[m])
         assert np.allclose(np.abs(np.sum(rot * one, axis=-1)), 1.0) and np.allclose(height, h)
+
+
+def test_a_constant_posture_offset_cancels_out_of_xi_exactly():
+    """Eq. 7 sums the distances between consecutive rotations of a joint, so a constant
+    rotation offset of the joint (a torso lean, an elbow held more flexed), on either side,
+    leaves delta and hence xi unchanged: between-subject posture offsets cannot enter xi
+    (the ceiling of Fig. 8's variation)."""
+    rng = np.random.default_rng(3)
+    rot = qnormalize(rng.normal(size=(2, 30, 5, 4)))
+    offset = qnormalize(rng.normal(size=(1, 1, 5, 4)))
+    delta = joint_variation(rot)
+    assert np.allclose(joint_variation(qmul(offset, rot)), delta, atol=1e-9)
+    assert np.allclose(joint_variation(qmul(rot, offset)), delta, atol=1e-9)
+    assert np.ptp(delta) > 0  # but the motion itself does vary

@@ -16,21 +16,24 @@ from motionvar.claims import VERDICTS, NotApplicable
 from motionvar.core import cmu_joint_map
 from motionvar.io import load_dataset, save_dataset
 from motionvar.ma2010 import figures
-from motionvar.ma2010.comparison import METHODS
-from motionvar.ma2010.evaluations.common import PAPER
+from motionvar.ma2010.comparison import METHODS, NATURALNESS_SCORES, ours_clips, ours_sequence
+from motionvar.ma2010.evaluations.common import PAPER, loo_folds, walk_positions
 from motionvar.ma2010.evaluations.fig3 import circular_sd, fig3_keyframes, step_phases
 from motionvar.ma2010.evaluations.fig6 import fig6_leave_one_out
 from motionvar.ma2010.evaluations.fig7b import fig7b_reliability
 from motionvar.ma2010.evaluations.fig8 import fig8_fixed_style
 from motionvar.ma2010.evaluations.sec7_4 import sec7_4_comparison
 from motionvar.ma2010.evaluations.sec8 import sec8_timing
-from motionvar.ma2010.examples import WalkCycles, walk_cycles
+from motionvar.ma2010.examples import WalkCycles, joint_groups, walk_cycles
 
 JM = cmu_joint_map()
 
 
 def toy_dataset(path, styles, n_cycles=3):
-    motions = [toy_walk(hip_amp=0.3 + 0.03 * i, arm_amp=0.2 + 0.1 * i, n_cycles=n_cycles) for i in range(len(styles))]
+    """Toy walkers of growing stride, some lengthening their strides as they walk (a steady
+    walker's two support strides are equal: the style space would be a line)."""
+    motions = [toy_walk(hip_amp=0.3 + 0.03 * i, arm_amp=0.2 + 0.1 * i, n_cycles=n_cycles, hip_growth=0.03 * (i % 3))
+               for i in range(len(styles))]
     meta = pd.DataFrame({"clip_id": [f"w{i}" for i in range(len(styles))], "subject": [f"{i:02d}" for i in range(len(styles))],
                          "behaviour": "walk", "style": styles, "variant": "forward"})
     save_dataset(path, motions, meta)
@@ -93,11 +96,70 @@ def test_fig3_step_phases_and_key_frames(tmp_path):
 def test_fig6_leave_one_out(walks):
     result = fig6_leave_one_out(walks, "auto", "linear", seed=0, max_clips=2)
     t = result.table
-    assert len(t) == 2 and list(t.columns[:2]) == ["clip_id", "subject"]
-    assert np.all(t["ours_stride_error_cm"] >= 0) and np.all(t["rbf_pose_error_cm"] >= 0)
+    folds, summary = t[t["kind"] == "fold"], t[t["kind"] == "summary"]
+    assert len(folds) == 2 and t.columns[0] == "kind" and {"clip_id", "subject", "source_clip", "closing"} <= set(t)
+    assert np.all(folds["ours_own_xi_stride_error_cm"] >= 0) and np.all(folds["rbf_pose_error_cm"] >= 0)
+    # own xi beside the network's (conditional mean, sampled), per group
+    for kind in ("own", "mean", "sampled"):
+        assert np.all(np.isfinite(folds[[f"{kind}_xi_{g}" for g in ("legs", "left_arm", "right_arm", "upper_body")]]))
+    # the ablation (root rotation in the upper body) and steady / closing summaries
+    assert {"ours_own_xi_root_upper_body", "least_squares", "kriging", "rbf"} <= set(summary["method"])
+    assert set(summary["cycles"]) <= {"all", "steady", "closing"} and "all" in set(summary["cycles"])
+    assert set(summary.loc[summary["method"] == "ours_own_xi", "root_group"]) == {"legs"}
     assert [c.claim_id for c in result.claims] == ["ma2010.fig6.loo_max_stride_error_below_1_2cm",
                                                    "ma2010.mk05.kriging_beats_rbf"]
+    assert "steady cycles" in result.claims[0].measured and "upper_body" in result.claims[0].note
     check(result, figures.draw_fig6, "")
+
+
+def test_root_group_choice_moves_only_the_root_rotation(walks):
+    """Config ma2010.root_group: the root joint (0, the pelvis) goes with the legs by default
+    (as every shipped joint map says), or with the upper body; nothing else moves."""
+    sk = walks.clips.skeleton
+    legs, upper = joint_groups(JM, sk, "legs"), joint_groups(JM, sk, "upper_body")
+    assert 0 in legs["legs"] and 0 not in legs["upper_body"]
+    assert 0 in upper["upper_body"] and 0 not in upper["legs"]
+    for g in ("legs", "upper_body"):
+        assert np.array_equal(np.setdiff1d(legs[g], [0]), np.setdiff1d(upper[g], [0]))
+    for groups in (legs, upper):
+        assert np.array_equal(np.sort(np.concatenate(list(groups.values()))), np.arange(sk.n_joints))
+    assert np.array_equal(legs["left_arm"], JM.group_indices(sk)["left_arm"])
+    assert sk.names[0] in JM.groups["legs"]  # the shipped CMU map: the root with the legs
+    moved = WalkCycles(walks.clips, walks.subjects, JM, "toy walks", root_group="upper_body")
+    assert 0 in moved.groups["upper_body"] and 0 in walks.groups["legs"]
+    with pytest.raises(ValueError, match="root_group must be one of"):
+        joint_groups(JM, sk, "left_arm")
+    # the model follows the groups: the root's rotation is interpolated in its group
+    a, b = walks.fit_model("lower_first"), moved.fit_model("lower_first")
+    assert 0 in a.interpolators_["legs"][0].joints and 0 in b.interpolators_["upper_body"][0].joints
+
+
+def test_whole_walk_folds_never_train_on_a_sibling_cycle():
+    walks_of = ["a", "a", "a", "b", "c", "c"]
+    position, closing = walk_positions(walks_of)
+    assert position.tolist() == [0, 1, 2, 0, 0, 1] and closing.tolist() == [False, False, True, True, False, True]
+    folds = loo_folds(walks_of, [1, 2, 4], "walk")
+    assert [t.tolist() for _, t in folds] == [[1, 2], [4]]
+    for train, test in folds:
+        assert not {walks_of[i] for i in train} & {walks_of[i] for i in test}
+        assert len(train) + sum(w == walks_of[test[0]] for w in walks_of) == len(walks_of)
+    cycle = loo_folds(walks_of, [1], "cycle")  # the literal per-cycle fold keeps the siblings
+    assert cycle[0][1].tolist() == [1] and {0, 2} <= set(cycle[0][0].tolist())
+    with pytest.raises(ValueError, match="unit must be one of"):
+        loo_folds(walks_of, [0], "subject")
+    with pytest.raises(ValueError, match="need each cycle's source clip"):
+        loo_folds(None, [0], "walk")
+
+
+def test_fig6_whole_walk_folds_leave_out_every_sibling(walks):
+    result = fig6_leave_one_out(walks, "lower_first", "linear", seed=0, max_clips=3, ablation=False)
+    folds = result.table[result.table["kind"] == "fold"]
+    size = pd.Series(walks.source_clips).value_counts()
+    assert np.array_equal(folds["n_train"], walks.clips.n_clips - size[folds["source_clip"]].to_numpy())
+    assert "ours_own_xi_root_upper_body_stride_error_cm" not in folds
+    per_cycle = fig6_leave_one_out(walks, "lower_first", "linear", seed=0, max_clips=3, loo_unit="cycle",
+                                   ablation=False).table
+    assert np.all(per_cycle.loc[per_cycle["kind"] == "fold", "n_train"] == walks.clips.n_clips - 1)
 
 
 def test_fig7b_reliability(walks, model):
@@ -110,9 +172,11 @@ def test_fig7b_reliability(walks, model):
 def test_fig8_variants_vary_and_interpolations_do_not(walks, model):
     result = fig8_fixed_style(walks, model, n_variants=3, seed=1, spread_ratio_bounds=[0.1, 10.0])
     t = result.table
-    assert (t["kind"] == "variant").sum() == 3 and (t["kind"] == "spread_cm").sum() == 4
+    assert (t["kind"] == "variant").sum() == 3 and (t["kind"] == "spread_cm").sum() == 6
+    assert (t["kind"] == "ceiling").sum() == 3 and np.all(t.loc[t["kind"] == "ceiling", "stride_error_cm"] >= 0)
     spreads = result.figure["spreads"]
     assert min(spreads["ours"].values()) > 0 and max(spreads["RBF"].values()) < 1e-6
+    assert min(spreads["ceiling (their own xi)"].values()) > 0 and "ceiling" in result.claims[0].note
     assert result.claims[1].verdict == "reproduced"  # RBF and Kriging give no variation
     assert len(result.figure["motions"]) == 3
     check(result, figures.draw_fig8, "")
@@ -127,9 +191,29 @@ def test_sec7_4_comparison(walks):
     ours = t[t["method"] == "ours"]["variation_between_sequences_cm"]
     rbf = t[t["method"] == "rbf"]["variation_between_sequences_cm"]
     assert np.all(ours > 0) and np.allclose(rbf, 0.0)
+    for col in ("jerk_cm_s3", "root_free_jerk_cm_s3", "foot_skating_cm_s", "low_joint_speed_cm_s", "contact_share",
+                *NATURALNESS_SCORES):
+        assert col in t
+    ex = t[t["method"] == "examples"]
+    assert np.isfinite(ex[["jerk_cm_s3", "root_free_jerk_cm_s3", "foot_skating_cm_s"]].to_numpy()).all()
+    assert f"/{len(NATURALNESS_SCORES)} naturalness scores" in result.claims[0].measured
+    assert "once per sequence" in result.claims[0].note and "Bayesian GPLVM" in result.claims[0].note
     check(result, figures.draw_sec7_4, "sec7_4")
     with pytest.raises(NotApplicable, match="toy walks: 1 subject"):
         sec7_4_comparison(WalkCycles(walks.clips, ["one"] * walks.clips.n_clips, JM, "toy walks"))
+
+
+def test_ours_draws_xi_once_per_sequence_or_per_clip(walks, model):
+    """Sec. 7.4 does not say: per sequence (the default) every cycle of a sequence is the
+    same person (identical cycles), per clip each cycle has its own xi."""
+    style = np.median(walks.clips.style, axis=0)
+    same = ours_clips(model, style, 3, np.random.default_rng(0), xi_per="sequence")
+    assert np.allclose(same.rotations, same.rotations[:1]) and np.allclose(same.key_times, same.key_times[:1])
+    each = ours_clips(model, style, 3, np.random.default_rng(0), xi_per="clip")
+    assert np.abs(each.rotations - each.rotations[:1]).max() > 1e-6
+    assert ours_sequence(model, style, 2, walks.solver, np.random.default_rng(0)).n_frames > 2
+    with pytest.raises(ValueError, match="xi_per"):
+        ours_clips(model, style, 3, np.random.default_rng(0), xi_per="frame")
 
 
 def test_sec8_timing_with_a_fake_clock(walks, model):

@@ -189,27 +189,52 @@ def test_content_and_kl_losses():
     assert float(kl_loss(mu, logvar)) == pytest.approx(expected)
 
 
-def test_gram_is_an_average_over_frames_independent_of_their_order():
+def test_gram_sums_over_frames_as_eq_5_9_or_averages_independent_of_their_order():
     y = torch.randn(4, 10)
-    g = gram(y)
-    assert torch.allclose(g, sum(torch.outer(y[:, i], y[:, i]) for i in range(10)) / 10, atol=1e-6)
-    assert torch.allclose(gram(y[:, torch.randperm(10)]), g, atol=1e-6)
-    assert torch.allclose(gram(torch.cat([y, y], dim=1)), g, atol=1e-6)  # examples of any length
+    g = gram(y)  # Eq. 5.9 as printed: the sum over frames
+    assert torch.allclose(g, sum(torch.outer(y[:, i], y[:, i]) for i in range(10)), atol=1e-5)
+    assert torch.allclose(gram(y[:, torch.randperm(10)]), g, atol=1e-5)
+    gm = gram(y, "mean")
+    assert torch.allclose(gm, g / 10, atol=1e-6)  # the frame-count factor
+    assert torch.allclose(gram(torch.cat([y, y], dim=1), "mean"), gm, atol=1e-6)  # examples of any length
+    assert torch.allclose(gram(torch.cat([y, y], dim=1)), 2 * g, atol=1e-5)
     assert float(style_distance(y[None].repeat(3, 1, 1), y)) == pytest.approx(0.0, abs=1e-9)
-    assert float(gram_distance(g + 1.0, g)) == pytest.approx(1.0)
+    assert float(gram_distance(gm + 1.0, gm)) == pytest.approx(1.0)
+    with pytest.raises(ValueError, match="reduce must be one of"):
+        gram(y, "max")
+
+
+def test_gram_sum_and_mean_differ_by_the_frame_count_in_the_style_terms():
+    """T = 30 feature frames (the canonical 60-frame clips): the Gram difference of two
+    30-frame maps is 30 times larger summed than averaged, so the Frobenius style term
+    (Eq. 5.10) is 30 times larger at the same alpha and the mean squared distance 900 times."""
+    gen = torch.Generator().manual_seed(1)
+    a, b = torch.rand(2, 3, 16, 30, generator=gen, dtype=torch.float64), torch.rand(16, 30, generator=gen, dtype=torch.float64)
+    assert torch.allclose(gram_distance_maps(a, b, "sum"), 900 * gram_distance_maps(a, b, "mean"), rtol=1e-9)
+    fro_sum = float(style_loss(a, b, 200.0, gram_reduce="sum"))
+    fro_mean = float(style_loss(a, b, 200.0, gram_reduce="mean"))
+    assert fro_sum == pytest.approx(30 * fro_mean, rel=1e-6)
+    ms_sum = float(style_loss(a, b, 200.0, norm="mean_squared", gram_reduce="sum"))
+    assert ms_sum == pytest.approx(900 * float(style_loss(a, b, 200.0, norm="mean_squared", gram_reduce="mean")), rel=1e-9)
+    # Table 5.1's distance stays on the average (the thesis' scale) unless asked
+    assert float(style_distance(a[0], b)) == pytest.approx(float(gram_distance_maps(a[0], b, "mean").mean()))
+    assert float(style_distance(a[0], b, "sum")) == pytest.approx(900 * float(style_distance(a[0], b)))
+    with pytest.raises(ValueError, match="reduce must be one of"):
+        style_loss(a, b, 1.0, gram_reduce="median")
 
 
 def test_gram_distance_from_maps_equals_the_explicit_one():
     gen = torch.Generator().manual_seed(0)
     a, b = torch.rand(3, 5, 16, 10, generator=gen, dtype=torch.float64), torch.rand(16, 7, generator=gen, dtype=torch.float64)
-    ref = gram_distance(gram(a), gram(b))
-    assert ref.shape == (3, 5)
-    assert torch.allclose(gram_distance_maps(a, b), ref, rtol=1e-10)
-    assert float(style_distance(a[0], b)) == pytest.approx(float(ref[0].mean()))
-    # Eq. 5.10 as printed: the Frobenius norm of the Gram difference
-    fro = torch.linalg.matrix_norm(gram(a) - gram(b)).mean()
-    assert float(style_loss(a, b, 2.0)) == pytest.approx(2.0 * float(fro), rel=1e-6)
-    assert float(style_loss(a, b, 2.0, norm="mean_squared")) == pytest.approx(2.0 * float(ref.mean()))
+    for reduce in ("sum", "mean"):
+        ref = gram_distance(gram(a, reduce), gram(b, reduce))
+        assert ref.shape == (3, 5)
+        assert torch.allclose(gram_distance_maps(a, b, reduce), ref, rtol=1e-10)
+        assert float(style_distance(a[0], b, reduce)) == pytest.approx(float(ref[0].mean()))
+        # Eq. 5.10 as printed: the Frobenius norm of the Gram difference
+        fro = torch.linalg.matrix_norm(gram(a, reduce) - gram(b, reduce)).mean()
+        assert float(style_loss(a, b, 2.0, gram_reduce=reduce)) == pytest.approx(2.0 * float(fro), rel=1e-6)
+        assert float(style_loss(a, b, 2.0, norm="mean_squared", gram_reduce=reduce)) == pytest.approx(2.0 * float(ref.mean()))
     with pytest.raises(ValueError, match="norm must be"):
         style_loss(a, b, 2.0, norm="l1")
 
@@ -246,7 +271,7 @@ def test_vae_and_cvae_training(tiny):
     assert maps.shape == (12, 16, 30)
     cfg = TrainConfig(epochs=40, lr=1e-3, batch_size=6, seed=0)
     vae, hist = train_vae(maps, cfg, n_samples=3, hidden=(64, 32, 16), latent=4)
-    assert list(hist.columns) == ["epoch", "loss", "content", "kl", "style", "seconds"]
+    assert list(hist.columns) == ["epoch", "loss", "content", "kl", "style", "seconds", "active"]
     assert hist["loss"].iloc[-1] < hist["loss"].iloc[0] and (hist["style"] == 0).all()
     # a style example far from the content: the CVAE's samples move toward its Gram matrix
     example = space.encode(motions_features([toy_walk(seed=99, swing=1.2, arm=1.0, speed=4.0)], space_layout()))[0]
@@ -265,6 +290,32 @@ def test_vae_and_cvae_training(tiny):
         train_vae(maps, cfg, init=MotionVAE(10), hidden=(64, 32, 16), latent=4)
     with pytest.raises(ValueError, match="TrainConfig"):
         TrainConfig(epochs=0, lr=1e-3, batch_size=4)
+
+
+def test_cvae_keeps_active_latent_units_on_a_toy_set():
+    """A CVAE trained a few epochs from a VAE that uses its latent space (toy feature maps
+    from 4 latent factors) still uses it at the default regime (Adam lr 1e-4, Eq. 5.9's
+    summed Gram, Frobenius norm, alpha 200) and with the thesis' SGD at lr 1e-5; the
+    history counts the dimensions in use per epoch."""
+    from motionvar.du2022.style import active_units
+
+    gen = torch.Generator().manual_seed(0)
+    base = torch.rand(16, 30, generator=gen)
+    factors = 0.5 * torch.randn(4, 16, 30, generator=gen)
+    maps = torch.relu(base + torch.einsum("nk,kct->nct", torch.randn(64, 4, generator=gen), factors))
+    example = torch.relu(1.5 * base + 0.3 * torch.randn(16, 30, generator=gen))
+    small = dict(n_samples=3, hidden=(64, 32, 16), latent=4)
+    vae, hist = train_vae(maps, TrainConfig(30, 1e-3, 16, seed=0), **small)
+    assert hist["active"].iloc[-1] == active_units(vae, maps) > 0
+    for cfg in (TrainConfig(5, 1e-4, 16, seed=0), TrainConfig(5, 1e-5, 16, seed=0, optimizer="sgd")):
+        cvae, chist = train_vae(maps, cfg, style_maps=example, alpha=200.0, init=vae, **small)
+        assert list(chist.columns) == ["epoch", "loss", "content", "kl", "style", "seconds", "active"]
+        assert (chist["active"] > 0).all() and active_units(cvae, maps) > 0, (cfg, chist["active"].tolist())
+        assert chist["style"].iloc[-1] < chist["style"].iloc[0]
+    with pytest.raises(ValueError, match="optimizer must be one of"):
+        TrainConfig(5, 1e-4, 16, optimizer="rmsprop")
+    with pytest.raises(ValueError, match="gram_reduce must be one of"):
+        train_vae(maps, TrainConfig(1, 1e-4, 16), style_maps=example, gram_reduce="max", **small)
 
 
 def space_layout():
@@ -395,13 +446,18 @@ def style_run(tmp_path_factory, layout):
     assert list(ae_hist.columns) == ["epoch", "loss", "seconds", "windows"] and (ae_hist["windows"] == 8).all()
     space.save(path / "ae.pt")
     vae, shape, info, _ = fit_primitive_vae(dataset, layout, space, "walk_leftStance", TrainConfig(3, 1e-3, 4), **small)
-    assert shape == (16, 30) and info == {"primitive": "walk_leftStance", "style": "neutral", "n_clips": 6}
+    assert shape == (16, 30) and {k: info[k] for k in ("primitive", "style", "n_clips")} == {
+        "primitive": "walk_leftStance", "style": "neutral", "n_clips": 6}
+    assert info["regime"] == "adam lr 0.001, 3 epochs, batch 4, L = 2" and 0 <= info["active_units"] <= 4
     save_vae(path / "vae.pt", vae, shape, info)
     cvaes = []
     for style in ("proud", "old"):
         cvae, cshape, cinfo, hist = fit_style_cvae(dataset, layout, space, vae, "walk_leftStance", style,
                                                    TrainConfig(2, 1e-3, 4), alpha=1.0, **small)
         assert cinfo["example"] in set(meta.loc[meta["style"] == style, "clip_id"]) and (hist["style"] > 0).all()
+        assert cinfo["regime"] == ("adam lr 0.001, 2 epochs, batch 4; alpha 1, frobenius norm, Gram sum over frames, "
+                                   "from the neutral VAE")
+        assert cinfo["active_units"] == hist["active"].iloc[-1]
         save_vae(path / f"{style}.pt", cvae, cshape, cinfo)
         cvaes.append(load_vae(path / f"{style}.pt"))
     return dataset, FeatureSpace.load(path / "ae.pt"), load_vae(path / "vae.pt"), cvaes
@@ -448,19 +504,41 @@ def test_evaluate_table5_2(style_run, layout):
     result = evaluate_table5_2(dataset, layout, space, [neutral, *cvaes], ["walk_leftStance"], n_samples=30,
                                seed=0, pose_sd_tolerance=0.05)
     t = result.table
-    assert list(t["model"]) == ["training data", "neutral", "proud", "old"]
-    assert list(t["n"]) == [6, 30, 30, 30] and t["active_latents"].iloc[1:].between(0, 4).all()
-    assert t["published_pose_sd"].notna().all()
+    assert list(t["model"]) == ["training data", "training data (autoencoder)", "neutral", "proud", "old"]
+    assert list(t["n"]) == [6, 6, 30, 30, 30] and t["active_latents"].iloc[2:].between(0, 4).all()
+    assert t["active_latents"].iloc[:2].isna().all()
+    assert t.loc[t["model"] != "training data (autoencoder)", "published_pose_sd"].notna().all()
     from motionvar.du2022.style.data import primitive_features
 
     train = primitive_features(dataset, layout, "walk_leftStance", "neutral", 60)[1]  # resampled to 60 frames
     assert t.loc[0, "pose_sd"] == round(diversity(train, 21)["pose_sd"], 5)
+    assert t.loc[1, "pose_sd"] == round(diversity(space.decode(space.encode(train)), 21)["pose_sd"], 5)
+    # each model beside its own training data: the neutral clips for the VAE, the style's clips for a CVAE
+    tt = t.set_index("model")
+    assert tt.loc["neutral", "training_pose_sd"] == tt.loc["training data", "pose_sd"]
+    proud = primitive_features(dataset, layout, "walk_leftStance", "proud", 60)[1]
+    assert tt.loc["proud", "training_n"] == 2
+    assert tt.loc["proud", "training_step_sd"] == round(diversity(proud, 21)["step_sd"], 5)
+    assert tt.loc[["neutral", "proud", "old"], "posterior_mean_pose_sd"].gt(0).all()
     ids = [c.claim_id.split(".")[-1] for c in result.claims]
     assert ids == ["neutral_pose_sd_close_to_training", "neutral_step_sd_lower_than_training",
                    "style_pose_sd_lower_than_neutral"]
-    m = t.set_index("model")["pose_sd"]
-    assert result.claims[2].measured == f"{int((m[['proud', 'old']] < m['neutral']).sum())} of 2"
-    plt.close(draw_table5_2(result))
+    # claim 1: full credit against the training data, half against its autoencoder round trip
+    vae, data, ae = (tt.loc[m, "pose_sd"] for m in ("neutral", "training data", "training data (autoencoder)"))
+    credit = 1.0 if abs(vae / data - 1) <= 0.05 else 0.5 if abs(vae / ae - 1) <= 0.05 else 0.0
+    assert result.claims[0].verdict == {1.0: "reproduced", 0.5: "partial", 0.0: "not reproduced"}[credit]
+    assert "through the autoencoder" in result.claims[0].measured
+    # claim 3: relative to each model's own training data; the thesis' raw comparison also reported
+    ratio = tt["pose_sd"] / tt["training_pose_sd"]
+    n_own = int((ratio[["proud", "old"]] < ratio["neutral"]).sum())
+    n_raw = int((tt.loc[["proud", "old"], "pose_sd"] < tt.loc["neutral", "pose_sd"]).sum())
+    assert result.claims[2].measured.startswith(f"{n_own} of 2 relative to their own training data")
+    assert f"against the neutral VAE's pose_SD: {n_raw} of 2" in result.claims[2].measured
+    assert result.claims[2].verdict == {2: "reproduced", 1: "partial", 0: "not reproduced"}[n_own]
+    assert "Step_SD (cm; means over primitives and styles)" in result.claims[2].note
+    fig = draw_table5_2(result)
+    assert any(coll.get_label() == "own training data" for ax in fig.axes for coll in ax.collections)
+    plt.close(fig)
 
 
 def test_evaluate_fig5_4_and_its_animation(style_run, layout):
@@ -491,4 +569,11 @@ def test_draw_training():
     assert [ax.get_title() for ax in fig.axes] == [
         "conv autoencoder (Eq. 5.1-5.2)", "neutral VAEs (Eq. 5.6)", "CVAEs walk_leftStance (Eq. 5.11)"]
     assert [line.get_label() for line in fig.axes[2].lines] == ["walk_leftStance/proud", "walk_leftStance/old"]
+    plt.close(fig)
+    # with the latent dimensions in use per epoch: a second row of panels
+    ha = h.assign(active=[3, 2])
+    fig = draw_training(h, {"walk_leftStance": ha}, {("walk_leftStance", "proud"): ha})
+    titles = [ax.get_title() for ax in fig.axes]
+    assert titles[3:] == ["", "neutral VAEs (Eq. 5.6): active units", "CVAEs walk_leftStance (Eq. 5.11): active units"]
+    assert list(fig.axes[5].lines[0].get_ydata()) == [3, 2]
     plt.close(fig)

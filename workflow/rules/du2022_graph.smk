@@ -66,7 +66,12 @@ rule du2022_graph_search:
         trees=f"{GRAPH}/search/{{primitive}}_trees.csv",
     params:
         settings=config_params(
-            "graph", ["seed"] + [f"search.{k}" for k in ("n_samples", "n_queries", "beam", "leaf_size", "n_random")]
+            "graph",
+            ["seed"]
+            + [
+                f"search.{k}"
+                for k in ("n_samples", "n_queries", "beam", "beams", "max_evaluations", "leaf_size", "n_random")
+            ],
         ),
         joints=config_params("graph", ["search.joints", "search.default_joint", "search.pose_joints"]),
         joint_map=lambda wc: joint_map_path(wc.dataset),

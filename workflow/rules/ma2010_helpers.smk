@@ -12,7 +12,9 @@ MA2010_INPUTS = {
         "table": f"{MA2010}/walk_cycles.csv",
     },
 }
-_MODEL = ["structure", "variogram_model"]
+# the model's keys; root_group places the root rotation when the joint groups are built
+# (motionvar.ma2010.examples.WalkCycles), so every evaluation of the walking cycles reads it
+_MODEL = ["structure", "variogram_model", "root_group"]
 
 # evaluation -> inputs, figure label, config.ma2010 keys its script reads, threads,
 # memory, and further outputs / params
@@ -24,7 +26,11 @@ MA2010_EVALUATIONS = {
     },
     "ma2010_fig6": {
         "input": "walks", "figure": "Fig. 6", "mem_mb": 4000,
-        "options": [*_MODEL, "seed", "loo_max_clips"],
+        "options": [*_MODEL, "seed", "loo_max_clips", "loo_unit"],
+    },
+    "ma2010_variogram": {
+        "input": "walks", "figure": "Sec. 6 (variogram)", "mem_mb": 3000,
+        "options": [*_MODEL, "variogram_scale", "seed"],
     },
     "ma2010_fig7b": {
         "input": "walks", "figure": "Fig. 7b", "mem_mb": 3000,
@@ -39,7 +45,7 @@ MA2010_EVALUATIONS = {
         "options": [*_MODEL, "seed", "comparison_examples", "comparison_seconds", "comparison_sequences",
                     "perlin_amplitude_rad", "perlin_frequency_hz", "gplvm_latent_dim", "gplvm_iterations",
                     "gplvm_frame_step", "dbn_max_parents", "contact_height_cm", "discontinuity_factor",
-                    "animation_seconds"],
+                    "comparison_xi", "comparison_landing", "animation_seconds"],
         "output": {
             "animation": in_report(
                 "results/{dataset}/figures/ma2010_sec7_4.gif", "ma2010", "../report/ma2010_sec7_4.rst",

@@ -15,7 +15,8 @@ def joint_map(snakemake):
 
 
 def load_walks(snakemake):
-    """The cycles of input ``clips`` (ClipSet model file) with the subjects of input ``table``."""
+    """The cycles of input ``clips`` (ClipSet model file) with the subjects and walks of input
+    ``table``; the root rotation in the joint group of option ``root_group`` (default legs)."""
     import pandas as pd
 
     from motionvar.io.model_file import load_model
@@ -26,4 +27,6 @@ def load_walks(snakemake):
     table = pd.read_csv(snakemake.input.table, dtype=WALKS_DTYPES)
     if len(table) != clips.n_clips or list(table["clip_id"]) != clips.clip_ids:
         raise ValueError(f"{snakemake.input.table} does not list the cycles of {snakemake.input.clips}; rerun ma2010_clips")
-    return WalkCycles(clips, table["subject"].tolist(), joint_map(snakemake), source=snakemake.input.table)
+    root_group = snakemake.params.options.get("root_group", "legs")  # config ma2010.root_group
+    return WalkCycles(clips, table["subject"].tolist(), joint_map(snakemake), source=snakemake.input.table,
+                      root_group=root_group, source_clips=table["source_clip"].tolist())

@@ -1,6 +1,7 @@
 """Rule du2022_graph_search (Du 2022 Fig. 4.12, one primitive): random position,
-orientation and pose constraints searched by the k-means, GMM and median trees, random
-sampling and brute force; one row per query and method."""
+orientation and pose constraints searched by the k-means tree (at every beam measured),
+the GMM tree, the median tree (DFKI's kd-tree) and our median split, random sampling and
+brute force; one row per query, method and beam (column selected: the verdicts' beam)."""
 
 
 def main(snakemake) -> None:
@@ -14,7 +15,10 @@ def main(snakemake) -> None:
     queries, trees = search_primitive(model, joint_map(snakemake), SearchSettings(**p.settings), **p.joints)
     queries.to_csv(snakemake.output.queries, index=False)
     trees.to_csv(snakemake.output.trees, index=False)
-    logging.info("%s: %d queries; trees %s", model.name, len(queries), trees.to_dict("records"))
+    km = queries[queries["method"] == "kmeans"]
+    logging.info("%s: %d queries; trees %s; k-means mean evaluations by beam %s, verdict beam %s", model.name,
+                 len(queries), trees.to_dict("records"), km.groupby("beam")["n_evals"].mean().round(1).to_dict(),
+                 sorted(set(km.loc[km["selected"], "beam"])))
 
 
 if "snakemake" in globals():

@@ -1,5 +1,6 @@
 """Rule ma2010_fig6 (Ma 2010 Fig. 6, Sec. 7.1): leave-one-out stride error over the walking
-cycles; Kriging vs RBF on the same folds (motionvar.ma2010.evaluations.fig6)."""
+cycles (whole-walk or single-cycle folds), with the root rotation in the other joint group
+as an ablation; Kriging vs RBF on the same folds (motionvar.ma2010.evaluations.fig6)."""
 
 
 def main(snakemake) -> None:
@@ -9,7 +10,8 @@ def main(snakemake) -> None:
     from motionvar.ma2010.figures import draw_fig6
 
     o = snakemake.params.options
-    result = fig6_leave_one_out(load_walks(snakemake), o["structure"], o["variogram_model"], o["seed"], o["loo_max_clips"])
+    result = fig6_leave_one_out(load_walks(snakemake), o["structure"], o["variogram_model"], o["seed"], o["loo_max_clips"],
+                                o["loo_unit"])
     write_evaluation(snakemake, result, draw_fig6)
 
 

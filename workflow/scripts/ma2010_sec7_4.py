@@ -19,7 +19,7 @@ def main(snakemake) -> None:
         perlin_frequency_hz=o["perlin_frequency_hz"], gplvm_latent_dim=o["gplvm_latent_dim"],
         gplvm_iterations=o["gplvm_iterations"], gplvm_frame_step=o["gplvm_frame_step"],
         dbn_max_parents=o["dbn_max_parents"], contact_height_cm=o["contact_height_cm"],
-        discontinuity_factor=o["discontinuity_factor"],
+        discontinuity_factor=o["discontinuity_factor"], xi_per=o["comparison_xi"], landing_rule=o["comparison_landing"],
     )
     write_evaluation(snakemake, result, draw_sec7_4)
     first = [result.figure["sequences"][m][0] for m in METHODS]

@@ -1,6 +1,7 @@
 """Rule style_cvae (Du 2022 Sec. 5.3.3, 5.4.1): the CVAE of one primitive and style: the
 neutral clips as content plus one style example, loss Eq. 5.11 with the Gram style term
-Eq. 5.10 (weight alpha); starts from the neutral VAE when cvae.init_from_neutral."""
+Eq. 5.10 (weight alpha, Gram matrices of Eq. 5.9 summed or averaged: cvae.gram); starts from
+the neutral VAE when cvae.init_from_neutral."""
 
 
 def main(snakemake) -> None:
@@ -11,8 +12,8 @@ def main(snakemake) -> None:
     p, c, wc = snakemake.params.options, snakemake.params.options["cvae"], snakemake.wildcards
     cvae, shape, info, history = fit_style_cvae(
         dataset, layout, space, load_vae(snakemake.input.vae)[0], wc.primitive, wc.style,
-        TrainConfig(c["epochs"], c["lr"], c["batch_size"], p["seed"]), n_frames=p["canonical_frames"],
-        n_samples=p["samples_per_input"], alpha=c["alpha"], style_norm=c["style_norm"],
+        TrainConfig(c["epochs"], c["lr"], c["batch_size"], p["seed"], c["optimizer"]), n_frames=p["canonical_frames"],
+        n_samples=p["samples_per_input"], alpha=c["alpha"], style_norm=c["style_norm"], gram_reduce=c["gram"],
         init_from_neutral=c["init_from_neutral"], latent=p["latent"],
     )
     save_vae(snakemake.output.model, cvae, shape, info)

@@ -10,7 +10,7 @@ def main(snakemake) -> None:
     p, v = snakemake.params.options, snakemake.params.options["vae"]
     vae, shape, info, history = fit_primitive_vae(
         dataset, layout, space, snakemake.wildcards.primitive,
-        TrainConfig(v["epochs"], v["lr"], v["batch_size"], p["seed"]),
+        TrainConfig(v["epochs"], v["lr"], v["batch_size"], p["seed"], v["optimizer"]),
         n_frames=p["canonical_frames"], n_samples=v["samples_per_input"], latent=v["latent"],
     )
     save_vae(snakemake.output.model, vae, shape, info)

@@ -4,6 +4,12 @@ measures that compare them (naturalness, and variation between sequences of one 
 
 Every method outputs local rotations; the root of every sequence is then recovered by the
 same footskate cleanup (Sec. 6.3), so that the methods differ only in their poses.
+
+The naturalness measures are checked on the generator's ground truth first
+(tests/test_metrics_motion.py): foot skating is the speed of a foot's contact point over
+the frames it is in contact (0 on the generator's walks; the earlier height-threshold
+measure, which scored them 13-47 cm/s, is reported beside it as ``low_joint_speed_cm_s``),
+and jerk is reported for the whole body and without the root's path (root-free).
 """
 
 from __future__ import annotations
@@ -20,16 +26,20 @@ from .baselines.perlin import add_rotation_noise
 from ..core.motion import Motion
 from ..models.bayesian_gplvm import BayesianGPLVM
 from ..metrics.discontinuities import count_discontinuities, peak_acceleration
-from ..metrics.foot_skating import foot_skating
-from ..metrics.jerk import mean_jerk
+from ..metrics.foot_skating import foot_skating, low_joint_speed
+from ..metrics.jerk import mean_jerk, root_free_jerk
 from ..metrics.pose_distance import nearest_pose_distance, pose_features, pose_set_distance
+from .examples import foot_contacts
 from .representation import ClipSet, PoseCodec
-from .svi import StyleVariationModel
+from .svi import ClipPrediction, StyleVariationModel
 from .synthesis import RootSolver, realtime_clips, sequence_motion, stitch
 
 METHODS = ("ours", "perlin", "gplvm", "rbf", "kriging", "dbn")
-LABELS = {"ours": "ours (Ma 2010)", "perlin": "Perlin noise", "gplvm": "GPLVM helix", "rbf": "RBF",
+LABELS = {"ours": "ours (Ma 2010)", "perlin": "Perlin noise", "gplvm": "Bayesian GPLVM helix", "rbf": "RBF",
           "kriging": "Kriging (MK05)", "dbn": "DBN (Lau 2009)"}
+#: How often ours draws xi (Sec. 7.4 does not say): "sequence" once per sequence (one
+#: person walks the whole sequence; the sequences differ), "clip" anew for every cycle.
+XI_DRAWS = ("sequence", "clip")
 
 
 def clips_for_duration(clips: ClipSet, seconds: float) -> int:
@@ -43,25 +53,55 @@ def trim(motion: Motion, seconds: float) -> Motion:
     return motion.slice(0, min(motion.n_frames, int(round(seconds * motion.fps)) + 1))
 
 
-def ours_sequence(model: StyleVariationModel, style: np.ndarray, n_clips: int, solver: RootSolver, rng: np.random.Generator) -> Motion:
-    """Ours: n_clips cycles at one style, each with its own xi sampled from the network."""
-    pred, _ = model.synthesize_clips(np.tile(np.atleast_2d(style), (n_clips, 1)), rng=rng)
-    return sequence_motion(pred.rotations, pred.key_times, model.reference_keys_, solver, model.fps_, pred.root_height)
+def ours_clips(
+    model: StyleVariationModel, style: np.ndarray, n_clips: int, rng: np.random.Generator, xi_per: str = "sequence"
+) -> ClipPrediction:
+    """n_clips predicted cycles at one style, xi sampled from the network (Eq. 10) once for
+    all of them (``xi_per`` "sequence": the cycles are the same) or anew for every cycle
+    ("clip")."""
+    if xi_per not in XI_DRAWS:
+        raise ValueError(f"ours_clips: xi_per must be one of {list(XI_DRAWS)}; got {xi_per!r}")
+    c = np.tile(np.atleast_2d(style), (n_clips, 1))
+    if xi_per == "clip":
+        return model.synthesize_clips(c, rng=rng)[0]
+    xi = model.sample_variation(c[:1], rng=rng)
+    return model.predict(c, {g: np.repeat(v, n_clips) for g, v in xi.items()})
 
 
-def interpolation_sequence(interp: StyleClipInterpolation, style: np.ndarray, n_clips: int, solver: RootSolver, fps: float) -> Motion:
+def ours_sequence(
+    model: StyleVariationModel,
+    style: np.ndarray,
+    n_clips: int,
+    solver: RootSolver,
+    rng: np.random.Generator,
+    xi_per: str = "sequence",
+    landing_rule: str = "significant_maximum",
+) -> Motion:
+    """Ours: n_clips cycles at one style (:func:`ours_clips`), retimed, stitched and
+    root-solved."""
+    pred = ours_clips(model, style, n_clips, rng, xi_per)
+    return sequence_motion(pred.rotations, pred.key_times, model.reference_keys_, solver, model.fps_, pred.root_height,
+                           landing_rule)
+
+
+def interpolation_sequence(
+    interp: StyleClipInterpolation, style: np.ndarray, n_clips: int, solver: RootSolver, fps: float,
+    landing_rule: str = "significant_maximum",
+) -> Motion:
     """RBF or plain Kriging: the same clip (one style) repeated n_clips times."""
     pred = interp.predict(np.tile(np.atleast_2d(style), (n_clips, 1)))
-    return sequence_motion(pred.rotations, pred.key_times, interp.reference_keys_, solver, fps, pred.root_height)
+    return sequence_motion(pred.rotations, pred.key_times, interp.reference_keys_, solver, fps, pred.root_height,
+                           landing_rule)
 
 
 def perlin_sequence(
-    clips: ClipSet, n_clips: int, solver: RootSolver, rng: np.random.Generator, amplitude: float, frequency_hz: float
+    clips: ClipSet, n_clips: int, solver: RootSolver, rng: np.random.Generator, amplitude: float, frequency_hz: float,
+    landing_rule: str = "significant_maximum",
 ) -> Motion:
     """Perlin noise [Per95] on the rotations of the examples concatenated in random order."""
     order = rng.integers(0, clips.n_clips, size=n_clips)
     rt = realtime_clips(clips.rotations[order], clips.key_times[order], clips.reference_keys, clips.fps)
-    rot, _ = stitch(rt)
+    rot, _ = stitch(rt, landing_rule=landing_rule)
     noisy = add_rotation_noise(rot, clips.fps, amplitude, frequency_hz, seed=int(rng.integers(2**31)))
     return solver.motion(noisy, clips.fps)
 
@@ -106,14 +146,18 @@ def method_sequences(
     gplvm_iterations: int = 200,
     gplvm_frame_step: int = 4,
     dbn_max_parents: int = 8,
+    xi_per: str = "sequence",
+    landing_rule: str = "significant_maximum",
 ) -> dict[str, list[Motion]]:
     """Sec. 7.4: ``n_sequences`` sequences of about ``seconds`` s per method (method ->
     list of Motion, methods in :data:`METHODS` order), every method learning from the same
-    ``examples``: ours (the model of Sec. 5-6, xi sampled per cycle), Perlin noise on the
-    examples concatenated in random order, the Bayesian GPLVM (every ``gplvm_frame_step``-th
-    example pose) along a helix, RBF and style-only Kriging at the examples' mean style,
-    and the DBN unrolled (both pose models on :class:`PoseCodec` vectors). Sequence ``s``
-    draws from ``numpy.random.default_rng([seed, s])``."""
+    ``examples``: ours (the model of Sec. 5-6, xi sampled once per sequence or per cycle:
+    ``xi_per``), Perlin noise on the examples concatenated in random order, the Bayesian
+    GPLVM (every ``gplvm_frame_step``-th example pose) along a helix, RBF and style-only
+    Kriging at the examples' mean style, and the DBN unrolled (both pose models on
+    :class:`PoseCodec` vectors). Clip-based methods land their transitions by
+    ``landing_rule`` (:func:`.postprocess.landing_frame`). Sequence ``s`` draws from
+    ``numpy.random.default_rng([seed, s])``."""
     five, k = examples, n_sequences
     fps = five.fps
     style = five.style.mean(axis=0)
@@ -131,25 +175,28 @@ def method_sequences(
     out: dict[str, list[Motion]] = {m: [] for m in METHODS}
     for s in range(k):  # n_sequences sequences per method
         rng = np.random.default_rng([seed, s])
-        out["ours"].append(trim(ours_sequence(ours, style, n_clips, solver, rng), seconds))
-        out["perlin"].append(trim(perlin_sequence(five, n_clips, solver, rng, perlin_amplitude, perlin_frequency_hz),
-                                  seconds))
+        out["ours"].append(trim(ours_sequence(ours, style, n_clips, solver, rng, xi_per, landing_rule), seconds))
+        out["perlin"].append(trim(perlin_sequence(five, n_clips, solver, rng, perlin_amplitude, perlin_frequency_hz,
+                                                  landing_rule), seconds))
         out["gplvm"].append(gplvm_sequence(gplvm, codec, n_frames, turns, solver, fps, phase=2 * np.pi * s / k,
                                            radius_scale=float(rng.uniform(0.9, 1.1))))
-        out["rbf"].append(trim(interpolation_sequence(rbf, style, n_clips, solver, fps), seconds))
-        out["kriging"].append(trim(interpolation_sequence(krig, style, n_clips, solver, fps), seconds))
+        out["rbf"].append(trim(interpolation_sequence(rbf, style, n_clips, solver, fps, landing_rule), seconds))
+        out["kriging"].append(trim(interpolation_sequence(krig, style, n_clips, solver, fps, landing_rule), seconds))
         out["dbn"].append(dbn_sequence(dbn, codec, n_frames, solver, fps, rng))
     return out
 
 
 @dataclass(frozen=True)
 class NaturalnessReference:
-    """What the naturalness measures compare with: the training poses (pose features),
-    the foot joints with the height of each when planted (its 5th height percentile over
-    the examples) and the contact tolerance above it, for skating; and the acceleration
-    above which a frame counts as a discontinuity."""
+    """What the naturalness measures compare with: the training poses (pose features); the
+    root solver whose feet (ankle and toe of each) and planted heights locate the feet's
+    contact points, for foot skating; the foot joints with the height of each when planted
+    (its 5th height percentile over the examples) and the height tolerance above it, for
+    the earlier height-threshold measure; and the acceleration above which a frame counts
+    as a discontinuity."""
 
     poses: np.ndarray
+    solver: RootSolver
     foot_joints: np.ndarray
     foot_floor: np.ndarray
     contact_height: float
@@ -157,29 +204,41 @@ class NaturalnessReference:
 
     @classmethod
     def from_examples(
-        cls, motions: Sequence[Motion], foot_joints: np.ndarray, contact_height: float = 2.0, threshold_factor: float = 1.5
+        cls, motions: Sequence[Motion], solver: RootSolver, contact_height: float = 2.0, threshold_factor: float = 1.5
     ) -> "NaturalnessReference":
         """From the (root-solved) example motions: their poses, their feet's planted
         heights, and ``threshold_factor`` times the largest joint acceleration in them."""
         positions = [m.positions() for m in motions]
-        foot_joints = np.asarray(foot_joints)
+        foot_joints = np.asarray(solver.feet).reshape(-1)
         poses = np.concatenate([pose_features(p) for p in positions])
         heights = np.concatenate([p[:, foot_joints, 1] for p in positions])
         peak = max(float(peak_acceleration(p, m.fps).max()) for p, m in zip(positions, motions))
-        return cls(poses, foot_joints, np.percentile(heights, 5, axis=0), contact_height, threshold_factor * peak)
+        return cls(poses, solver, foot_joints, np.percentile(heights, 5, axis=0), contact_height, threshold_factor * peak)
 
 
 def naturalness(motion: Motion, ref: NaturalnessReference) -> dict[str, float]:
-    """Jerk (cm/s^3), foot skating (cm/s: horizontal speed of foot joints within
-    ``contact_height`` of their planted height), mean distance to the nearest training
-    pose (cm, RMS per joint) and discontinuities per minute."""
+    """Jerk (cm/s^3) of the whole body and root-free (:func:`..metrics.jerk.root_free_jerk`),
+    foot skating (cm/s: speed of each foot's contact point while the project's contact
+    detection has it on the ground, :func:`..metrics.foot_skating.foot_skating`; a foot
+    sliding faster than that detection's speed limit, 50 cm/s, reads as lifted), the share
+    of frames with a foot in contact (a walk has one at all times: a low share flags feet
+    that float or slide fast), the earlier height-threshold measure (cm/s: horizontal speed
+    of foot joints within ``contact_height`` of their planted height, heel and toe roll
+    included), mean distance to the nearest training pose (cm, RMS per joint) and
+    discontinuities per minute."""
     pos = motion.positions()
-    feet = pos[:, ref.foot_joints].copy()
-    feet[..., 1] -= ref.foot_floor
+    solver = ref.solver
+    feet = pos[:, solver.feet]  # (T, 2, F, 3)
+    contacts = foot_contacts(motion, solver, pos)
+    low = pos[:, ref.foot_joints].copy()
+    low[..., 1] -= ref.foot_floor
     minutes = motion.duration / 60.0
     return {
         "jerk_cm_s3": mean_jerk(pos, motion.fps),
-        "foot_skating_cm_s": foot_skating(feet, motion.fps, ref.contact_height),
+        "root_free_jerk_cm_s3": root_free_jerk(pos, motion.fps),
+        "foot_skating_cm_s": foot_skating(feet, contacts, motion.fps, solver.planted),
+        "contact_share": float(contacts.any(axis=1).mean()),
+        "low_joint_speed_cm_s": low_joint_speed(low, motion.fps, ref.contact_height),
         "pose_distance_cm": float(nearest_pose_distance(pose_features(pos), ref.poses).mean()),
         "discontinuities_per_min": count_discontinuities(pos, motion.fps, ref.acceleration_threshold) / max(minutes, 1e-9),
     }
@@ -195,18 +254,20 @@ def variation_between(motions: Sequence[Motion]) -> float:
 
 NATURALNESS_SCORES = {
     "jerk_vs_examples": "|log(jerk / examples' jerk)|",
+    "root_free_jerk_vs_examples": "|log(root-free jerk / examples')|",
     "foot_skating_cm_s": "foot skating (cm/s)",
     "pose_distance_cm": "distance to the nearest example pose (cm)",
     "discontinuities_per_min": "discontinuities per minute",
 }
 
 
-def naturalness_scores(measures: Mapping[str, float], example_jerk: float) -> dict[str, float]:
-    """The four naturalness scores of one sequence, each lower = more natural: jerk as its
-    log-ratio to the examples' jerk (too smooth is as unnatural as too jerky), the others
-    as measured."""
+def naturalness_scores(measures: Mapping[str, float], example_jerk: float, example_root_free_jerk: float) -> dict[str, float]:
+    """The naturalness scores of one sequence (:data:`NATURALNESS_SCORES`), each lower =
+    more natural: whole-body and root-free jerk as their log-ratio to the examples' (too
+    smooth is as unnatural as too jerky), the others as measured."""
     return {
         "jerk_vs_examples": abs(float(np.log(measures["jerk_cm_s3"] / example_jerk))),
+        "root_free_jerk_vs_examples": abs(float(np.log(measures["root_free_jerk_cm_s3"] / example_root_free_jerk))),
         "foot_skating_cm_s": measures["foot_skating_cm_s"],
         "pose_distance_cm": measures["pose_distance_cm"],
         "discontinuities_per_min": measures["discontinuities_per_min"],

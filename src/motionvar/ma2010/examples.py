@@ -16,12 +16,13 @@ import pandas as pd
 from ..core.joint_map import JointMap
 from ..core.motion import Motion
 from ..core.skeleton import Skeleton
-from ..metrics.stride import stride_lengths
+from ..metrics.stride import footfall_strides, stride_lengths
+from ..prep.contacts import detect_foot_contacts
 from .correspondence import movement_direction, standard_skeleton, reference_key_positions, space_warp, time_warp
 from .keyframes import Cycle, KeyframeSignal, find_extrema, keyframe_signal, segment_cycles
 from .representation import ClipSet, rest_hip_height
 from .svi import StyleVariationModel
-from .synthesis import RootSolver, rest_foot_heights
+from .synthesis import MIN_SUPPORT_S, RootSolver, rest_foot_heights
 
 
 @dataclass(frozen=True)
@@ -32,6 +33,25 @@ class CycleExtraction:
     frames: np.ndarray
     kinds: np.ndarray
     cycles: list[Cycle]
+
+
+ROOT_GROUPS = ("legs", "upper_body")  # where the root rotation may go (config ma2010.root_group)
+
+
+def joint_groups(joint_map: JointMap, skeleton: Skeleton, root_group: str = "legs") -> dict[str, np.ndarray]:
+    """The four joint groups of Fig. 4 (``JointMap.group_indices``) with the root joint
+    (joint 0, the pelvis) moved into ``root_group``: "legs" (A, the default and what every
+    shipped joint map says) or "upper_body" (D). Fig. 4 does not say where the root
+    rotation goes; it tilts the pelvis that carries both legs, Sec. 8 keeps the legs
+    together for foot constraints and Sec. 6.3 models the root's height with the legs.
+    Only the root's rotation moves: the keyframe signal (Eq. 1-4) takes positions relative
+    to the root, so it is the same either way."""
+    if root_group not in ROOT_GROUPS:
+        raise ValueError(f"joint_groups: root_group must be one of {list(ROOT_GROUPS)}; got {root_group!r}")
+    groups = joint_map.group_indices(skeleton)
+    out = {g: j[j != 0] for g, j in groups.items()}
+    out[root_group] = np.sort(np.append(out[root_group], 0))
+    return out
 
 
 def lower_upper(joint_map: JointMap, skeleton: Skeleton) -> tuple[np.ndarray, np.ndarray]:
@@ -60,33 +80,117 @@ def extract_cycles(
     return CycleExtraction(sig, frames, kinds, cycles)
 
 
-def root_solver(skeleton: Skeleton, joint_map: JointMap, flight_threshold: float | None = None) -> RootSolver:
+def root_solver(
+    skeleton: Skeleton, joint_map: JointMap, flight_threshold: float | None = None, min_support_s: float = MIN_SUPPORT_S
+) -> RootSolver:
     """Footskate cleanup settings on ``skeleton``: each foot stands on its ankle or its
-    toe, planted at their rest heights above the sole; strides are measured at the ankles."""
+    toe, planted at their rest heights above the sole; strides are measured at the ankles;
+    the support foot switches with a minimum contact time of ``min_support_s`` (0: the
+    lower foot of every frame, the literal rule)."""
     feet = np.array([joint_map.indices(skeleton, [f"{side}_ankle", f"{side}_toe"]) for side in ("left", "right")])
     planted = np.stack([rest_foot_heights(skeleton, f) for f in feet])
-    return RootSolver(skeleton, feet, planted, flight_threshold)
+    return RootSolver(skeleton, feet, planted, flight_threshold, min_support_s)
 
 
 FOOTPRINT_WINDOW_S = 0.1
+#: Shortest contact that is a footfall (s): a walking stance lasts ~60 % of a ~1 s cycle, a
+#: running one 30-40 % of ~0.7 s (docs/gait.md); shorter "contacts" are a swing foot
+#: grazing the floor (the contact detection keeps runs from 0.05 s).
+MIN_FOOTFALL_S = 0.1
 
 
-def support_strides(motion: Motion, key_frames: np.ndarray, solver: RootSolver) -> np.ndarray:
-    """Stride length (cm) of the left and the right support phase of one cycle: the
-    horizontal displacement of the swing ankle between its footprints at key frames 0-2
-    and 2-4 (each foot's stillest frame within 0.1 s of the key frame: the key frames lag
-    foot strikes a little, and a foot in toe-off moves fast)."""
+STRIDE_MEASURES = ("footfalls", "window")  # see :func:`support_strides`
+
+
+def foot_contacts(motion: Motion, solver: RootSolver, positions: np.ndarray | None = None) -> np.ndarray:
+    """(T, 2) contact masks of the left and the right foot of ``motion``: the project's
+    contact detection (:func:`motionvar.prep.contacts.detect_foot_contacts`, default
+    options: ankle or toe slow and low) on the solver's ankle and toe joints."""
+    feet = np.asarray(solver.feet)
+    if feet.shape != (2, 2):
+        raise ValueError(f"foot_contacts: the solver's feet must be (2, 2) ankle and toe joints; got {feet.shape}")
+    names = motion.skeleton.names
+    jm = JointMap(joints={f"{side}_{part}": names[feet[f, j]] for f, side in enumerate(("left", "right"))
+                          for j, part in enumerate(("ankle", "toe"))})
+    c = detect_foot_contacts(motion, jm, positions=positions)
+    return np.stack([c.left, c.right], axis=1)
+
+
+def support_strides(motion: Motion, key_frames: np.ndarray, solver: RootSolver, measure: str = "footfalls") -> np.ndarray:
+    """Stride length (cm) of the left and the right support phase of one cycle (key
+    frames 0-2 and 2-4, frames of ``motion``), as the horizontal travel of the swing ankle.
+
+    ``measure`` "footfalls": between the swing foot's footfalls
+    (:func:`..metrics.stride.footfall_strides`: at each key frame each foot stands on its
+    nearest contact of at least :data:`MIN_FOOTFALL_S`, from :func:`foot_contacts`). The
+    swing foot's footfall before the phase lies before its first key frame: pass the uncut
+    motion (:func:`uncut_strides`). Checked on the generator's walks: within 0.25 % of
+    their stride (tests/test_ma2010.py). "window": the earlier measure, each foot's
+    stillest frame within 0.1 s of the key frame, short by the trailing foot's roll-off
+    (2-10 %, most on a cut cycle); kept for comparison."""
+    if measure not in STRIDE_MEASURES:
+        raise ValueError(f"support_strides: measure must be one of {list(STRIDE_MEASURES)}; got {measure!r}")
     pos = motion.positions()
     feet = pos[:, [solver.left_foot, solver.right_foot]]
     window = int(round(FOOTPRINT_WINDOW_S * motion.fps))
-    return stride_lengths(feet, np.asarray(key_frames)[[0, 2, 4]], footprint_window=window)
+    bounds = np.asarray(key_frames)[[0, 2, 4]]
+    if measure == "window":
+        return stride_lengths(feet, bounds, footprint_window=window)
+    return footfall_strides(feet, foot_contacts(motion, solver, pos), bounds, int(round(MIN_FOOTFALL_S * motion.fps)))
 
 
-def normalized_strides(rotations: np.ndarray, key_frames: np.ndarray, solver: RootSolver, fps: float) -> np.ndarray:
-    """Strides of a cycle's rotations on the solver's (standard) skeleton, with the root
-    recovered by footskate cleanup (Sec. 1: normalizing to one skeleton "unifies the style
-    parameter spaces")."""
-    return support_strides(solver.motion(rotations, fps), key_frames, solver)
+def uncut_strides(motion: Motion, key_frames: Sequence[np.ndarray], solver: RootSolver, measure: str = "footfalls") -> np.ndarray:
+    """(C, 2) strides of the C cycles of one uncut motion (key frames in its frames), its
+    rotations put on the solver's (standard) skeleton and its root recovered by footskate
+    cleanup once for the whole motion, so that each stride runs between the cycle's own
+    footfalls wherever they lie (the one before a cycle's first key frame lies before the cycle)."""
+    solved = solver.motion(motion.rotations, motion.fps)
+    if measure == "window":
+        return np.stack([support_strides(solved, k, solver, measure) for k in key_frames])
+    pos = solved.positions()
+    feet = pos[:, [solver.left_foot, solver.right_foot]]
+    contacts = foot_contacts(solved, solver, pos)
+    shortest = int(round(MIN_FOOTFALL_S * motion.fps))
+    return np.stack([footfall_strides(feet, contacts, np.asarray(k)[[0, 2, 4]], shortest) for k in key_frames])
+
+
+def normalized_strides(
+    rotations: np.ndarray, key_frames: np.ndarray, solver: RootSolver, fps: float, measure: str = "footfalls"
+) -> np.ndarray:
+    """Strides of one cycle's rotations (a cut or a predicted clip) on the solver's
+    (standard) skeleton, with the root recovered by footskate cleanup (Sec. 1: normalizing
+    to one skeleton "unifies the style parameter spaces").
+
+    A cycle alone holds no footfall before its first key frame. With ``measure``
+    "footfalls" it is measured in the middle of three copies of itself joined end to first
+    frame (its last frame is its first one's phase), the steady walk it would make; the
+    footskate cleanup turns the small pose jump at a joint into a root jump, so the planted
+    feet stay put. (A displacement-mapped transition, Eq. 14-15, would blend that jump over
+    half a cycle and can lower a swing foot, which clears the floor by 1-2 cm in late
+    swing, below the stance foot: on generator cycles of fast walks that halved the
+    stride.) "window" measures the cycle alone with the earlier window measure
+    (:func:`support_strides`)."""
+    if measure == "window":
+        return support_strides(solver.motion(rotations, fps), key_frames, solver, measure)
+    rot = np.concatenate([rotations[:-1], rotations[:-1], rotations], axis=0)
+    return support_strides(solver.motion(rot, fps), np.asarray(key_frames) + len(rotations) - 1, solver, measure)
+
+
+def source_strides(
+    sources: Sequence[tuple[Motion, int]], key_frames: Sequence[np.ndarray], solver: RootSolver, measure: str = "footfalls"
+) -> np.ndarray:
+    """(N, 2) strides of N cycles on their uncut motions (:func:`uncut_strides`):
+    ``sources`` gives each cycle's uncut motion and its first frame there, ``key_frames``
+    its key frames relative to that first frame. Each motion is solved once."""
+    if len(sources) != len(key_frames):
+        raise ValueError(f"source_strides: {len(sources)} sources for {len(key_frames)} cycles")
+    by_motion: dict[int, tuple[Motion, list[int]]] = {}
+    for i, (m, _) in enumerate(sources):  # loop over cycles: group them by motion
+        by_motion.setdefault(id(m), (m, []))[1].append(i)
+    out = np.empty((len(sources), 2))
+    for m, idx in by_motion.values():  # loop over motions
+        out[idx] = uncut_strides(m, [np.asarray(key_frames[i]) + int(sources[i][1]) for i in idx], solver, measure)
+    return out
 
 
 def build_clipset(
@@ -97,6 +201,7 @@ def build_clipset(
     n_frames: int,
     style: np.ndarray | None = None,
     clip_ids: Sequence[str] | None = None,
+    sources: Sequence[tuple[Motion, int]] | None = None,
 ) -> ClipSet:
     """Aligned examples on the standard ``skeleton`` (Sec. 4.2).
 
@@ -104,7 +209,9 @@ def build_clipset(
     key frames on the common reference positions. Its rotations are used as they are on
     the standard skeleton; its root height is scaled by the ratio of rest hip heights.
     Without ``style`` the style parameters are the cycle's two support-phase strides
-    measured on the standard skeleton (:func:`normalized_strides`).
+    measured on the standard skeleton: on the uncut motion it was cut from when
+    ``sources`` gives it with the cycle's first frame there (:func:`source_strides`), else
+    on the cycle alone (:func:`normalized_strides`).
     """
     if len(cycles) != len(key_frames) or not cycles:
         raise ValueError(f"build_clipset: {len(cycles)} cycles and {len(key_frames)} key-frame sets")
@@ -122,7 +229,11 @@ def build_clipset(
     fps = float(cycles[0].fps)
     if style is None:
         solver = root_solver(skeleton, joint_map)
-        style = np.stack([normalized_strides(space_warp(m, joint_map).rotations, k, solver, fps) for m, k in zip(cycles, key_frames)])
+        if sources is not None:
+            style = source_strides(sources, key_frames, solver)
+        else:
+            style = np.stack([normalized_strides(space_warp(m, joint_map).rotations, k, solver, fps)
+                              for m, k in zip(cycles, key_frames)])
     ids = list(clip_ids) if clip_ids is not None else []
     return ClipSet(
         rotations=rotations, key_times=np.stack(keys), root_height=np.stack(heights), style=np.asarray(style, dtype=float),
@@ -190,7 +301,8 @@ def walk_cycles(
     """The walking clips of a dataset (``motionvar.io.MotionDataset``) with the given styles
     and variants cut into gait cycles at their key frames (Eq. 1-4), space- and
     time-warped onto the mean skeleton (Sec. 4.2), with their style parameters (strides of
-    the left and right support phases, Sec. 7.2). Returns the clips and one table row per
+    the left and right support phases, Sec. 7.2, measured on the uncut walk between each
+    cycle's own footfalls: :func:`source_strides`). Returns the clips and one table row per
     cycle (:func:`collect_cycles`' columns, the source clip's subject, style, stride and
     speed, the two strides and the duration). ValueError naming ``what`` when no clip
     matches or fewer than 3 cycles come out."""
@@ -210,7 +322,9 @@ def walk_cycles(
             "again: two steps, so a clip needs two foot strikes of each foot, a walk of at least ~2 s"
         )
     sk = standard_skeleton([c.skeleton for c in cycles])
-    clips = build_clipset(cycles, keys, sk, joint_map, n_frames, clip_ids=table["clip_id"].tolist())
+    by_id = dict(zip(meta["clip_id"].iloc[idx].tolist(), motions))
+    sources = [(by_id[c], int(s)) for c, s in zip(table["source_clip"], table["start_frame"])]  # strides: uncut
+    clips = build_clipset(cycles, keys, sk, joint_map, n_frames, clip_ids=table["clip_id"].tolist(), sources=sources)
     src = meta.set_index("clip_id").loc[table["source_clip"]]
     table["subject"] = src["subject"].astype(str).to_numpy()
     for col in ("style", "stride_length_cm", "speed_cm_s"):
@@ -221,16 +335,29 @@ def walk_cycles(
     return clips, table
 
 
+def source_of_cycle(clip_id: str, what: str = "walking cycles") -> str:
+    """The walk (source clip) of a cycle named "<source>_c<k>" (:func:`collect_cycles`)."""
+    head, sep, k = str(clip_id).rpartition("_c")
+    if not sep or not head or not k.isdigit():
+        raise ValueError(f"{what}: cycle id {clip_id!r} is not '<source clip>_c<k>'; give the source clips")
+    return head
+
+
 @dataclass
 class WalkCycles:
     """The walking cycles of a dataset (:func:`walk_cycles`) as the evaluations use them:
     the clips, each cycle's subject and the rig's joint map (``source`` names where they
-    came from, for error messages), with the joint groups and the root solver derived."""
+    came from, for error messages), with the joint groups (:func:`joint_groups`, the root
+    rotation in ``root_group``) and the root solver derived. ``source_clips`` names each
+    cycle's walk (the ``source_clip`` column of :func:`walk_cycles`' table); without it,
+    the walk is read from the cycle's clip id ("<source>_c<k>", :func:`collect_cycles`)."""
 
     clips: ClipSet
     subjects: list[str]
     joint_map: JointMap
     source: str = "walking cycles"
+    root_group: str = "legs"
+    source_clips: list[str] | None = None
     groups: dict = field(init=False, repr=False)  # joint group -> joint indices (Fig. 4)
     solver: RootSolver = field(init=False, repr=False)  # footskate cleanup on the clips' skeleton
 
@@ -238,7 +365,12 @@ class WalkCycles:
         self.subjects = [str(s) for s in self.subjects]
         if len(self.subjects) != self.clips.n_clips:
             raise ValueError(f"{self.source}: {len(self.subjects)} subjects for {self.clips.n_clips} cycles")
-        self.groups = self.joint_map.group_indices(self.clips.skeleton)
+        if self.source_clips is None:
+            self.source_clips = [source_of_cycle(c, self.source) for c in self.clips.clip_ids]
+        self.source_clips = [str(s) for s in self.source_clips]
+        if len(self.source_clips) != self.clips.n_clips:
+            raise ValueError(f"{self.source}: {len(self.source_clips)} source clips for {self.clips.n_clips} cycles")
+        self.groups = joint_groups(self.joint_map, self.clips.skeleton, self.root_group)
         self.solver = root_solver(self.clips.skeleton, self.joint_map)
 
     def fit_model(self, structure: str = "auto", variogram_model: str = "linear") -> StyleVariationModel:

@@ -57,31 +57,77 @@ def draw_fig3(result: EvaluationResult) -> Figure:
 
 
 def draw_fig6(result: EvaluationResult) -> Figure:
-    """Fig. 6: true vs synthesized strides per support phase (ours with the held-out xi,
-    ours with xi sampled, Kriging) and the stride error per held-out cycle."""
-    table = result.table
-    bound = result.figure["published_max_stride_error_cm"]
-    err = table["ours_stride_error_cm"].to_numpy()
-    fig, axes = plt.subplots(1, 3, figsize=(15, 4.6))
+    """Fig. 6: true vs synthesized strides per support phase (ours with the held-out
+    cycle's own xi, at the network's conditional mean and sampled; Kriging), closing cycles
+    (the last of each walk) ringed; the stride error per held-out cycle (ours, and the
+    ablation with the root rotation in the other group), closing cycles shaded; and the
+    largest error of every method on steady and on closing cycles."""
+    table, f = result.table, result.figure
+    folds = table[table["kind"] == "fold"].reset_index(drop=True)
+    summary = table[table["kind"] == "summary"].reset_index(drop=True)
+    bound, root, abl = f["published_max_stride_error_cm"], f["root_group"], f.get("ablation")
+    closing = folds["closing"].astype(bool).to_numpy()
+    fig, axes = plt.subplots(1, 4, figsize=(22, 5), gridspec_kw={"width_ratios": [1, 1, 1.5, 1.3]})
+    kinds = [("ours_own_xi", "ours, held-out cycle's own xi", "o", "tab:blue"),
+             ("ours_mean_xi", "ours, xi at the network's conditional mean", "s", "tab:purple"),
+             ("ours_sampled_xi", "ours, xi sampled from the network", "+", "tab:green"),
+             ("kriging", "Kriging, style only", "x", "tab:orange")]
     for ax, side in zip(axes[:2], ("left", "right")):
-        t, p = table[f"true_{side}_cm"], table[f"ours_{side}_cm"]
-        ax.scatter(t, p, s=14, color="tab:blue", label="ours (held-out clip's xi)")
-        ax.scatter(t, table[f"ours_sampled_xi_{side}_cm"], s=10, marker="+", color="tab:green",
-                   label="ours (xi sampled from the network)")
-        ax.scatter(t, table[f"kriging_{side}_cm"], s=10, marker="x", color="tab:orange", label="Kriging, style only")
-        lo, hi = min(t.min(), p.min()) - 2, max(t.max(), p.max()) + 2
+        t = folds[f"true_{side}_cm"].to_numpy()
+        for name, label, marker, colour in kinds:
+            ax.scatter(t, folds[f"{name}_{side}_cm"], s=14, marker=marker, color=colour, label=label)
+        ax.scatter(t[closing], folds.loc[closing, f"ours_own_xi_{side}_cm"], s=90, facecolors="none",
+                   edgecolors="k", lw=0.8, label="closing cycle (last of its walk)")
+        lo, hi = t.min() - 3, t.max() + 3
         ax.plot([lo, hi], [lo, hi], color="0.5", lw=1)
+        ax.set_xlim(lo, hi)
+        ax.set_ylim(lo, hi)
         ax.set_xlabel(f"true stride, {side} support (cm)")
         ax.set_ylabel("stride of the synthesized cycle (cm)")
-        ax.set_title(f"{side} support phase")
-        ax.legend(fontsize=8)
-    x = np.arange(len(table))
-    axes[2].bar(x, err, color="tab:blue", label="ours: max |error| of the two phases")
-    axes[2].axhline(bound, color="tab:red", ls="--", label=f"paper: max error {bound:g} cm")
-    axes[2].set_xlabel("held-out cycle")
-    axes[2].set_ylabel("stride error (cm)")
-    axes[2].set_title(f"LOO over {len(table)} cycles: max {err.max():.2f} cm, mean {err.mean():.2f} cm")
-    axes[2].legend(fontsize=8)
+        ax.set_title(f"{side} support phase (points beyond the frame not shown)", fontsize=9)
+        ax.legend(fontsize=7, loc="upper left")
+    x = np.arange(len(folds))
+    bars = [("ours_own_xi", f"ours, own xi, root in {root}", "tab:blue"),
+            ("ours_mean_xi", f"ours, conditional-mean xi, root in {root}", "tab:purple")]
+    if abl:
+        bars.append((f"ours_own_xi_{abl}", f"ours, own xi, root in {f['alt_root_group']} (ablation)", "tab:red"))
+    width = 0.8 / len(bars)
+    for k, (name, label, colour) in enumerate(bars):
+        axes[2].bar(x + (k - (len(bars) - 1) / 2) * width, folds[f"{name}_stride_error_cm"], width, color=colour,
+                    label=label)
+    for i in np.flatnonzero(closing):
+        axes[2].axvspan(i - 0.45, i + 0.45, color="0.88", zorder=0)
+    axes[2].axhline(bound, color="tab:red", ls="--", lw=1, label=f"paper: max error {bound:g} cm")
+    axes[2].set_xticks(x)
+    axes[2].set_xticklabels([f"{i + 1}{'c' if c else ''}" for i, c in enumerate(closing)], fontsize=6)
+    axes[2].set_xlabel("held-out cycle, in walk order (c, shaded: closing cycle)")
+    axes[2].set_ylabel("stride error: max |error| of the two phases (cm)")
+    err = folds["ours_own_xi_stride_error_cm"].to_numpy()
+    unit = "whole walk left out per fold" if f["loo_unit"] == "walk" else "one cycle left out per fold"
+    axes[2].set_title(f"{len(folds)} held-out cycles ({unit}): ours max {err.max():.2f} cm, mean {err.mean():.2f} cm",
+                      fontsize=9)
+    axes[2].legend(fontsize=7)
+    methods = list(dict.fromkeys(summary["method"]))
+    y = np.arange(len(methods))
+    for k, (cycles, colour) in enumerate([("steady", "tab:cyan"), ("closing", "0.45")]):
+        rows = summary[summary["cycles"] == cycles].set_index("method")
+        vals = [rows.loc[m, "max_stride_error_cm"] if m in rows.index else np.nan for m in methods]
+        axes[3].barh(y + (k - 0.5) * 0.4, vals, 0.4, color=colour, label=f"{cycles} cycles")
+        for yy, m, v in zip(y, methods, vals):
+            if m in rows.index and np.isfinite(v):
+                axes[3].text(v, yy + (k - 0.5) * 0.4, f" {int(rows.loc[m, 'n_within_bound'])}/{int(rows.loc[m, 'n'])}",
+                             va="center", fontsize=6)
+    axes[3].axvline(bound, color="tab:red", ls="--", lw=1)
+    style_only = {"kriging": "Kriging (style only)", "rbf": "RBF (style only)",
+                  "least_squares": "least squares (style only)"}
+    labels = {m: style_only.get(m, f"ours, {r['xi']} xi, root in {r['root_group']}")
+              for m, r in summary.drop_duplicates("method").set_index("method").iterrows()}
+    axes[3].set_yticks(y)
+    axes[3].set_yticklabels([labels[m] for m in methods], fontsize=7)
+    axes[3].invert_yaxis()
+    axes[3].set_xlabel("max stride error (cm); n within 1.2 cm / n")
+    axes[3].set_title("steady vs closing cycles, per method", fontsize=9)
+    axes[3].legend(fontsize=7, loc="lower right")
     fig.suptitle("Ma 2010 Fig. 6: stride of held-out walking cycles vs the synthesized ones (leave-one-out)")
     fig.tight_layout()
     return fig
@@ -136,34 +182,39 @@ def draw_overlay(ax: Axes, motions: Sequence[Motion], key_frames: Sequence[np.nd
 
 def draw_fig8(result: EvaluationResult) -> Figure:
     """Fig. 8a: the key frames of the variants overlaid, and the spread per joint group of
-    ours, the nearest examples, RBF and Kriging."""
+    ours, the ceiling (the nearest examples' own xi at the same style), the nearest
+    examples (also with each clip's mean posture removed), RBF and Kriging."""
     f = result.figure
     style, errors, spreads, groups = f["style"], f["errors"], f["spreads"], f["groups"]
-    fig, axes = plt.subplots(1, 2, figsize=(15, 5), gridspec_kw={"width_ratios": [2.2, 1]})
+    fig, axes = plt.subplots(1, 2, figsize=(16, 5), gridspec_kw={"width_ratios": [2.0, 1.2]})
     draw_overlay(axes[0], f["motions"], f["key_frames"], COLOURS)
+    ceiling = f.get("ceiling_errors")
+    extra = f"; ceiling (own xi) max {np.max(ceiling):.2f} cm" if ceiling is not None else ""
     axes[0].set_title(f"{len(f['motions'])} synthesized cycles at stride {style[0]:.1f} / {style[1]:.1f} cm (one "
-                      f"colour each); stride errors {', '.join(f'{e:.2f}' for e in errors)} cm", fontsize=9)
+                      f"colour each); stride errors {', '.join(f'{e:.2f}' for e in errors)} cm{extra}", fontsize=9)
     names = list(spreads)
     width = 0.8 / len(names)
     for i, name in enumerate(names):
-        axes[1].bar(np.arange(len(groups)) + i * width, [spreads[name][g] for g in groups], width, label=name)
+        axes[1].bar(np.arange(len(groups)) + i * width, [spreads[name][g] for g in groups], width, label=name,
+                    hatch="//" if "posture removed" in name else None, color=COLOURS[i % len(COLOURS)])
     axes[1].set_xticks(np.arange(len(groups)) + 0.4 - width / 2)
     axes[1].set_xticklabels(["legs (A)", "left arm (B)", "right arm (C)", "upper body (D)"], fontsize=8)
     axes[1].set_ylabel("SD across clips of joint positions (cm)")
-    axes[1].set_title("spread at one style, per joint group")
-    axes[1].legend(fontsize=8, loc="upper left")
-    axes[1].set_ylim(0, 1.3 * max(max(v.values()) for v in spreads.values()))
+    axes[1].set_title("spread at one style, per joint group (ceiling: the examples' own xi)", fontsize=9)
+    axes[1].legend(fontsize=7, loc="upper left")
+    axes[1].set_ylim(0, 1.45 * max(max(v.values()) for v in spreads.values()))
     fig.suptitle("Ma 2010 Fig. 8a: variation at a fixed style")
     fig.tight_layout()
     return fig
 
 
 def draw_sec7_4(result: EvaluationResult) -> Figure:
-    """Sec. 7.4: the four naturalness scores and the variation between sequences per
-    method (examples as reference; a diverged method drawn at the top, marked)."""
+    """Sec. 7.4: the naturalness scores and the variation between sequences per method
+    (examples as reference; a diverged method drawn at the top, marked)."""
     f = result.figure
     means = f["means"]
-    fig, axes = plt.subplots(1, 5, figsize=(18, 4.2))
+    n_panels = len(NATURALNESS_SCORES) + 1
+    fig, axes = plt.subplots(1, n_panels, figsize=(3.6 * n_panels, 4.2))
     colours = plt.get_cmap("tab10").colors
     shown = [*METHODS, "examples"]
     for ax, key in zip(axes, [*NATURALNESS_SCORES, "variation_between_sequences_cm"]):
@@ -200,4 +251,52 @@ def draw_sec8(result: EvaluationResult) -> Figure:
                  "real time", fontsize=9)
     ax.legend(fontsize=8)
     fig.tight_layout()
+    return fig
+
+
+
+def draw_variogram(result: EvaluationResult) -> Figure:
+    """Sec. 6 (variogram): per Kriging interpolator (four joint groups, style-only MK05) the
+    variogram cloud (same-walk pairs marked), the binned semivariogram over all pairs and
+    between walks, the fitted variogram and the other candidate models."""
+    table, f = result.table, result.figure
+    names = list(dict.fromkeys(table["group"]))
+    fig, axes = plt.subplots(1, len(names), figsize=(4.2 * len(names), 4.9), squeeze=False)
+    scaled = f["scale"] == "sd"
+    for ax, name in zip(axes[0], names):
+        cloud, fits = f["clouds"][name], f["fits"][name]
+        sw = cloud["same_walk"]
+        ax.scatter(cloud["lag"][~sw], cloud["gamma"][~sw], s=4, color="0.7", alpha=0.5, lw=0,
+                   label="one pair of cycles, different walks")
+        ax.scatter(cloud["lag"][sw], cloud["gamma"][sw], s=7, color="tab:orange", alpha=0.8, lw=0,
+                   label="one pair of cycles, same walk")
+        ax.axvline(cloud["max_lag"], color="0.5", ls=":", lw=1, label="cutoff of the fit (half the largest lag)")
+        rows = table[(table["group"] == name) & (table["series"] == "all pairs")]
+        ax.scatter(rows["lag"], rows["gamma"], s=12 + 50 * rows["pairs"] / max(rows["pairs"].max(), 1), color="k",
+                   zorder=3, label="binned, all pairs (size: pairs)")
+        between = table[(table["group"] == name) & (table["series"] == "between walks")]
+        ax.plot(between["lag"], between["gamma"], "s", mfc="none", mec="tab:blue", ms=5, zorder=3,
+                label="binned, pairs from different walks")
+        h = np.linspace(0.0, cloud["max_lag"], 300)[1:]
+        for m, ls in zip(("linear", "exponential", "gaussian", "spherical"), (":", "--", "-.", (0, (1, 3)))):
+            if m in fits["candidates"]:
+                ax.plot(h, fits["candidates"][m].curve(h), ls=ls, color="0.25", lw=0.9, label=f"{m} fit")
+        v = fits["chosen"]
+        ax.plot(h, v.curve(h), color="tab:red", lw=2.2, zorder=4, label="fitted variogram (used)")
+        if scaled:
+            ax.axhline(1.0, color="tab:green", lw=0.8, ls="--", label="semivariance of unrelated cycles (1)")
+        top = max(np.nanpercentile(cloud["gamma"], 98) if len(cloud["gamma"]) else 0.0, 1.3 * np.nanmax(rows["gamma"]))
+        ax.set_ylim(0, top)
+        ax.set_xlim(0, 1.2 * cloud["max_lag"])
+        d = v.describe()
+        shape = f"range {d['range']:.2g}" if np.isfinite(d["range"]) else f"slope {d['slope']:.2g}"
+        sill = d["partial_sill"] if np.isfinite(d["partial_sill"]) else 0.0
+        ax.set_title(f"{name}\n{d['model']}: nugget {d['nugget']:.2g}, partial sill {sill:.2g}, {shape}", fontsize=9)
+        ax.set_xlabel("lag: distance of standardized [c, xi] (MK05: c)", fontsize=8)
+    axes[0][0].set_ylabel("semivariance" + (" (in variances of each dimension)" if scaled else " (raw units)"))
+    handles, labels = axes[0][0].get_legend_handles_labels()
+    fig.legend(handles, labels, loc="lower center", ncol=5, fontsize=7, frameon=False)
+    fig.suptitle(f"Ma 2010 Sec. 6: semivariograms of the Kriging residuals, {f['n_clips']} cycles "
+                 f"(variogram {f['model']}, output scale {f['scale']})", fontsize=11)
+    fig.tight_layout(rect=(0, 0.1, 1, 1))
     return fig

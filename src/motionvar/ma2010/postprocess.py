@@ -8,6 +8,7 @@ the root position is set by :func:`reconstruct_root` at the end.
 from __future__ import annotations
 
 import numpy as np
+from scipy.signal import find_peaks
 
 from ..core.kinematics import fk
 from ..core.quaternions import qdistance_sinusoidal, qexp, qinv, qlog, qmul, qrot, quat_about_axis
@@ -20,12 +21,31 @@ def pose_distance(pose: np.ndarray, poses: np.ndarray) -> np.ndarray:
     return qdistance_sinusoidal(pose[None], poses).sum(axis=-1)
 
 
-def landing_frame(last_pose: np.ndarray, clip: np.ndarray) -> int:
-    """Landing frame t of a transition into ``clip`` (T, J, 4), 1-based (Sec. 6.3): the
-    frame that reaches the first local maximum of the pose distance to ``last_pose``,
-    the last frame of the preceding clip. At least 2; the clip's length if no maximum."""
+LANDING_RULES = ("significant_maximum", "first_maximum")
+#: Significant maximum: prominence of at least this fraction of the distance's range. Into a
+#: walking cycle the pose distance to the previous clip's last pose (the same phase) rises
+#: to the opposite phase and falls back: that maximum's prominence is ~the whole range; the
+#: wiggles that make the first local maximum 3-5 frames in are a few per cent of it.
+LANDING_PROMINENCE = 0.25
+
+
+def landing_frame(last_pose: np.ndarray, clip: np.ndarray, rule: str = "significant_maximum") -> int:
+    """Landing frame t of a transition into ``clip`` (T, J, 4), 1-based (Sec. 6.3), from
+    the pose distance to ``last_pose``, the last frame of the preceding clip.
+
+    ``rule`` "first_maximum": the paper's rule read literally, the frame that reaches the
+    first local maximum of the distance (it fires on wiggles a few frames into the clip,
+    and the displacement is then blended away within those frames). "significant_maximum":
+    the first local maximum whose prominence is at least :data:`LANDING_PROMINENCE` of the
+    distance's range over the clip. Either way at least 2, and the clip's length if no
+    maximum qualifies."""
+    if rule not in LANDING_RULES:
+        raise ValueError(f"landing_frame: rule must be one of {list(LANDING_RULES)}; got {rule!r}")
     d = pose_distance(last_pose, clip)
-    interior = np.flatnonzero((d[1:-1] >= d[:-2]) & (d[1:-1] > d[2:])) + 1
+    if rule == "first_maximum":
+        interior = np.flatnonzero((d[1:-1] >= d[:-2]) & (d[1:-1] > d[2:])) + 1
+    else:
+        interior, _ = find_peaks(d, prominence=LANDING_PROMINENCE * max(float(np.ptp(d)), 1e-12))
     t = int(interior[0]) + 1 if len(interior) else len(d)
     return max(t, 2)
 
@@ -50,16 +70,18 @@ def land(
     landing: int | None = None,
     align_heading: bool = True,
     forward: np.ndarray = np.array([1.0, 0.0, 0.0]),
+    landing_rule: str = "significant_maximum",
 ) -> tuple[np.ndarray, np.ndarray | None]:
     """M2 edited for a transition from a clip ending in ``last_pose`` (Eq. 14-15):
     {q_1..q_t, p^2_(t+1)..p^2_T} with q_i = p^2_i exp(rho_i log((p^2_1)^-1 p^1_T)) per
     joint, so that q_1 = p^1_T; per-frame channels ``second_extra`` get
-    q_i = p^2_i + rho_i (p^1_T - p^2_1). See :func:`transition`."""
+    q_i = p^2_i + rho_i (p^1_T - p^2_1). Landing frame: ``landing``, else
+    :func:`landing_frame` by ``landing_rule``. See :func:`transition`."""
     second = second.copy()
     if align_heading:
         yaw = heading_angle(last_pose[0], forward) - heading_angle(second[0, 0], forward)
         second[:, 0] = qmul(quat_about_axis([0.0, 1.0, 0.0], yaw), second[:, 0])
-    t = landing_frame(last_pose, second) if landing is None else int(np.clip(landing, 2, len(second)))
+    t = landing_frame(last_pose, second, landing_rule) if landing is None else int(np.clip(landing, 2, len(second)))
     rho = blend_weights(t)
     delta = qlog(qmul(qinv(second[0]), last_pose))  # (J, 3)
     second[:t] = qmul(second[:t], qexp(rho[:, None, None] * delta[None]))
@@ -78,6 +100,7 @@ def transition(
     landing: int | None = None,
     align_heading: bool = True,
     forward: np.ndarray = np.array([1.0, 0.0, 0.0]),
+    landing_rule: str = "significant_maximum",
 ) -> tuple[np.ndarray, np.ndarray | None]:
     """M = M1 (+) M2 (Eq. 14): {p^1_1..p^1_(T-1), q_1..q_t, p^2_(t+1)..p^2_T} with
     q_i = p^2_i + rho_i dp, dp = p^1_T - p^2_1. Only M2 is edited (:func:`land`).
@@ -92,15 +115,63 @@ def transition(
         first, second: (T1, J, 4) and (T2, J, 4) local rotations.
         first_extra, second_extra: optional per-frame channels (T, ...) displaced alike
             (e.g. the root height curve).
-        landing: landing frame t (1-based); default :func:`landing_frame`.
+        landing: landing frame t (1-based); default :func:`landing_frame` by ``landing_rule``.
         forward: the root's forward axis after space warping (+x).
     """
     last_extra = None if first_extra is None else first_extra[-1]
-    edited, extra = land(first[-1], second, last_extra, second_extra, landing, align_heading, forward)
+    edited, extra = land(first[-1], second, last_extra, second_extra, landing, align_heading, forward, landing_rule)
     rotations = np.concatenate([first[:-1], edited], axis=0)
     if extra is not None:
         extra = np.concatenate([first_extra[:-1], extra], axis=0)
     return rotations, extra
+
+
+def support_foot(foot_low: np.ndarray, min_frames: int = 0) -> np.ndarray:
+    """Index (T,) of the supporting foot from the feet's heights above their planted
+    heights ``foot_low`` (T, 2): the lower foot, with a minimum contact time.
+
+    The lower foot of each frame (argmin) changes in runs. With ``min_frames`` <= 1 these
+    are returned as they are (a foot supports in every frame it is lower: the literal
+    rule). Otherwise a run of the other foot shorter than ``min_frames`` frames does not
+    take the support (in double support both feet are down and the lower one flickers
+    every few frames): the support switches only to a foot that stays lower for at least
+    ``min_frames`` frames, and from the first frame of that run (the cleanup sees the whole
+    motion, so it need not wait for the run to end). Every support phase then lasts at
+    least ``min_frames`` frames, except when no run is that long: then the foot lower in
+    most frames supports throughout. Vectorised run-length logic, no loop over frames.
+    """
+    low = np.asarray(foot_low, dtype=float)
+    if low.ndim != 2 or low.shape[1] != 2:
+        raise ValueError(f"support_foot: foot_low must be (T, 2); got {low.shape}")
+    lower = np.argmin(low, axis=1)
+    if min_frames <= 1 or len(lower) == 0:
+        return lower
+    cuts = np.flatnonzero(np.diff(lower)) + 1
+    starts = np.concatenate([[0], cuts])
+    lengths = np.diff(np.concatenate([starts, [len(lower)]]))
+    long = lengths >= min_frames
+    if not long.any():
+        return np.full(len(lower), int(np.bincount(lower, minlength=2).argmax()))
+    owner = np.maximum.accumulate(np.where(long, np.arange(len(starts)), -1))  # last long run so far
+    owner[owner < 0] = int(np.argmax(long))  # short runs before the first long run join it
+    return np.repeat(lower[starts][owner], lengths)
+
+
+def foot_heights(
+    rotations: np.ndarray, skeleton: Skeleton, feet: np.ndarray, planted: np.ndarray
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The feet with the root at the origin: positions (T, 2, F, 3) of each foot's joints
+    ``feet`` (2, F), the index (T, 2) of each foot's lowest joint above its planted height
+    ``planted`` (2, F), and that height (T, 2), the foot's height."""
+    T = len(rotations)
+    feet = np.asarray(feet, dtype=np.int64).reshape(2, -1)
+    planted = np.asarray(planted, dtype=float).reshape(feet.shape)
+    local = fk(rotations, np.zeros((T, 3)), skeleton.offsets, skeleton.parents)  # root at the origin
+    p = local[:, feet]  # (T, 2, F, 3)
+    above = p[..., 1] - planted  # (T, 2, F): height above planted, root at height 0
+    joint = np.argmin(above, axis=2)  # lowest joint of each foot
+    foot_low = np.take_along_axis(above, joint[..., None], axis=2)[..., 0]  # (T, 2)
+    return p, joint, foot_low
 
 
 def reconstruct_root(
@@ -110,15 +181,20 @@ def reconstruct_root(
     planted: np.ndarray,
     root_height: np.ndarray | None = None,
     flight_threshold: float | None = None,
+    min_support_frames: int = 0,
 ) -> np.ndarray:
     """Footskate cleanup (Sec. 6.3): the root trajectory (T, 3) that keeps the lower foot
     planted ("fixing this foot on the ground and treating it as the root", [TLP07]).
 
     A foot's height is that of its lowest joint above the joint's planted height (ankle
     and toe: a foot rolling over its toes stands on the toe, a foot landing on its heel
-    on the ankle). In every frame the lower foot supports the body and its lowest joint is
-    pinned: horizontally the root moves opposite to that joint's motion relative to the
-    root, vertically the root sits so that the joint is at its planted height.
+    on the ankle). The supporting foot's lowest joint is pinned: horizontally the root
+    moves opposite to that joint's motion relative to the root, vertically the root sits
+    so that the joint is at its planted height. Which foot supports: with
+    ``min_support_frames`` <= 1 the lower foot of every frame (the paper's rule read
+    literally, "comparing the height of the two feet"); otherwise the lower foot with a
+    minimum contact time (:func:`support_foot`), so that the support does not flicker
+    between the feet while both are down in double support.
 
     Behaviours with flight phases (running): pass the predicted root height curve
     ``root_height`` (T,) and ``flight_threshold`` (cm). A frame is in flight when both
@@ -130,16 +206,11 @@ def reconstruct_root(
         rotations: (T, J, 4) local rotations.
         feet: (2, F) joint indices of the left and the right foot (e.g. ankle and toe).
         planted: (2, F) height (cm) of each of those joints when its foot is planted.
+        min_support_frames: minimum contact time of the support foot, in frames.
     """
     T = len(rotations)
-    feet = np.asarray(feet, dtype=np.int64).reshape(2, -1)
-    planted = np.asarray(planted, dtype=float).reshape(feet.shape)
-    local = fk(rotations, np.zeros((T, 3)), skeleton.offsets, skeleton.parents)  # root at the origin
-    p = local[:, feet]  # (T, 2, F, 3)
-    above = p[..., 1] - planted  # (T, 2, F): height above planted, root at height 0
-    joint = np.argmin(above, axis=2)  # lowest joint of each foot
-    foot_low = np.take_along_axis(above, joint[..., None], axis=2)[..., 0]  # (T, 2)
-    support = np.argmin(foot_low, axis=1)
+    p, joint, foot_low = foot_heights(rotations, skeleton, feet, planted)
+    support = support_foot(foot_low, min_support_frames)
     t = np.arange(T)
     pin = joint[t, support]
     now = p[t, support, pin]

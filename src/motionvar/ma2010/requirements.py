@@ -19,6 +19,8 @@ EVALUATIONS = {
                     1, 1),
     "ma2010_fig6": ("Fig. 6", "Leave-one-out: the synthesized cycle has the held-out clip's stride (within 1.2 cm); "
                               "Kriging beats RBF (MK05).", 2, 1),
+    "ma2010_variogram": ("Sec. 6 (variogram)", "Diagnostic, no claim: the semivariograms of the Kriging residuals per "
+                                               "joint group, with the fitted variograms.", 2, 1),
     "ma2010_fig7b": ("Fig. 7b", "Strides far outside the examples are synthesized less reliably.", 2, 1),
     "ma2010_fig8": ("Fig. 8a", "At a fixed style, variants differ as much as the examples do, at the same stride.",
                     2, 1),

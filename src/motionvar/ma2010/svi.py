@@ -87,7 +87,9 @@ class StyleVariationModel:
         structure: "auto" (Fig. 5 by D_l vs D_u: given to :meth:`fit`, else measured on
             its examples by :func:`structure_evidence`), "lower_first", "upper_first", or an
             explicit parent mapping.
-        variogram_model: see :mod:`.kriging` (default "linear").
+        variogram_model, variogram_scale: the variogram of each group's Kriging, see
+            :mod:`.kriging` (default "auto": chosen by fit; "sd": output dimensions
+            weighed by 1/variance; "linear", "none" is the earlier single model).
         flight: predict the root height curve (behaviours with flight phases, Sec. 6.3).
     """
 
@@ -95,13 +97,15 @@ class StyleVariationModel:
         self,
         groups: Mapping[str, np.ndarray],
         structure: str | Mapping[str, tuple[str, ...]] = "auto",
-        variogram_model: str = "linear",
+        variogram_model: str = "auto",
         flight: bool = False,
-        n_bins: int = 20,
+        n_bins: int | None = None,
+        variogram_scale: str = "sd",
     ):
         self.groups = {g: np.asarray(v, dtype=np.int64) for g, v in groups.items()}
         self.structure = structure
         self.variogram_model = variogram_model
+        self.variogram_scale = variogram_scale
         self.flight = flight
         self.n_bins = n_bins
 
@@ -146,7 +150,8 @@ class StyleVariationModel:
             lead = g == self.timing_group_
             codec = ClipCodec.fit(clips, joints, timing=lead, root_height=lead and self.flight)
             x = np.concatenate([clips.style, self.xi_[g][:, None]], axis=1)
-            krig = UniversalKriging(self.variogram_model, self.n_bins).fit(x, codec.encode(clips))
+            krig = UniversalKriging(self.variogram_model, self.n_bins, variogram_scale=self.variogram_scale)
+            krig = krig.fit(x, codec.encode(clips))
             self.interpolators_[g] = (codec, krig)
         return self
 

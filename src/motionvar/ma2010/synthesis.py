@@ -28,17 +28,32 @@ def rest_foot_heights(skeleton: Skeleton, joints: np.ndarray) -> np.ndarray:
     return pos[joints, 1] - min(points)
 
 
+#: Minimum contact time (s) of the support foot in footskate cleanup: one double-support
+#: phase, ~10 % of a ~1.0-1.1 s walking cycle (docs/gait.md: double support 2 x 10 %), the
+#: span within which both feet are down and the lower one may flicker. A support phase
+#: (single support plus one double support) lasts ~50 % of the cycle, a running stance
+#: 30-40 % of a ~0.7 s cycle (> 0.2 s): no real support is shorter.
+MIN_SUPPORT_S = 0.1
+
+
 @dataclass(frozen=True)
 class RootSolver:
     """How the root is recovered (Sec. 6.3): the joints of the left and the right foot
-    (2, F), their planted heights (2, F) and, for behaviours with flight phases, the
-    flight threshold (cm). ``left_foot`` / ``right_foot`` name the joint whose travel
-    measures a stride (the ankle)."""
+    (2, F), their planted heights (2, F), for behaviours with flight phases the flight
+    threshold (cm), and the support foot's minimum contact time ``min_support_s`` (s;
+    0 = the literal per-frame rule, the lower foot of every frame supports; see
+    :func:`.postprocess.support_foot`). ``left_foot`` / ``right_foot`` name the joint whose
+    travel measures a stride (the ankle)."""
 
     skeleton: Skeleton
     feet: np.ndarray
     planted: np.ndarray
     flight_threshold: float | None = None
+    min_support_s: float = MIN_SUPPORT_S
+
+    def __post_init__(self) -> None:
+        if not (np.isfinite(self.min_support_s) and self.min_support_s >= 0):
+            raise ValueError(f"RootSolver: min_support_s must be >= 0 s; got {self.min_support_s}")
 
     @property
     def left_foot(self) -> int:
@@ -52,7 +67,7 @@ class RootSolver:
         root = reconstruct_root(
             rotations, self.skeleton, self.feet, self.planted,
             root_height=root_height if self.flight_threshold is not None else None,
-            flight_threshold=self.flight_threshold,
+            flight_threshold=self.flight_threshold, min_support_frames=int(round(self.min_support_s * fps)),
         )
         return Motion(skeleton=self.skeleton, root_pos=root, rotations=rotations, fps=fps)
 
@@ -77,17 +92,21 @@ def realtime_clips(
     return list(zip(rots, heights))
 
 
-def stitch(clips: Sequence[tuple[np.ndarray, np.ndarray | None]], align_heading: bool = True) -> tuple[np.ndarray, np.ndarray | None]:
+def stitch(
+    clips: Sequence[tuple[np.ndarray, np.ndarray | None]], align_heading: bool = True, landing_rule: str = "significant_maximum"
+) -> tuple[np.ndarray, np.ndarray | None]:
     """Concatenate real-time clips with a displacement-mapped transition into each next
-    clip (Eq. 14-15); returns rotations (T, J, 4) and the root height curve or None.
-    Every clip is edited only at its start, so its last frame is the one the next clip
-    lands from; the pieces are joined once at the end."""
+    clip (Eq. 14-15, landing frame by ``landing_rule``, :func:`.postprocess.landing_frame`);
+    returns rotations (T, J, 4) and the root height curve or None. Every clip is edited
+    only at its start, so its last frame is the one the next clip lands from; the pieces
+    are joined once at the end."""
     if not clips:
         raise ValueError("stitch: no clips")
     pieces, extras = [clips[0][0]], [clips[0][1]]
     for nxt_rot, nxt_extra in clips[1:]:  # loop over clips
         last_extra = None if extras[-1] is None else extras[-1][-1]
-        rot, extra = land(pieces[-1][-1], nxt_rot, last_extra, nxt_extra, align_heading=align_heading)
+        rot, extra = land(pieces[-1][-1], nxt_rot, last_extra, nxt_extra, align_heading=align_heading,
+                          landing_rule=landing_rule)
         pieces[-1], extras[-1] = pieces[-1][:-1], None if extras[-1] is None else extras[-1][:-1]
         pieces.append(rot)
         extras.append(extra)
@@ -103,7 +122,9 @@ def sequence_motion(
     solver: RootSolver,
     fps: float,
     root_height: np.ndarray | None = None,
+    landing_rule: str = "significant_maximum",
 ) -> Motion:
-    """One motion from M predicted clips: retime, stitch, clean up footskate."""
-    rot, height = stitch(realtime_clips(rotations, key_times, reference_keys, fps, root_height))
+    """One motion from M predicted clips: retime, stitch (``landing_rule``: see
+    :func:`.postprocess.landing_frame`), clean up footskate."""
+    rot, height = stitch(realtime_clips(rotations, key_times, reference_keys, fps, root_height), landing_rule=landing_rule)
     return solver.motion(rot, fps, height)

@@ -9,9 +9,13 @@ synthesis by Levenberg-Marquardt and graph-walk generation.
 - :mod:`.constraints`: :class:`Constraint` (position, orientation, heading),
   :class:`Objective` (Eq. 4.2, counts evaluations), :func:`random_constraints` (Sec. 4.6.2).
 - :mod:`.trees`: :class:`SpacePartitioningTree` (k-means, GMM, median; beam search,
-  Sec. 4.4.2/4.5.2), :func:`brute_force`, :func:`random_search`,
-  :class:`KeyFramePositionIndex` (exact search on precomputed key-frame poses).
-- :mod:`.synthesis`: :func:`optimize_map` (Eq. 4.9 by Levenberg-Marquardt).
+  Sec. 4.4.2/4.5.2), :class:`MedianKDTree` (the median tree as DFKI's kd-tree: median-sample
+  nodes, greedy descent), :func:`select_beam` (beam from an evaluation budget),
+  :func:`brute_force`, :func:`random_search`, :class:`KeyFramePositionIndex` (exact search
+  on precomputed key-frame poses).
+- :mod:`.synthesis`: :func:`optimize_map` (Eq. 4.9 by Levenberg-Marquardt);
+  :class:`StepChain`, :class:`StepGoal` and :func:`optimize_chain` (several steps of a walk
+  optimised together, Algorithm 1 line 9).
 - :mod:`.morphable_graph`: :class:`MorphableGraph` (edges from the prep metadata),
   :func:`follow_path` and :func:`synthesize_step` (Algorithm 1).
 - :mod:`.evaluations`: one module per evaluation of Sec. 4.6 (Fig. 4.9 coverage, Fig. 4.10
@@ -24,14 +28,16 @@ from .morphable_graph import (
     MorphableGraph, Path2D, StepResult, WalkSettings, concatenate_steps, follow_path, place_motion, synthesize_step,
 )
 from .primitive import MotionPrimitive, PrimitiveOptions, primitive_clips, select_gmm
-from .synthesis import MapResult, optimize_map
+from .synthesis import ChainResult, MapResult, StepChain, StepGoal, optimize_chain, optimize_map
 from .trees import (
-    TREE_KINDS, KeyFramePositionIndex, SearchResult, SpacePartitioningTree, brute_force, random_search, tree_search,
+    TREE_KINDS, KeyFramePositionIndex, MedianKDTree, SearchResult, SpacePartitioningTree, brute_force, random_search,
+    select_beam, tree_search,
 )
 
 __all__ = [
-    "TREE_KINDS", "Constraint", "KeyFramePositionIndex", "MapResult", "MorphableGraph", "MotionPrimitive", "Objective",
-    "Path2D", "PrimitiveOptions", "SearchResult", "SpacePartitioningTree", "StepResult", "WalkSettings",
-    "brute_force", "concatenate_steps", "follow_path", "optimize_map", "place_motion", "primitive_clips",
-    "random_constraints", "random_search", "select_gmm", "synthesize_step", "tree_search",
+    "TREE_KINDS", "ChainResult", "Constraint", "KeyFramePositionIndex", "MapResult", "MedianKDTree", "MorphableGraph",
+    "MotionPrimitive", "Objective", "Path2D", "PrimitiveOptions", "SearchResult", "SpacePartitioningTree", "StepChain",
+    "StepGoal", "StepResult", "WalkSettings", "brute_force", "concatenate_steps", "follow_path", "optimize_chain",
+    "optimize_map", "place_motion", "primitive_clips", "random_constraints", "random_search", "select_beam",
+    "select_gmm", "synthesize_step", "tree_search",
 ]

@@ -13,8 +13,8 @@ from ...claims import EvaluationResult
 from ...plots import animate_motions, draw_pose, project
 from .evaluations.fig4_12 import CONSTRAINT_KINDS, METHODS
 
-METHOD_COLOURS = {"kmeans": "tab:blue", "gmm": "tab:orange", "median": "tab:green", "random": "tab:red",
-                  "brute_force": "0.5"}
+METHOD_COLOURS = {"kmeans": "tab:blue", "gmm": "tab:orange", "median": "tab:green", "median_means": "tab:olive",
+                  "random": "tab:red", "brute_force": "0.5"}
 UNITS = {"position": "cm", "orientation": "deg", "pose": "cm per joint"}
 AXIS = "xyz"
 
@@ -57,6 +57,10 @@ def draw_fig4_10(result: EvaluationResult) -> plt.Figure:
     pos = walk.positions()
     ax0.plot(path[:, 0], path[:, 1], color="0.6", linewidth=6, alpha=0.5, label="path constraint")
     ax0.plot(pos[:, hips, 0], pos[:, hips, 2], color="tab:blue", linewidth=1.5, label="hips of the generated walk")
+    for (name, v), style in zip(f.get("variants", {}).items(), ("--", ":")):
+        vp = v["walk"].positions()[:, hips]
+        ax0.plot(vp[:, 0], vp[:, 2], style, color="0.35", linewidth=1.0,
+                 label=f"hips, {name} walk ({v['mean_step_cm']:.1f} cm/step, max {v['max_deviation_cm']:.0f} cm off)")
     for (foot, j), colour in zip(f["feet"].items(), ("tab:cyan", "tab:red")):
         ax0.plot(pos[::4, j, 0], pos[::4, j, 2], ".", color=colour, markersize=2, label=foot.replace("_", " "))
     for st in steps:
@@ -66,7 +70,8 @@ def draw_fig4_10(result: EvaluationResult) -> plt.Figure:
     ax0.set_xlabel("x (cm)")
     ax0.set_ylabel("z (cm)")
     ax0.set_title(f"Path following: {len(steps)} primitives "
-                  f"({', '.join(s.primitive.replace('walk_', '') for s in steps[:3])}, ...)", fontsize=9)
+                  f"({', '.join(s.primitive.replace('walk_', '') for s in steps[:3])}, ...)"
+                  + (f"\n{f['mode']}" if f.get("mode") else ""), fontsize=8)
     ax0.legend(fontsize=7, loc="best")
     spacing = 90.0
     for k, (m, t) in enumerate(zip(f["reaches"], f["targets"])):
@@ -94,27 +99,44 @@ def animate_fig4_10(result: EvaluationResult, path: str, max_seconds: float = 8.
                     max_seconds=max_seconds, panel_px=panel_px)
 
 
+def _fig4_12_boxes(queries) -> list[tuple[str, object, str]]:
+    """(method, beam or None, label) of the boxes of one Fig. 4.12 panel: the k-means tree
+    at every beam measured (the verdict beam starred), then the other methods."""
+    out = []
+    km = queries[queries["method"] == "kmeans"]
+    beams = sorted(set(km["beam"])) if "beam" in km.columns else [None]
+    chosen = set(km.loc[km["selected"], "beam"]) if "selected" in km.columns else set()
+    for b in beams:
+        out.append(("kmeans", b, "k-means" if b is None else f"k-means\nb={b}{'*' if b in chosen else ''}"))
+    labels = {"median": "median\n(kd)", "median_means": "median\n(means)", "brute_force": "brute"}
+    out += [(m, None, labels.get(m, m)) for m in METHODS if m != "kmeans" and m in set(queries["method"])]
+    return out
+
+
 def draw_fig4_12(result: EvaluationResult) -> plt.Figure:
     """Fig. 4.12: box plots of the search errors per primitive (rows) and constraint kind
-    (columns), one box per method, with its mean objective evaluations."""
+    (columns), one box per method (the k-means tree at every beam measured; * marks the
+    beam of the verdicts), with its mean objective evaluations."""
     queries = result.figure["queries"]
     prims = list(dict.fromkeys(queries["primitive"]))
     kinds = [k for k in CONSTRAINT_KINDS if k in set(queries["kind"])]
-    fig, axes = plt.subplots(len(prims), len(kinds), figsize=(3.6 * len(kinds), 2.7 * len(prims)), squeeze=False)
+    fig, axes = plt.subplots(len(prims), len(kinds), figsize=(4.6 * len(kinds), 2.9 * len(prims)), squeeze=False)
     for i, p in enumerate(prims):
+        sub_p = queries[queries["primitive"] == p]
+        boxes = _fig4_12_boxes(sub_p)
         for j, k in enumerate(kinds):
             ax = axes[i, j]
-            sub = queries[(queries["primitive"] == p) & (queries["kind"] == k)]
-            data = [np.maximum(sub.loc[sub["method"] == m, "error"].to_numpy(), 1e-3) for m in METHODS]
+            sub = sub_p[sub_p["kind"] == k]
+            picked = [sub[(sub["method"] == m) & ((sub["beam"] == b) if b is not None else True)] for m, b, _ in boxes]
+            data = [np.maximum(x["error"].to_numpy(), 1e-3) for x in picked]
             bp = ax.boxplot(data, whis=(5, 95), showfliers=False, patch_artist=True,
                             medianprops=dict(color="black", linewidth=2))
-            for box, m in zip(bp["boxes"], METHODS):
+            for box, (m, _, _) in zip(bp["boxes"], boxes):
                 box.set_facecolor(METHOD_COLOURS[m])
                 box.set_alpha(0.6)
-            evals = [sub.loc[sub["method"] == m, "n_evals"].mean() for m in METHODS]
-            ax.set_xticks(range(1, len(METHODS) + 1))
-            ax.set_xticklabels([f"{m.replace('brute_force', 'brute')}\n{e:.0f} ev." for m, e in zip(METHODS, evals)],
-                               fontsize=7)
+            ax.set_xticks(range(1, len(boxes) + 1))
+            ax.set_xticklabels([f"{lab}\n{x['n_evals'].mean():.0f} ev." for (_, _, lab), x in zip(boxes, picked)],
+                               fontsize=6)
             ax.set_yscale("log")
             ax.yaxis.set_major_formatter(matplotlib.ticker.FormatStrFormatter("%g"))
             ax.yaxis.set_minor_locator(matplotlib.ticker.LogLocator(subs=(2.0, 5.0)))
@@ -123,10 +145,11 @@ def draw_fig4_12(result: EvaluationResult) -> plt.Figure:
             ax.grid(axis="y", alpha=0.3)
             ax.set_title(f"{p} - {k}", fontsize=9)
             ax.set_ylabel(f"error ({UNITS[k]})", fontsize=8)
-    n = int(queries.groupby(["primitive", "kind"]).size().iloc[0] / len(METHODS))
+    n = int(len(queries[(queries["method"] == "random")]) / max(1, len(prims) * len(kinds)))
     fig.suptitle(f"Search outcome over {queries['n_evals'].max():.0f} latent samples, {n} random constraints per "
-                 "panel (boxes: quartiles, whiskers 5-95 %, bar: median; ev. = mean objective evaluations)",
-                 fontsize=9)
+                 "panel (boxes: quartiles, whiskers 5-95 %, bar: median; ev. = mean objective evaluations)\n"
+                 "b = beam, * = beam of the verdicts (the largest under the evaluation budget); median (kd) = the "
+                 "median tree as DFKI's kd-tree (verdicts), median (means) = our variant", fontsize=8)
     fig.tight_layout()
     return fig
 

@@ -6,16 +6,26 @@ Edges come from the preprocessing metadata: consecutive primitives of the same s
 clip (ordered by ``start_frame``) are a transition (Fig. 4.6); a primitive that opens
 (closes) a clip is a start (end) node.
 
-Synthesis of one step (Sec. 4.5.2-4.5.3): the step's constraints select the best of the
-primitive's tree samples (beam search on Eq. 4.2), which seeds Levenberg-Marquardt on
-the MAP objective (Eq. 4.9). Path following (Sec. 4.5.1): each step's constraint is the
-floor position of the hips at the step's last frame, a median step length further along
-the path, and the heading along the path there; among the transitions of the current
-node the one whose mean motion fits the step constraint best is taken (look-ahead
-T = 1), and the walk ends with ``walk_end`` when the end of the path is within a step.
+Synthesis of one step (Sec. 4.5.2-4.5.3, Algorithm 1 lines 3-7): the step's constraints
+select the best of the primitive's tree samples (beam search on Eq. 4.2), which seeds
+Levenberg-Marquardt on the MAP objective (Eq. 4.9). Path following (Sec. 4.5.1): each
+step's constraint is the floor position of the hips at the step's last frame, a median
+step length further along the path, and the heading along the path there. The next
+primitive: the thesis "enumerate[s] all optional transitions from the current motion
+primitive looking at a fixed number of steps T ahead" with the mean motions and Eq. 4.2;
+:class:`WalkSettings` ``look_ahead`` is T (1: the best single transition). With T > 1 the
+step's latent vector is also optimised together with the T - 1 planned steps after it
+(tree seeds, :func:`~.synthesis.optimize_chain`) and only the step itself is kept (a
+receding horizon: the walk starts turning before a corner it cannot take in one step).
+The walk ends with ``walk_end`` when the end of the path is within a step.
+
+Algorithm 1, line 9 ("optimize all steps of current elementary action"): ``joint_steps``
+optimises the last N steps of the walk together (``"all"``: every step, the thesis; 4:
+DFKI's ``global_spatial_optimization_settings.max_steps``; 0: left out, the greedy walk),
+each step's path constraint evaluated on the chained placement (:class:`~.synthesis.StepChain`).
 Steps are concatenated by placing each primitive (aligned to start at the origin heading
-+x) at the previous step's end position and heading; the transitions are not blended
-and the final joint optimisation of all steps (Algorithm 1, line 9) is not done.
++x) at the previous step's end (hips floor position and facing at its last canonical
+frame, the frame its constraints are evaluated at); the transitions are not blended.
 """
 
 from __future__ import annotations
@@ -31,7 +41,7 @@ from ...core.motion import Motion
 from ...core.quaternions import qmul, qrot, quat_about_axis
 from .constraints import Constraint, Objective
 from .primitive import MotionPrimitive
-from .synthesis import MapResult, optimize_map
+from .synthesis import MapResult, StepChain, StepGoal, optimize_chain, optimize_map, step_end_local
 from .trees import SpacePartitioningTree
 
 _UP = np.array([0.0, 1.0, 0.0])
@@ -87,7 +97,11 @@ class MorphableGraph:
 
 @dataclass
 class StepResult:
-    """One synthesised primitive of a graph walk, in world coordinates."""
+    """One synthesised primitive of a graph walk, in world coordinates: its motion, its
+    constraints in its aligned frame, the optimisation (``fit``: errors of the tree seed
+    before and the final errors after; with line 9 or the look-ahead, after them) and the
+    tree search. Path steps also carry their world ``goal`` and ``step_errors``, the errors
+    after the step's own optimisation alone (the greedy walk, before line 9)."""
 
     primitive: str
     motion: Motion
@@ -95,6 +109,8 @@ class StepResult:
     fit: MapResult
     tree_error: float
     tree_evals: int
+    goal: StepGoal | None = None
+    step_errors: np.ndarray | None = None
 
 
 def synthesize_step(primitive: MotionPrimitive, tree: SpacePartitioningTree, constraints: Sequence[Constraint],
@@ -156,6 +172,13 @@ class Path2D:
         t = t / np.linalg.norm(t)
         return np.array([t[0], 0.0, t[1]])
 
+    def distance(self, xz: np.ndarray) -> np.ndarray:
+        """(N,) floor distance of points (N, 2) to the polyline."""
+        q = np.atleast_2d(np.asarray(xz, dtype=float))
+        a, ab = self.points[:-1], np.diff(self.points, axis=0)
+        u = np.clip(np.einsum("nsk,sk->ns", q[:, None] - a, ab) / np.einsum("sk,sk->s", ab, ab), 0.0, 1.0)
+        return np.linalg.norm(a + u[..., None] * ab - q[:, None], axis=-1).min(axis=1)
+
     def project(self, xz: np.ndarray) -> float:
         """Arc length of the path point nearest to ``xz``."""
         a, b = self.points[:-1], self.points[1:]
@@ -164,12 +187,6 @@ class Path2D:
         d = np.linalg.norm(a + u[:, None] * ab - xz, axis=1)
         i = int(np.argmin(d))
         return float(self.arc[i] + u[i] * np.linalg.norm(ab[i]))
-
-
-def _facing(positions: np.ndarray, left_hip: int, right_hip: int) -> np.ndarray:
-    f = np.cross(_UP, positions[right_hip] - positions[left_hip])
-    f[1] = 0.0
-    return f / np.linalg.norm(f)
 
 
 def step_length(primitive: MotionPrimitive, hips: int) -> float:
@@ -181,7 +198,14 @@ def step_length(primitive: MotionPrimitive, hips: int) -> float:
 
 @dataclass
 class WalkSettings:
-    """Path following: start/end primitives, step constraints, search and LM settings."""
+    """Path following: start/end primitives, step constraints, search and LM settings,
+    the look-ahead T (``look_ahead``) and Algorithm 1 line 9 (``joint_steps``: 0, N or
+    "all"); ``joint_method`` and ``joint_max_nfev`` are the least-squares method and the
+    residual evaluations of those joint optimisations of several steps. Their problem has
+    far more unknowns than residuals (two per step): MINPACK's Levenberg-Marquardt ("lm",
+    DFKI's ``leastsq``) then takes a Gauss-Newton step chosen by its pivoted QR, which
+    jumps with the last bits of the input (runs of the same config differed by up to 0.5 cm
+    per step); "trf" takes the regularised step and gives the same walk every run."""
 
     start: str = "walk_start"
     end: str = "walk_end"
@@ -191,6 +215,83 @@ class WalkSettings:
     likelihood_weight: float = 1.0
     method: str = "lm"
     max_nfev: int = 100
+    look_ahead: int = 1
+    joint_steps: int | str = 0
+    joint_method: str = "trf"
+    joint_max_nfev: int = 100
+
+    def __post_init__(self) -> None:
+        if int(self.look_ahead) < 1:
+            raise ValueError(f"graph.synthesis.look_ahead must be >= 1; got {self.look_ahead}")
+        js = self.joint_steps
+        if not (js == "all" or (isinstance(js, (int, np.integer)) and not isinstance(js, bool) and js >= 0)):
+            raise ValueError(f"graph.synthesis.joint_steps: 'all' or an integer >= 0; got {js!r}")
+        if self.joint_method not in ("lm", "trf"):
+            raise ValueError(f"graph.synthesis.joint_method must be 'lm' or 'trf'; got {self.joint_method!r}")
+
+
+class _Walker:
+    """State and helpers of one :func:`follow_path` run."""
+
+    def __init__(self, graph: MorphableGraph, trees: Mapping[str, SpacePartitioningTree], path: Path2D,
+                 joint_map: JointMap, st: WalkSettings) -> None:
+        self.graph, self.trees, self.path, self.st = graph, trees, path, st
+        self.usable = [n for n in (st.start, *st.cyclic, st.end) if n in graph.primitives and n in trees]
+        if not any(n in self.usable for n in st.cyclic):
+            raise ValueError(f"follow_path: none of the stepping primitives {st.cyclic} is modelled")
+        sk = next(iter(graph.primitives.values())).skeleton
+        self.joints = tuple(joint_map.index(sk, k) for k in ("hips", "left_hip", "right_hip"))
+        self.lengths = {n: step_length(graph.primitives[n], self.joints[0]) for n in self.usable}
+        self.cyclic_len = float(np.median([self.lengths[n] for n in st.cyclic if n in self.lengths]))
+        self.means = {n: (graph.primitives[n].gmm_.weights_[:, None] * graph.primitives[n].gmm_.means_).sum(axis=0)
+                      for n in self.usable}
+
+    def options(self, node: str | None, remaining: float) -> list[str]:
+        st = self.st
+        if node is None:
+            return [st.start] if st.start in self.usable else [n for n in st.cyclic if n in self.usable]
+        opts = [n for n in self.graph.successors(node) if n in self.usable]
+        if st.end in opts and remaining < 0.75 * self.cyclic_len:
+            return [st.end]
+        return [n for n in opts if n != st.end] or opts
+
+    def goals(self, names: Sequence[str], progress: float) -> list[StepGoal]:
+        """World goals of consecutive planned steps from arc length ``progress``."""
+        out, a = [], progress
+        for n in names:
+            a = self.path.length if n == self.st.end else a + self.lengths[n]
+            out.append(StepGoal(self.path.point(a), self.path.tangent(min(a, self.path.length - 1e-6))))
+        return out
+
+    def sequences(self, node: str | None, progress: float, depth: int) -> list[list[str]]:
+        """Every node sequence of up to ``depth`` steps from ``node`` (ending at the end node)."""
+        if depth == 0:
+            return [[]]
+        out = []
+        for n in self.options(node, self.path.length - progress):
+            if n == self.st.end or depth == 1:
+                out.append([n])
+                continue
+            rests = self.sequences(n, progress + self.lengths[n], depth - 1)
+            out += [[n] + rest for rest in rests] if rests else [[n]]  # a dead end: the step alone
+        return out
+
+    def plan(self, node: str | None, progress: float, pos: np.ndarray, heading: np.ndarray) -> list[str]:
+        """The best node sequence of up to T = ``look_ahead`` steps by the mean motions
+        (Sec. 4.5.1, Eq. 4.2 summed over the steps)."""
+        best = None
+        for seq in self.sequences(node, progress, int(self.st.look_ahead)):
+            chain = StepChain([self.graph.primitives[n] for n in seq], self.goals(seq, progress), pos, heading,
+                              *self.joints)
+            err = float(chain.errors(np.concatenate([self.means[n] for n in seq])[None]).sum())
+            if best is None or err < best[0]:
+                best = (err, seq)
+        return best[1]
+
+    def tree_seed(self, name: str, goal: StepGoal, pos: np.ndarray, heading: np.ndarray):
+        prim = self.graph.primitives[name]
+        cons = _goal_constraints(prim, goal, pos, heading, *self.joints)
+        return cons, self.trees[name].search(Objective(prim, cons), self.st.beam)
 
 
 def follow_path(graph: MorphableGraph, trees: Mapping[str, SpacePartitioningTree], path: Path2D,
@@ -198,63 +299,83 @@ def follow_path(graph: MorphableGraph, trees: Mapping[str, SpacePartitioningTree
     """Graph-walk generation for a floor path (Algorithm 1, one "walk" action; module
     docstring). Returns the steps in world coordinates."""
     st = settings or WalkSettings()
-    usable = [n for n in (st.start, *st.cyclic, st.end) if n in graph.primitives and n in trees]
-    if not any(n in usable for n in st.cyclic):
-        raise ValueError(f"follow_path: none of the stepping primitives {st.cyclic} is modelled")
-    sk = next(iter(graph.primitives.values())).skeleton
-    hips, lh, rh = (joint_map.index(sk, k) for k in ("hips", "left_hip", "right_hip"))
-    lengths = {n: step_length(graph.primitives[n], hips) for n in usable}
+    w = _Walker(graph, trees, path, joint_map, st)
     pos = path.points[0].copy()
     heading = path.tangent(0.0)
-    progress = 0.0
-    current: str | None = None
+    progress, current = 0.0, None
+    starts: list[tuple[np.ndarray, np.ndarray]] = []  # placement of each step's start
     steps: list[StepResult] = []
-    cyclic_len = float(np.median([lengths[n] for n in st.cyclic if n in lengths]))
     while len(steps) < st.max_steps:
-        if current is None:
-            options = [st.start] if st.start in usable else [n for n in st.cyclic if n in usable]
-        else:
-            options = [n for n in graph.successors(current) if n in usable]
-            remaining = path.length - progress
-            if st.end in options and remaining < 0.75 * cyclic_len:
-                options = [st.end]
-            else:
-                options = [n for n in options if n != st.end] or options
-        if not options:
+        if not w.options(current, path.length - progress):
             break
-        best = None
-        for name in options:  # look-ahead T = 1: the mean motion against the step constraint
-            prim = graph.primitives[name]
-            target_a = path.length if name == st.end else progress + lengths[name]
-            cons = _step_constraints(prim, path, target_a, pos, heading, hips, lh, rh, name == st.end)
-            mean = (prim.gmm_.weights_[:, None] * prim.gmm_.means_).sum(axis=0)
-            err = float(Objective(prim, cons)(mean[None])[0])
-            if best is None or err < best[0]:
-                best = (err, name, cons)
-        _, name, cons = best
-        prim = graph.primitives[name]
-        fit, tree_err, tree_evals = synthesize_step(prim, trees[name], cons, st.beam, st.likelihood_weight,
-                                                    st.method, st.max_nfev)
-        local = prim.to_motions(fit.latent[None])[0]
-        world = place_motion(local, pos, heading)
-        steps.append(StepResult(name, world, cons, fit, tree_err, tree_evals))
-        end_pos = world.positions()[-1]
-        pos = end_pos[hips][[0, 2]]
-        heading = _facing(end_pos, lh, rh)
+        plan = w.plan(current, progress, pos, heading)
+        name, prim = plan[0], graph.primitives[plan[0]]
+        goals = w.goals(plan, progress)
+        cons, found = w.tree_seed(name, goals[0], pos, heading)
+        fit = optimize_map(prim, cons, found.latent, st.likelihood_weight, st.method, st.max_nfev)
+        step_errors = fit.errors_after.copy()
+        if len(plan) > 1:  # look-ahead: optimise with the planned steps, keep the first
+            seeds, p_k, h_k = [fit.latent], pos, heading
+            for k in range(1, len(plan)):
+                p_k, h_k = _step_end(graph.primitives[plan[k - 1]], seeds[-1], p_k, h_k, w.joints)
+                seeds.append(w.tree_seed(plan[k], goals[k], p_k, h_k)[1].latent)
+            chain = StepChain([graph.primitives[n] for n in plan], goals, pos, heading, *w.joints)
+            joint = optimize_chain(chain, seeds, st.likelihood_weight, st.joint_method, st.joint_max_nfev)
+            fit = _with_latent(prim, cons, fit, joint.latents[0])
+        steps.append(StepResult(name, prim.to_motions(fit.latent[None])[0], cons, fit, found.error, found.n_evals,
+                                goals[0], step_errors))
+        starts.append((pos, heading))
+        pos, heading = _step_end(prim, fit.latent, pos, heading, w.joints)
         progress = max(progress, path.project(pos))
         current = name
         if name == st.end:
             break
-    return steps
+    n_joint = len(steps) if st.joint_steps == "all" else min(int(st.joint_steps), len(steps))
+    if n_joint > 0:  # Algorithm 1, line 9
+        first = len(steps) - n_joint
+        window = steps[first:]
+        p0, h0 = starts[first]
+        chain = StepChain([graph.primitives[s.primitive] for s in window], [s.goal for s in window], p0, h0,
+                          *w.joints)
+        joint = optimize_chain(chain, [s.fit.latent for s in window], st.likelihood_weight, st.joint_method,
+                               st.joint_max_nfev)
+        pos, heading = p0, h0
+        for k, (s, z) in enumerate(zip(window, joint.latents)):
+            prim = graph.primitives[s.primitive]
+            cons = _goal_constraints(prim, s.goal, pos, heading, *w.joints)
+            fit = _with_latent(prim, cons, s.fit, z)
+            steps[first + k] = replace(s, motion=prim.to_motions(z[None])[0], constraints=cons, fit=fit)
+            starts[first + k] = (pos, heading)
+            pos, heading = _step_end(prim, z, pos, heading, w.joints)
+    return [replace(s, motion=place_motion(s.motion, p, h)) for s, (p, h) in zip(steps, starts)]
 
 
-def _step_constraints(prim: MotionPrimitive, path: Path2D, arc: float, pos: np.ndarray, heading: np.ndarray,
-                      hips: int, lh: int, rh: int, final: bool) -> list[Constraint]:
-    """Hips floor position and heading at the step's last canonical frame, in the
-    step's aligned frame (Sec. 4.5.1)."""
+def _with_latent(prim: MotionPrimitive, cons: Sequence[Constraint], fit: MapResult, latent: np.ndarray) -> MapResult:
+    """``fit`` with a new final latent vector (errors_before kept: the tree seed's)."""
+    after = Objective(prim, cons).errors(latent[None])[0]
+    return replace(fit, latent=np.asarray(latent, dtype=float).copy(), errors_after=after,
+                   log_prob_after=float(prim.log_prob(latent[None])[0]))
+
+
+def _step_end(prim: MotionPrimitive, latent: np.ndarray, pos: np.ndarray, heading: np.ndarray,
+              joints: tuple[int, int, int]) -> tuple[np.ndarray, np.ndarray]:
+    """World floor position and heading (x, 0, z) where a step placed at ``pos`` with
+    ``heading`` ends (its last canonical frame): the next step's placement."""
+    loc, face = step_end_local(prim, np.asarray(latent)[None], *joints)
+    h = np.array([heading[0], heading[2]]) / np.hypot(heading[0], heading[2])
+    side = np.array([-h[1], h[0]])
+    end = pos + loc[0, 0] * h + loc[0, 1] * side
+    f = face[0, 0] * h + face[0, 1] * side
+    return end, np.array([f[0], 0.0, f[1]])
+
+
+def _goal_constraints(prim: MotionPrimitive, goal: StepGoal, pos: np.ndarray, heading: np.ndarray, hips: int,
+                      lh: int, rh: int) -> list[Constraint]:
+    """A world step goal as the hips floor position and heading constraints at the step's
+    last canonical frame, in the step's aligned frame (Sec. 4.5.1)."""
     last = prim.n_frames - 1
-    target = _to_local(path.point(arc), pos, heading)
-    tangent = _rotate_dir_to_local(path.tangent(min(arc, path.length - 1e-6)), heading)
+    target = _to_local(goal.target_xz, pos, heading)
+    tangent = _rotate_dir_to_local(goal.direction, heading)
     return [
         Constraint("position", last, (hips,), np.array([[target[0], 0.0, target[1]]]), mask=np.array([1.0, 0, 1.0])),
         Constraint("heading", last, (lh, rh), tangent),

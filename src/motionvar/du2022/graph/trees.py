@@ -10,12 +10,23 @@ the thesis) and a tree is built over it:
 - median tree: "splits the data according to the median of the dimension with the
   maximum variance" (two children).
 
-Inner nodes are represented by the mean latent vector of their samples; leaves hold the
-samples. Search (Sec. 4.5.2) descends level by level, evaluating the objective of
-Eq. 4.2 on the means of the children of the current candidates and keeping the best
-``beam`` of them (DFKI used 2; the n best are taken with ``heapq.nsmallest``, not
-``heap[:n]``, the known bug of DFKI's code); at leaves the samples themselves are
-evaluated. Evaluations are O(l k c) instead of O(N) (levels, children, candidates).
+:class:`SpacePartitioningTree` represents inner nodes by the mean latent vector of their
+samples; leaves hold the samples. Its search (Sec. 4.5.2) descends level by level,
+evaluating the objective of Eq. 4.2 on the means of the children of the current
+candidates and keeping the best ``beam`` of them (DFKI used 2; the n best are taken with
+``heapq.nsmallest``, not ``heap[:n]``, the known bug of DFKI's code); at leaves the
+samples themselves are evaluated. Evaluations are O(l k c) instead of O(N) (levels,
+children, candidates). With ``kind="median"`` this is *our* median-split tree (node means
+and the same beam as the k-means tree).
+
+:class:`MedianKDTree` is the median tree as DFKI built it for the comparison of Fig. 4.12
+(``space_partitioning/kdtree.py`` of the morphablegraphs code): a kd-tree whose every node
+*is* a sample, the median sample along the split dimension (the thesis' dimension of
+maximum variance; DFKI's code cycles the dimensions by depth, ``split="cyclic"``), and a
+greedy descent that evaluates both children of the current node and moves to the better
+one, returning the best sample evaluated on the way (about 2 log2 N evaluations).
+:func:`select_beam` picks the k-means tree's beam from an evaluation budget (the thesis'
+"less than 120 evaluations").
 
 References (Fig. 4.12): :func:`random_search` (the best of 100 fresh GMM samples) and
 :func:`brute_force` (all samples of the tree). :class:`KeyFramePositionIndex` is our
@@ -41,6 +52,7 @@ from .constraints import Constraint, Objective
 from .primitive import MotionPrimitive
 
 TREE_KINDS = ("kmeans", "gmm", "median")
+KD_SPLITS = ("max_variance", "cyclic")
 
 
 @dataclass
@@ -168,6 +180,86 @@ class SpacePartitioningTree:
             n_evals += len(kids)
             frontier = [int(kids[i]) for i in heapq.nsmallest(int(beam), range(len(kids)), key=err.__getitem__)]
         return SearchResult(best[1], self.samples[best[1]].copy(), best[0], n_evals)
+
+
+class MedianKDTree:
+    """The DFKI kd-tree over latent samples (module docstring): every node is the median
+    sample of its subset along the split dimension, the samples below it form the left
+    subtree, those above it the right one.
+
+    Args:
+        samples: (N, d) latent vectors.
+        split: ``max_variance`` (the thesis: "the median of the dimension with the maximum
+            variance", of the node's samples) or ``cyclic`` (DFKI's code: dimension depth mod d).
+
+    Attributes: ``point`` (node -> sample index), ``left`` / ``right`` (node -> child node,
+    -1 for none), ``axis`` (split dimension, -1 at leaves), ``depth``.
+    """
+
+    def __init__(self, samples: np.ndarray, split: str = "max_variance") -> None:
+        if split not in KD_SPLITS:
+            raise ValueError(f"kd-tree split must be one of {KD_SPLITS}; got {split!r}")
+        X = np.asarray(samples, dtype=float)
+        if X.ndim != 2 or len(X) < 1 or not np.all(np.isfinite(X)):
+            raise ValueError(f"tree samples must be a finite (N, d) array with N >= 1; got shape {X.shape}")
+        self.samples, self.split, self.kind = X, split, "median_kd"
+        n = len(X)
+        self.point = np.full(n, -1, dtype=np.int64)
+        self.left = np.full(n, -1, dtype=np.int64)
+        self.right = np.full(n, -1, dtype=np.int64)
+        self.axis = np.full(n, -1, dtype=np.int64)
+        node_depth = np.zeros(n, dtype=np.int64)
+        stack, n_nodes = [(np.arange(n), 0)], 1  # (samples of the node, node id); every node takes one sample
+        while stack:
+            idx, node = stack.pop()
+            if len(idx) == 1:
+                self.point[node] = idx[0]
+                continue
+            depth = node_depth[node]
+            ax = int(np.argmax(np.var(X[idx], axis=0))) if split == "max_variance" else int(depth % X.shape[1])
+            order = idx[np.argsort(X[idx, ax], kind="stable")]
+            m = len(order) // 2
+            self.point[node], self.axis[node] = order[m], ax
+            for side, part in ((self.left, order[:m]), (self.right, order[m + 1:])):
+                if len(part):
+                    side[node] = n_nodes
+                    node_depth[n_nodes] = depth + 1
+                    stack.append((part, n_nodes))
+                    n_nodes += 1
+        self.depth = int(node_depth.max())
+
+    @property
+    def n_nodes(self) -> int:
+        return len(self.point)
+
+    def search(self, objective: Callable[[np.ndarray], np.ndarray]) -> SearchResult:
+        """Greedy descent (DFKI's ``find_best_example``): evaluate the root's sample, then
+        at every node the samples of its children, moving to the child with the lower
+        objective (the right one on a tie, as DFKI); the best sample evaluated wins."""
+        node = 0
+        best_err = float(objective(self.samples[self.point[:1]])[0])
+        best, n_evals = int(self.point[0]), 1
+        while True:
+            kids = [int(c) for c in (self.left[node], self.right[node]) if c >= 0]
+            if not kids:
+                break
+            err = objective(self.samples[self.point[kids]])
+            n_evals += len(kids)
+            i = 0 if len(kids) == 1 or err[0] < err[1] else 1
+            node = kids[i]
+            if err[i] < best_err:
+                best_err, best = float(err[i]), int(self.point[node])
+        return SearchResult(best, self.samples[best].copy(), best_err, n_evals)
+
+
+def select_beam(mean_evals: dict[int, float], budget: float) -> tuple[int, bool]:
+    """The k-means tree's beam from an evaluation budget: the largest beam whose mean number
+    of evaluations per query is below ``budget`` (the thesis: "less than 120 evaluations").
+    Returns (beam, within budget); when no beam fits, the smallest one and False."""
+    if not mean_evals:
+        raise ValueError("select_beam: no beams measured")
+    fits = [b for b, e in mean_evals.items() if e < budget]
+    return (max(fits), True) if fits else (min(mean_evals), False)
 
 
 def brute_force(samples: np.ndarray, objective: Callable[[np.ndarray], np.ndarray],

@@ -57,7 +57,8 @@ def diversity_figure(table: pd.DataFrame, measures: Sequence[str] = ("pose_sd", 
     """Tables 5.2-5.3 as bars relative to the training data (so that our centimetres and
     the thesis' rig units compare): one panel per primitive and measure, measured and
     published bars per model. ``table`` has columns primitive, model, the measures and
-    ``published_<measure>``."""
+    ``published_<measure>``; where it has them, ``training_<measure>`` (each model's own
+    training data) and ``posterior_mean_<measure>`` are drawn as markers on the measured bars."""
     prims = list(dict.fromkeys(table["primitive"]))
     fig, axes = plt.subplots(len(prims), len(measures), figsize=(4.2 * len(measures), 3.0 * len(prims)), squeeze=False)
     for r, prim in enumerate(prims):
@@ -71,21 +72,30 @@ def diversity_figure(table: pd.DataFrame, measures: Sequence[str] = ("pose_sd", 
             pub = t.get(f"published_{m}")
             if pub is not None and pub.notna().all():
                 ax.bar(x + 0.2, pub / pub.loc["training data"], 0.4, label="published", color="#ff7f0e")
+            for col, marker, label in ((f"training_{m}", "_", "own training data"),
+                                       (f"posterior_mean_{m}", ".", "at the posterior means")):
+                if col in t and t[col].notna().any():
+                    ax.scatter(x - 0.2, t[col] / t.loc["training data", m], marker=marker, s=110, color="k",
+                               zorder=3, label=label)
             ax.axhline(1.0, color="0.4", lw=0.8, ls="--")
             ax.set_xticks(x, models, rotation=45, ha="right", fontsize=7)
             ax.set_title(f"{prim}: {m.replace('_sd', '_SD')} / training", fontsize=9)
             ax.tick_params(axis="y", labelsize=7)
             if r == 0 and c == 0:
-                fig.legend(*ax.get_legend_handles_labels(), loc="upper right", fontsize=8, ncol=2)
+                fig.legend(*ax.get_legend_handles_labels(), loc="upper right", fontsize=8, ncol=4)
     fig.tight_layout(rect=(0, 0, 1, 0.95))
     return fig
 
 
 def training_curves(histories: Mapping[str, pd.DataFrame], groups: Mapping[str, Sequence[str]]) -> Figure:
     """Loss per epoch (log scale), one panel per group of runs (e.g. autoencoder, VAEs,
-    CVAEs of a primitive)."""
-    fig, axes = plt.subplots(1, len(groups), figsize=(4.4 * len(groups), 3.4), squeeze=False)
-    for ax, (title, names) in zip(axes[0], groups.items()):
+    CVAEs of a primitive); when some histories have an ``active`` column (latent
+    dimensions in use, :func:`~.training.train_vae`), a second row of panels draws it."""
+    with_active = [any("active" in histories[n] for n in names) for names in groups.values()]
+    n_rows = 2 if any(with_active) else 1
+    fig, axes = plt.subplots(n_rows, len(groups), figsize=(4.4 * len(groups), 3.4 * n_rows), squeeze=False)
+    for c, (title, names) in enumerate(groups.items()):
+        ax = axes[0, c]
         for name in names:
             h = histories[name]
             ax.plot(h["epoch"], h["loss"], label=name, lw=1.2)
@@ -95,6 +105,20 @@ def training_curves(histories: Mapping[str, pd.DataFrame], groups: Mapping[str, 
         ax.set_title(title, fontsize=9)
         ax.tick_params(labelsize=7)
         ax.legend(fontsize=6)
+        if n_rows == 2:
+            ax = axes[1, c]
+            if not with_active[c]:
+                ax.set_axis_off()
+                continue
+            for name in names:
+                h = histories[name]
+                if "active" in h:
+                    ax.plot(h["epoch"], h["active"], label=name, lw=1.2, marker=".", ms=3)
+            ax.set_ylim(bottom=0)
+            ax.set_xlabel("epoch", fontsize=8)
+            ax.set_ylabel("latent dimensions in use", fontsize=8)
+            ax.set_title(f"{title}: active units", fontsize=9)
+            ax.tick_params(labelsize=7)
     fig.tight_layout()
     return fig
 

@@ -1,19 +1,29 @@
 """Losses and the style measure of Du 2022 Sec. 5.3-5.4.3.
 
 - :func:`vae_loss`: Eq. 5.6 = content (Eq. 5.7, L samples per input) + KL (Eq. 5.8).
-- :func:`gram`: Eq. 5.9, the Gram matrix of a feature map over its time axis. The thesis
-  says style frames "will be averaged by the calculation of gram matrix", so the sum over
-  frames is divided by their number (examples of any length compare).
+- :func:`gram`: Eq. 5.9, the Gram matrix of a feature map over its time axis, "the sum of
+  the inner product of features over the temporal axis": ``reduce="sum"`` as printed;
+  ``reduce="mean"`` divides the sum by the number of frames (the thesis also says style
+  frames "will be averaged by the calculation of gram matrix", Sec. 5.4.1). For two maps of
+  T frames the sum is T times the mean, so their Gram difference is T times larger (T' = 30
+  feature frames for the canonical 60-frame clips): under the Frobenius norm of Eq. 5.10 the
+  same alpha weighs the style term 30 times more with the sum than with the mean (900 times
+  under the mean squared distance).
 - :func:`gram_distance`: the distance of Eq. 5.12, which the thesis describes as "the mean
   squared distance": the mean over the 256 x 256 entries of the squared difference.
 - :func:`gram_distance_maps`: the same distance computed from the feature maps without
   forming the K x K Gram matrices (exact algebra, ~10x less work for K = 256 kernels and
-  T = 30 frames: ||A A'/T - B B'/S||^2 = ||A'A||^2/T^2 - 2 ||A'B||^2/(T S) + ||B'B||^2/S^2).
+  T = 30 frames: ||A A'/T - B B'/S||^2 = ||A'A||^2/T^2 - 2 ||A'B||^2/(T S) + ||B'B||^2/S^2,
+  without the divisions for the summed Gram matrix).
 - :func:`style_loss`: Eq. 5.10, alpha ||Gram(decoder(z)) - Gram(y_s)||: by default the
-  Frobenius norm as printed (``norm="frobenius"``); ``norm="mean_squared"`` uses Eq. 5.12's
-  mean squared distance instead. The choice sets the balance against the content term
-  (Eq. 5.7, a sum over 7,680 features) for a given alpha: with 256 x 256 entries the
-  Frobenius norm is 256 times the root of the mean squared distance.
+  Frobenius norm as printed (``norm="frobenius"``) of the summed Gram matrices
+  (``gram_reduce="sum"``); ``norm="mean_squared"`` uses Eq. 5.12's mean squared distance instead.
+  The choices set the balance against the content term (Eq. 5.7, a sum over 7,680
+  features) for a given alpha: with 256 x 256 entries the Frobenius norm is 256 times the
+  root of the mean squared distance.
+- :func:`style_distance`: Eq. 5.12 (Table 5.1), by default on frame-averaged Gram matrices:
+  the thesis' neutral-to-neutral distance (0.0149) has the scale of the average (ours
+  0.0135); the sum multiplies every entry of Table 5.1 by 30^2 = 900 (same pattern).
 """
 
 from __future__ import annotations
@@ -37,9 +47,20 @@ def vae_loss(recon: torch.Tensor, y: torch.Tensor, mu: torch.Tensor, logvar: tor
     return content_loss(recon, y), kl_loss(mu, logvar)
 
 
-def gram(features: torch.Tensor) -> torch.Tensor:
-    """Eq. 5.9: (..., K, T) feature maps -> (..., K, K) Gram matrices, sum_i y_i y_i^T / T."""
-    return features @ features.transpose(-1, -2) / features.shape[-1]
+GRAM_REDUCTIONS = ("sum", "mean")
+
+
+def _check_reduce(reduce: str) -> None:
+    if reduce not in GRAM_REDUCTIONS:
+        raise ValueError(f"gram: reduce must be one of {GRAM_REDUCTIONS}; got {reduce!r}")
+
+
+def gram(features: torch.Tensor, reduce: str = "sum") -> torch.Tensor:
+    """Eq. 5.9: (..., K, T) feature maps -> (..., K, K) Gram matrices sum_i y_i y_i^T over the
+    T frames (``reduce="sum"``, as printed), or that sum / T (``reduce="mean"``)."""
+    _check_reduce(reduce)
+    g = features @ features.transpose(-1, -2)
+    return g / features.shape[-1] if reduce == "mean" else g
 
 
 def gram_distance(g: torch.Tensor, g_ref: torch.Tensor) -> torch.Tensor:
@@ -47,24 +68,29 @@ def gram_distance(g: torch.Tensor, g_ref: torch.Tensor) -> torch.Tensor:
     return ((g - g_ref) ** 2).mean(dim=(-2, -1))
 
 
-def gram_distance_maps(maps: torch.Tensor, ref_maps: torch.Tensor) -> torch.Tensor:
-    """(...) ``gram_distance(gram(maps), gram(ref_maps))`` for maps (..., K, T) and
-    ref_maps (K, S), through T x T and T x S products instead of K x K ones."""
+def gram_distance_maps(maps: torch.Tensor, ref_maps: torch.Tensor, reduce: str = "sum") -> torch.Tensor:
+    """(...) ``gram_distance(gram(maps, reduce), gram(ref_maps, reduce))`` for maps
+    (..., K, T) and ref_maps (K, S), through T x T and T x S products instead of K x K ones."""
+    _check_reduce(reduce)
     K, T, S = maps.shape[-2], maps.shape[-1], ref_maps.shape[-1]
+    wt, ws = (1.0 / T, 1.0 / S) if reduce == "mean" else (1.0, 1.0)
     mt = maps.transpose(-1, -2)
-    own = (mt @ maps).pow(2).sum(dim=(-2, -1)) / T**2
-    cross = (mt @ ref_maps).pow(2).sum(dim=(-2, -1)) / (T * S)
-    ref = (ref_maps.transpose(-1, -2) @ ref_maps).pow(2).sum() / S**2
+    own = (mt @ maps).pow(2).sum(dim=(-2, -1)) * wt**2
+    cross = (mt @ ref_maps).pow(2).sum(dim=(-2, -1)) * (wt * ws)
+    ref = (ref_maps.transpose(-1, -2) @ ref_maps).pow(2).sum() * ws**2
     return torch.clamp(own - 2.0 * cross + ref, min=0.0) / K**2
 
 
 STYLE_NORMS = ("frobenius", "mean_squared")
 
 
-def style_loss(recon_maps: torch.Tensor, style_maps: torch.Tensor, alpha: float, norm: str = "frobenius") -> torch.Tensor:
+def style_loss(
+    recon_maps: torch.Tensor, style_maps: torch.Tensor, alpha: float, norm: str = "frobenius", gram_reduce: str = "sum",
+) -> torch.Tensor:
     """Eq. 5.10: alpha ||Gram(decoder(z)) - Gram(y_s)||, averaged over samples;
-    recon_maps (..., K, T) decoded feature maps, style_maps (K, S) the encoded style example."""
-    msd = gram_distance_maps(recon_maps, style_maps)
+    recon_maps (..., K, T) decoded feature maps, style_maps (K, S) the encoded style example,
+    ``gram_reduce`` the reduction of Eq. 5.9 (:func:`gram`)."""
+    msd = gram_distance_maps(recon_maps, style_maps, gram_reduce)
     if norm == "frobenius":
         K = recon_maps.shape[-2]
         return alpha * (K * torch.sqrt(msd + 1e-12)).mean()
@@ -73,8 +99,8 @@ def style_loss(recon_maps: torch.Tensor, style_maps: torch.Tensor, alpha: float,
     raise ValueError(f"style_loss: norm must be one of {STYLE_NORMS}; got {norm!r}")
 
 
-def style_distance(sample_maps: torch.Tensor, style_maps: torch.Tensor) -> torch.Tensor:
+def style_distance(sample_maps: torch.Tensor, style_maps: torch.Tensor, gram_reduce: str = "mean") -> torch.Tensor:
     """Eq. 5.12: D(m, s) = 1/N sum_i ||Gram(encoder(x_i)) - Gram(encoder(s))||, with
     sample_maps (N, K, T) the encoded samples x_i of model m and style_maps (K, T') the
-    encoded style example s."""
-    return gram_distance_maps(sample_maps, style_maps).mean()
+    encoded style example s; frame-averaged Gram matrices by default (the thesis' scale)."""
+    return gram_distance_maps(sample_maps, style_maps, gram_reduce).mean()

@@ -9,7 +9,12 @@
 
 The thesis trains with "stochastic gradient descent" at learning rates 1e-4 (autoencoder,
 300 epochs) and 1e-5 (VAE/CVAE, 1000 epochs) and names no optimiser or batch size; we use
-Adam with the epochs, learning rate and batch size given by the caller (the config).
+the optimiser (Adam by default, or plain minibatch SGD), epochs, learning rate and batch
+size given by the caller (the config). A CVAE's regime decides whether its posterior
+collapses: its Frobenius style term (Eq. 5.10) starts one to two orders of magnitude above
+the content term, and Adam at lr 1e-3 (10 epochs from the neutral VAE) left 0 of 32 latent
+dimensions in use where lr 1e-4 keeps most of them (see the report caption of Tables
+5.2-5.3).
 Every run draws its shuffles and noise from one ``torch.Generator`` seeded by ``seed``,
 so the same inputs give the same weights. Histories are DataFrames, one row per epoch.
 
@@ -35,25 +40,41 @@ import torch
 from ...io.dataset import MotionDataset
 from .data import example_features, primitive_features, select_style_example, training_windows
 from .features import FeatureLayout, FeatureScaler
-from .losses import STYLE_NORMS, content_loss, kl_loss, style_loss
-from .model import FeatureSpace
+from .losses import GRAM_REDUCTIONS, STYLE_NORMS, content_loss, kl_loss, style_loss
+from .model import FeatureSpace, active_units
 from .networks import ConvAutoencoder, MotionVAE
 
 log = logging.getLogger(__name__)
 
+OPTIMIZERS = ("adam", "sgd")
+
 
 @dataclass(frozen=True)
 class TrainConfig:
-    """Epochs, learning rate (Adam), minibatch size and the seed of one training run."""
+    """Epochs, learning rate, minibatch size, the seed and the optimiser (``"adam"`` or
+    ``"sgd"``, plain minibatch gradient descent as the thesis names) of one training run."""
 
     epochs: int
     lr: float
     batch_size: int
     seed: int = 0
+    optimizer: str = "adam"
 
     def __post_init__(self) -> None:
         if self.epochs < 1 or self.batch_size < 1 or not self.lr > 0:
             raise ValueError(f"TrainConfig: epochs and batch_size must be >= 1 and lr > 0; got {self}")
+        if self.optimizer not in OPTIMIZERS:
+            raise ValueError(f"TrainConfig: optimizer must be one of {OPTIMIZERS}; got {self.optimizer!r}")
+
+    def describe(self) -> str:
+        """E.g. "adam lr 0.0001, 10 epochs, batch 32"."""
+        return f"{self.optimizer} lr {self.lr:g}, {self.epochs} epochs, batch {self.batch_size}"
+
+    def make_optimizer(self, params) -> torch.optim.Optimizer:
+        """The configured optimiser over ``params``."""
+        if self.optimizer == "sgd":
+            return torch.optim.SGD(params, lr=self.lr)
+        return torch.optim.Adam(params, lr=self.lr)
 
 
 def _batches(n: int, batch_size: int, gen: torch.Generator) -> list[torch.Tensor]:
@@ -72,7 +93,7 @@ def train_autoencoder(
     gen = torch.Generator().manual_seed(cfg.seed)
     x = torch.as_tensor(windows, dtype=torch.float32).permute(0, 2, 1).contiguous()
     model = ConvAutoencoder(x.shape[1], n_kernels=n_kernels, kernel_width=kernel_width, decoder_order=decoder_order)
-    opt = torch.optim.Adam(model.parameters(), lr=cfg.lr)
+    opt = cfg.make_optimizer(model.parameters())
     rows, t0 = [], time.perf_counter()
     for epoch in range(1, cfg.epochs + 1):
         total = 0.0
@@ -98,13 +119,16 @@ def train_vae(
     init: MotionVAE | None = None,
     hidden: tuple[int, ...] = (512, 256, 128),
     latent: int = 32,
+    gram_reduce: str = "sum",
 ) -> tuple[MotionVAE, pd.DataFrame]:
     """Train a primitive's VAE on its clips' feature maps (N, K, T') (Eq. 5.6, L =
     ``n_samples`` draws of z per input, Eq. 5.7); with ``style_maps`` (K, T_s), the
-    encoded style example, a CVAE with the loss of Eq. 5.11, style weight ``alpha`` and the
-    norm ``style_norm`` of Eq. 5.10 (:func:`~.losses.style_loss`).
+    encoded style example, a CVAE with the loss of Eq. 5.11, style weight ``alpha``, the
+    norm ``style_norm`` of Eq. 5.10 and the Gram matrices of Eq. 5.9 summed or averaged
+    over frames (``gram_reduce``, :func:`~.losses.style_loss`).
     ``init`` copies a trained VAE's weights first. History columns: epoch, loss, content,
-    kl, style, seconds (per-epoch means over the inputs)."""
+    kl, style, seconds (per-epoch means over the inputs) and active (latent dimensions in
+    use on the inputs at the end of the epoch, :func:`~.model.active_units`)."""
     maps = torch.as_tensor(maps, dtype=torch.float32)
     if maps.ndim != 3 or len(maps) == 0:
         raise ValueError(f"train_vae: maps must be a non-empty (N, K, T) array; got {tuple(maps.shape)}")
@@ -121,11 +145,13 @@ def train_vae(
         model.load_state_dict(init.state_dict())
     if style_norm not in STYLE_NORMS:
         raise ValueError(f"train_vae: style_norm must be one of {STYLE_NORMS}; got {style_norm!r}")
+    if gram_reduce not in GRAM_REDUCTIONS:
+        raise ValueError(f"train_vae: gram_reduce must be one of {GRAM_REDUCTIONS}; got {gram_reduce!r}")
     if style_maps is not None:
         style_maps = torch.as_tensor(style_maps, dtype=torch.float32)
         if style_maps.ndim != 2 or style_maps.shape[0] != K:
             raise ValueError(f"train_vae: style_maps must be ({K}, T_s); got {tuple(style_maps.shape)}")
-    opt = torch.optim.Adam(model.parameters(), lr=cfg.lr)
+    opt = cfg.make_optimizer(model.parameters())
     rows, t0 = [], time.perf_counter()
     for epoch in range(1, cfg.epochs + 1):
         sums = np.zeros(4)
@@ -135,16 +161,18 @@ def train_vae(
             eps = torch.randn((n_samples, len(idx), model.latent), generator=gen)
             recon = model.decode(model.reparameterize(mu, logvar, eps))
             c, k = content_loss(recon, yb), kl_loss(mu, logvar)
-            s = style_loss(recon.reshape(n_samples, len(idx), K, Tf), style_maps, alpha, style_norm) if style_maps is not None else torch.zeros(())
+            s = (style_loss(recon.reshape(n_samples, len(idx), K, Tf), style_maps, alpha, style_norm, gram_reduce)
+                 if style_maps is not None else torch.zeros(()))
             loss = c + k + s
             opt.zero_grad()
             loss.backward()
             opt.step()
             sums += len(idx) * np.array([float(v.detach()) for v in (loss, c, k, s)])
         sums /= N
+        seconds = time.perf_counter() - t0
         rows.append({
             "epoch": epoch, "loss": sums[0], "content": sums[1], "kl": sums[2], "style": sums[3],
-            "seconds": time.perf_counter() - t0,
+            "seconds": seconds, "active": active_units(model, y),
         })
     model.eval()
     return model, pd.DataFrame(rows)
@@ -204,8 +232,11 @@ def fit_primitive_vae(
     maps = space.encode(feats)
     log.info("%s: %d neutral clips, feature maps %s", primitive, len(rows), tuple(maps.shape))
     vae, history = train_vae(maps, cfg, n_samples=n_samples, hidden=hidden, latent=latent)
-    log.info("trained in %.1f s; final loss %.4g", history["seconds"].iloc[-1], history["loss"].iloc[-1])
-    info = {"primitive": primitive, "style": "neutral", "n_clips": len(rows)}
+    log.info("trained in %.1f s; final loss %.4g (content %.4g, KL %.4g); %d of %d latent dimensions active",
+             history["seconds"].iloc[-1], history["loss"].iloc[-1], history["content"].iloc[-1],
+             history["kl"].iloc[-1], history["active"].iloc[-1], latent)
+    info = {"primitive": primitive, "style": "neutral", "n_clips": len(rows),
+            "active_units": int(history["active"].iloc[-1]), "regime": f"{cfg.describe()}, L = {n_samples}"}
     return vae, tuple(maps.shape[1:]), info, history
 
 
@@ -224,9 +255,11 @@ def fit_style_cvae(
     init_from_neutral: bool = True,
     latent: int = 32,
     hidden: tuple[int, ...] = (512, 256, 128),
+    gram_reduce: str = "sum",
 ) -> tuple[MotionVAE, tuple[int, int], dict, pd.DataFrame]:
     """The CVAE of ``primitive`` and ``style`` (Sec. 5.3.3, loss Eq. 5.11 with the Gram
-    style term Eq. 5.10 weighted ``alpha``): content the neutral clips, style example the
+    style term Eq. 5.10 weighted ``alpha``, Gram matrices summed or averaged over frames by
+    ``gram_reduce``): content the neutral clips, style example the
     straightest forward clip of the style (:func:`~.data.select_style_example`); starts
     from the ``neutral`` VAE's weights when ``init_from_neutral``. Returns (CVAE,
     feature-map shape, info with the example's clip id, history)."""
@@ -237,9 +270,17 @@ def fit_style_cvae(
     log.info("%s/%s: %d neutral clips, style example %s", primitive, style, len(rows), example_id)
     cvae, history = train_vae(
         maps, cfg, n_samples=n_samples, style_maps=example, alpha=alpha, style_norm=style_norm,
-        init=neutral if init_from_neutral else None, hidden=hidden, latent=latent,
+        init=neutral if init_from_neutral else None, hidden=hidden, latent=latent, gram_reduce=gram_reduce,
     )
-    log.info("trained in %.1f s; final loss %.4g (style %.4g)", history["seconds"].iloc[-1],
-             history["loss"].iloc[-1], history["style"].iloc[-1])
-    info = {"primitive": primitive, "style": style, "example": example_id, "n_clips": len(rows)}
+    first = history.iloc[0]
+    log.info("epoch 1: content %.4g, KL %.4g, style %.4g; %d active latent dimensions", first["content"],
+             first["kl"], first["style"], first["active"])
+    log.info("trained in %.1f s (%s, lr %g, %d epochs); final loss %.4g (content %.4g, KL %.4g, style %.4g); "
+             "%d of %d latent dimensions active", history["seconds"].iloc[-1], cfg.optimizer, cfg.lr, cfg.epochs,
+             history["loss"].iloc[-1], history["content"].iloc[-1], history["kl"].iloc[-1],
+             history["style"].iloc[-1], history["active"].iloc[-1], latent)
+    info = {"primitive": primitive, "style": style, "example": example_id, "n_clips": len(rows),
+            "active_units": int(history["active"].iloc[-1]),
+            "regime": f"{cfg.describe()}; alpha {alpha:g}, {style_norm.replace('_', ' ')} norm, Gram {gram_reduce} "
+                      f"over frames" + (", from the neutral VAE" if init_from_neutral else "")}
     return cvae, tuple(maps.shape[1:]), info, history

@@ -1,13 +1,15 @@
 """What the Ma et al. 2010 evaluations share: the paper key, the protocol every claim
 notes, the published stride bound of Fig. 6, and the measures used by several of them
-(strides of predicted clips, pose error, spread per joint group, nearest examples).
+(strides of predicted clips, pose error, spread per joint group, nearest examples), and the
+leave-one-out folds (whole walks or single cycles) with each cycle's place in its walk.
 """
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 
 import numpy as np
+import pandas as pd
 
 from ...core.kinematics import fk
 from ..correspondence import retime
@@ -81,3 +83,53 @@ def nearest_clips(clips: ClipSet, style: np.ndarray, n: int, distinct_subjects: 
         if len(picked) == n:
             break
     return np.array(picked)
+
+
+LOO_UNITS = ("walk", "cycle")  # what a leave-one-out fold holds out (config ma2010.loo_unit)
+
+
+def walk_positions(source_clips: Sequence[str]) -> tuple[np.ndarray, np.ndarray]:
+    """Each cycle's place in its walk: (N,) position (0 = the walk's first cycle, in the
+    order the cycles are listed, which is their order in the walk) and (N,) ``closing``,
+    True for the last cycle of each walk (the slow-down into the closing step), False for
+    the steady cycles before it."""
+    s = pd.Series([str(x) for x in source_clips])
+    position = s.groupby(s, sort=False).cumcount().to_numpy()
+    closing = (s.groupby(s, sort=False).cumcount(ascending=False) == 0).to_numpy()
+    return position, closing
+
+
+def loo_folds(
+    source_clips: Sequence[str] | None, held_out: Sequence[int], unit: str = "walk", n_clips: int | None = None
+) -> list[tuple[np.ndarray, np.ndarray]]:
+    """Leave-one-out folds: a list of (training cycle indices, held-out cycle indices).
+
+    ``unit`` "walk": a fold leaves out every cycle of one walk (``source_clips`` names each
+    cycle's walk) and predicts the cycles of ``held_out`` among them, so no model is
+    trained on a sibling cycle of the cycle it predicts (the paper predicts a new clip
+    from the others, Sec. 7.1; cycles cut from one capture are near-copies of each other).
+    "cycle": one cycle per fold, its sibling cycles stay in training (the literal "single
+    example motion clip as the test data", with a clip = a cycle). ``n_clips`` (default
+    ``len(source_clips)``) is the number of cycles."""
+    if unit not in LOO_UNITS:
+        raise ValueError(f"loo_folds: unit must be one of {list(LOO_UNITS)}; got {unit!r}")
+    if source_clips is None:
+        if unit == "walk":
+            raise ValueError("loo_folds: whole-walk folds need each cycle's source clip")
+        if n_clips is None:
+            raise ValueError("loo_folds: give n_clips or source_clips")
+        walks = np.arange(n_clips).astype(str)
+    else:
+        walks = np.asarray([str(x) for x in source_clips])
+    n = len(walks)
+    held_out = np.asarray(held_out, dtype=np.int64)
+    if held_out.size and (held_out.min() < 0 or held_out.max() >= n):
+        raise ValueError(f"loo_folds: held-out cycles must lie in 0..{n - 1}")
+    idx = np.arange(n)
+    if unit == "cycle":
+        return [(idx[idx != i], np.array([i])) for i in held_out]
+    folds = []
+    for w in dict.fromkeys(walks[held_out]):  # loop over walks, in order of first appearance
+        out = walks == w
+        folds.append((idx[~out], np.intersect1d(held_out, idx[out])))
+    return folds
