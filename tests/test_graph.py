@@ -355,6 +355,9 @@ def test_joint_optimisation_never_worse_than_greedy(prim, right, corner):
     for v in runs.values():  # steps still start where the one before ends
         for a, b in zip(v[:-1], v[1:]):
             assert np.linalg.norm(b.motion.root_pos[0, [0, 2]] - a.motion.root_pos[-1, [0, 2]]) < 5.0
+    again = follow_path(g, trees, path, jm, WalkSettings(max_steps=6, max_nfev=30, look_ahead=2, joint_steps="all"))
+    twice = follow_path(g, trees, path, jm, WalkSettings(max_steps=6, max_nfev=30, look_ahead=2, joint_steps="all"))
+    assert all(np.array_equal(a.fit.latent, b.fit.latent) for a, b in zip(again, twice))  # the same walk every run
     res = optimize_chain(chain, [s.fit.latent for s in greedy], max_nfev=5)
     assert res.errors_after.shape == (len(greedy), 2) and len(res.latents) == len(greedy)
     with pytest.raises(ValueError, match="start vectors"):

@@ -9,7 +9,7 @@ import pytest
 from scipy.spatial.distance import cdist
 
 from motionvar.ma2010.kriging import (
-    AUTO_MODELS, UniversalKriging, Variogram, empirical_semivariogram, fit_semivariogram, output_weights,
+    AUTO_MODELS, UniversalKriging, Variogram, bin_count, empirical_semivariogram, fit_semivariogram, output_weights,
 )
 
 
@@ -88,6 +88,12 @@ def test_output_weights_and_constant_dimensions():
         output_weights(r, "cm")
     lag, gamma, pairs = empirical_semivariogram(np.arange(3.0)[:, None], r, scale="sd", max_lag=1.0)
     assert pairs.sum() == 3 and np.all(np.isfinite(gamma))
+    assert [bin_count(n) for n in (10, 150, 7000, 10**6)] == [20, 20, 70, 100]  # ~100 pairs a bin, 20-100 bins
+    x = np.random.default_rng(0).uniform(size=(60, 2))
+    lag, _, pairs = empirical_semivariogram(x, np.random.default_rng(1).normal(size=(60, 3)), n_bins=5, max_lag=0.5)
+    assert len(lag) == 5 and lag.max() <= 0.5 * np.sqrt(2) and pairs.sum() < 60 * 59 // 2
+    with pytest.raises(ValueError, match="pair_mask"):
+        empirical_semivariogram(x, np.zeros((60, 3)), pair_mask=np.ones(3, dtype=bool))
 
 
 def test_old_single_model_stays_selectable_and_options_are_checked():

@@ -200,12 +200,9 @@ def step_length(primitive: MotionPrimitive, hips: int) -> float:
 class WalkSettings:
     """Path following: start/end primitives, step constraints, search and LM settings,
     the look-ahead T (``look_ahead``) and Algorithm 1 line 9 (``joint_steps``: 0, N or
-    "all"); ``joint_method`` and ``joint_max_nfev`` are the least-squares method and the
-    residual evaluations of those joint optimisations of several steps. Their problem has
-    far more unknowns than residuals (two per step): MINPACK's Levenberg-Marquardt ("lm",
-    DFKI's ``leastsq``) then takes a Gauss-Newton step chosen by its pivoted QR, which
-    jumps with the last bits of the input (runs of the same config differed by up to 0.5 cm
-    per step); "trf" takes the regularised step and gives the same walk every run."""
+    "all"); ``joint_method`` ("lm", MINPACK's Levenberg-Marquardt as DFKI's ``leastsq``,
+    or "trf") and ``joint_max_nfev`` are the least-squares method and the residual
+    evaluations of those joint optimisations of several steps (:func:`~.synthesis.optimize_chain`)."""
 
     start: str = "walk_start"
     end: str = "walk_end"
@@ -217,7 +214,7 @@ class WalkSettings:
     max_nfev: int = 100
     look_ahead: int = 1
     joint_steps: int | str = 0
-    joint_method: str = "trf"
+    joint_method: str = "lm"
     joint_max_nfev: int = 100
 
     def __post_init__(self) -> None:

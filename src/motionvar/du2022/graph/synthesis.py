@@ -14,11 +14,9 @@ weight. MINPACK's LM (scipy ``least_squares(method="lm")``) needs at least as ma
 residuals as unknowns: the vector is padded with zeros (which changes nothing in the
 minimum). The Jacobian is the 2-point finite difference evaluated as one batch of d + 1
 latent vectors (the same numbers as scipy's own, one vectorised call). MINPACK's iterates
-differ in their last bits between runs (its BLAS kernels depend on memory alignment), which
-the kinks of the residuals (|angle|, max(nll, 0)) can grow into visible differences; the
-objective therefore sees the latent vectors on a grid of relative spacing 2^-20 (about 1e-6,
-far below what moves a joint by a visible amount), so that the same config gives the same
-tables.
+differ in their last bits between runs (its BLAS kernels depend on memory alignment); the
+objective sees the latent vectors on a grid of relative spacing 2^-20 (about 1e-6, far
+below what moves a joint by a visible amount), so that such bits do not reach the tables.
 
 Several steps together (Algorithm 1, line 9: "optimize all steps of current elementary
 action"; Eq. 4.9 summed over the steps): :class:`StepChain` places the steps of a walk one
@@ -28,7 +26,9 @@ facing at its last canonical frame) and evaluates every step's path constraint
 step moves all later ones. :func:`optimize_chain` minimises the stacked residuals of all
 steps over their concatenated latent vectors with the same residual form (each step's
 negative log-likelihood added to each of its residuals, as DFKI's
-``obj_global_residual_vector_and_naturalness``) by scipy ``least_squares``.
+``obj_global_residual_vector_and_naturalness``) by scipy ``least_squares``; its padding
+rows are a very weak pull towards the start instead of DFKI's zeros, which makes
+Levenberg-Marquardt's step unique (see there).
 """
 
 from __future__ import annotations
@@ -247,7 +247,7 @@ def optimize_chain(chain: StepChain, latents: Sequence[np.ndarray], likelihood_w
     The problem has two residuals per step and a latent vector of d per step: MINPACK needs
     at least as many residuals as unknowns, and with DFKI's zero padding its Gauss-Newton
     step is not unique (it picks one by its pivoted QR, which jumps with the last bits of
-    the input: runs of the same config differed by up to 0.5 cm per step). The padding rows
+    the input: runs of the same config differed by up to 0.2 cm per step). The padding rows
     here are ``anchor_weight`` * (x - start) instead, a pull towards the start so weak that
     it changes the cost by (1e-3 * shift)^2 but makes the step unique (0 gives DFKI's zeros)."""
     if method not in ("lm", "trf"):

@@ -114,7 +114,7 @@ def evaluate_fig4_10(models: Mapping[str, MotionPrimitive], dataset: MotionDatas
                      reach_offset_cm: float = 5.0, tree_samples: int = 10000, beam: int = 2,
                      likelihood_weight: float = 1.0, method: str = "lm", max_nfev: int = 100,
                      max_steps: int = 30, look_ahead: int = 2, joint_steps: int | str = "all",
-                     joint_method: str = "trf", joint_max_nfev: int = 100, compare_variants: bool = True, seed: int = 0,
+                     joint_method: str = "lm", joint_max_nfev: int = 100, compare_variants: bool = True, seed: int = 0,
                      source: str = "dataset") -> EvaluationResult:
     """Fig. 4.10 with the fitted ``models`` (the walking primitives ``walk_*`` and
     ``reach_primitive``; one k-means tree of ``tree_samples`` GMM samples each):
