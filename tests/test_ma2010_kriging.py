@@ -138,7 +138,8 @@ def test_variogram_evaluation_table_and_figure(tmp_path):
     from motionvar.ma2010.svi import GROUP_ORDER
 
     jm = cmu_joint_map()
-    motions = [toy_walk(hip_amp=0.3 + 0.03 * i, arm_amp=0.2 + 0.1 * i, n_cycles=3, hip_growth=0.03 * (i % 3)) for i in range(4)]
+    motions = [toy_walk(hip_amp=0.3 + 0.03 * i, arm_amp=0.2 + 0.1 * i, n_cycles=3, hip_growth=0.03 * (i % 3))
+               for i in range(4)]
     meta = pd.DataFrame({"clip_id": [f"w{i}" for i in range(4)], "subject": [f"{i:02d}" for i in range(4)],
                          "behaviour": "walk", "style": "neutral", "variant": "forward"})
     save_dataset(tmp_path, motions, meta)

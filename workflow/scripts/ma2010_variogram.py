@@ -10,7 +10,8 @@ def main(snakemake) -> None:
     from motionvar.ma2010.figures import draw_variogram
 
     o = snakemake.params.options
-    result = variogram_fits(load_walks(snakemake), o["structure"], o["variogram_model"], o["variogram_scale"], o["seed"])
+    walks = load_walks(snakemake)
+    result = variogram_fits(walks, o["structure"], o["variogram_model"], o["variogram_scale"], o["seed"])
     write_evaluation(snakemake, result, draw_variogram)
 
 

@@ -228,7 +228,8 @@ def fit_semivariogram(
     residuals r (N, D) at parameters x (N, p); "auto" chooses among :data:`AUTO_MODELS`
     (module docstring). Returns the fit with the binned semivariogram it was fitted to."""
     if model != "auto" and model not in VARIOGRAM_MODELS:
-        raise ValueError(f"fit_variogram: unknown variogram model {model!r} (choose from {sorted(VARIOGRAM_MODELS)} or 'auto')")
+        raise ValueError(f"fit_variogram: unknown variogram model {model!r} "
+                         f"(choose from {sorted(VARIOGRAM_MODELS)} or 'auto')")
     if weights not in VARIOGRAM_WEIGHTS:
         raise ValueError(f"fit_variogram: variogram weights must be one of {VARIOGRAM_WEIGHTS}; got {weights!r}")
     output_weights(np.zeros((1, 1)), scale)  # validates scale
@@ -236,7 +237,8 @@ def fit_semivariogram(
     x, r = np.asarray(x, dtype=float), np.asarray(r, dtype=float)
     if len(x) < 2:
         v = Variogram(names[0], 0.0, _default_params(names[0]))
-        return VariogramFit(v, np.zeros(0), np.zeros(0), np.zeros(0, dtype=int), {v.model: v}, scale=scale, weights=weights)
+        empty = np.zeros(0)
+        return VariogramFit(v, empty, empty, np.zeros(0, dtype=int), {v.model: v}, scale=scale, weights=weights)
     hm, gm, cnt = empirical_semivariogram(x, r, n_bins, scale, max_lag)
     if len(hm) == 0:  # every pair beyond the cutoff (two examples): use them all
         hm, gm, cnt = empirical_semivariogram(x, r, n_bins, scale, 1.0)
@@ -277,7 +279,8 @@ class UniversalKriging:
             raise ValueError(f"UniversalKriging: unknown variogram model {variogram_model!r} "
                              f"(choose from {sorted(VARIOGRAM_MODELS)} or 'auto')")
         if variogram_scale not in VARIOGRAM_SCALES:
-            raise ValueError(f"UniversalKriging: variogram_scale must be one of {VARIOGRAM_SCALES}; got {variogram_scale!r}")
+            raise ValueError(f"UniversalKriging: variogram_scale must be one of {VARIOGRAM_SCALES}; "
+                             f"got {variogram_scale!r}")
         if variogram_weights not in VARIOGRAM_WEIGHTS:
             raise ValueError(f"UniversalKriging: variogram_weights must be one of {VARIOGRAM_WEIGHTS}; "
                              f"got {variogram_weights!r}")

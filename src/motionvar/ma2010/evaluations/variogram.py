@@ -20,12 +20,13 @@ import pandas as pd
 
 from ...claims import EvaluationResult
 from ..examples import WalkCycles
-from ..kriging import AUTO_MODELS, UniversalKriging, VariogramFit, empirical_semivariogram, fit_semivariogram, pair_semivariances
+from ..kriging import (
+    AUTO_MODELS, UniversalKriging, VariogramFit, empirical_semivariogram, fit_semivariogram, pair_semivariances,
+)
 from ..representation import ClipCodec
 from ..svi import GROUP_ORDER, StyleVariationModel
 
 STYLE_ONLY = "style only (MK05)"
-SERIES = ("all pairs", "between walks", "old")
 MAX_CLOUD = 20000  # pairs drawn per panel at most (a seeded subset beyond)
 
 
@@ -55,7 +56,8 @@ def variogram_fits(
     krigs: dict[str, UniversalKriging] = {g: model.interpolators_[g][1] for g in GROUP_ORDER}
     # MK05's clip vectors (:mod:`..baselines.mukai_kuriyama`: every joint and the key times) over style alone
     codec = ClipCodec.fit(clips, np.arange(clips.skeleton.n_joints), timing=True)
-    krigs[STYLE_ONLY] = UniversalKriging(variogram_model, variogram_scale=variogram_scale).fit(clips.style, codec.encode(clips))
+    style_only = UniversalKriging(variogram_model, variogram_scale=variogram_scale)
+    krigs[STYLE_ONLY] = style_only.fit(clips.style, codec.encode(clips))
     source = getattr(walks, "source_clips", None)  # each cycle's walk (capture)
     iu = np.triu_indices(clips.n_clips, k=1)
     same_walk = None if source is None else (np.asarray(source)[:, None] == np.asarray(source)[None, :])[iu]
