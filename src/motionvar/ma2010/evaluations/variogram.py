@@ -37,8 +37,9 @@ def _rows(name: str, series: str, fit: VariogramFit, lag: np.ndarray, gamma: np.
     for k in range(len(lag)):  # loop over the bins (at most 100)
         row = {"group": name, "series": series, "lag": lag[k], "gamma": gamma[k], "pairs": int(pairs[k]),
                "fitted": float(fit.variogram.curve(lag[k])), **d, "scale": fit.scale, "weights": fit.weights}
-        for m in AUTO_MODELS:
-            row[f"fitted_{m}"] = float(candidates.candidates[m].curve(lag[k])) if candidates is not None else np.nan
+        for m in AUTO_MODELS:  # a candidate that could not be fitted (too few bins) is left blank
+            model = candidates.candidates.get(m) if candidates is not None else None
+            row[f"fitted_{m}"] = float(model.curve(lag[k])) if model is not None else np.nan
         rows.append(row)
     return rows
 

@@ -28,8 +28,8 @@ import torch
 
 from ....claims import Claim, EvaluationResult, verdict_from_fraction
 from ....io.dataset import MotionDataset
-from ..data import primitive_features
-from ..diversity import diversity
+from ..data import example_features, primitive_features
+from ..diversity import diversity, step_lengths
 from ..features import FeatureLayout
 from ..model import FeatureSpace, SavedVAE, active_units, sample_features
 from ..networks import MotionVAE
@@ -53,6 +53,11 @@ def _prefixed(prefix: str, values: dict[str, float]) -> dict[str, float]:
     return {f"{prefix}_{k}": v for k, v in values.items()}
 
 
+def _measures(features: np.ndarray, n_joints: int) -> dict[str, float]:
+    """Eq. 5.13-5.15 and the mean step length (cm) of features (N, T, C)."""
+    return {**diversity(features, n_joints), "step_mean": float(step_lengths(features, n_joints).mean())}
+
+
 def diversity_rows(
     dataset: MotionDataset,
     layout: FeatureLayout,
@@ -65,27 +70,31 @@ def diversity_rows(
 ) -> list[dict]:
     """The rows of one primitive: the neutral training data, the same through the
     autoencoder, then per model (neutral VAE and CVAEs of ``primitive``, model j drawn with
-    seed ``seed + j``) its samples' measures, active latent dimensions, own training data's
-    measures and the measures of its decoder at the posterior means."""
+    seed ``seed + j``) its samples' measures (Eq. 5.13-5.15 and the mean step length), active
+    latent dimensions, own training data's measures, the measures of its decoder at the
+    posterior means and, for a CVAE, its style example's step length."""
     J = layout.n_joints
     _, train = primitive_features(dataset, layout, primitive, "neutral", n_frames)
     train_maps = space.encode(train)
-    own = {"neutral": (len(train), diversity(train, J))}
+    own = {"neutral": (len(train), _measures(train, J))}
     rows = [
-        {"primitive": primitive, "model": TRAINING, "n": len(train), **diversity(train, J)},
-        {"primitive": primitive, "model": ROUND_TRIP, "n": len(train), **diversity(space.decode(train_maps), J)},
+        {"primitive": primitive, "model": TRAINING, "n": len(train), **own["neutral"][1]},
+        {"primitive": primitive, "model": ROUND_TRIP, "n": len(train), **_measures(space.decode(train_maps), J)},
     ]
     for j, (vae, shape, info) in enumerate(m for m in models if m[2]["primitive"] == primitive):
         style = info["style"]
         if style not in own:
             style_clips = primitive_features(dataset, layout, primitive, style, n_frames)[1]
-            own[style] = (len(style_clips), diversity(style_clips, J))
+            own[style] = (len(style_clips), _measures(style_clips, J))
         feats = sample_features(vae, shape, space, n_samples, seed + j)
+        example = (float(step_lengths(example_features(dataset, layout, info["example"], n_frames)[None], J)[0])
+                   if "example" in info else np.nan)
         rows.append({
-            "primitive": primitive, "model": style, "n": n_samples, **diversity(feats, J),
+            "primitive": primitive, "model": style, "n": n_samples, **_measures(feats, J),
             "active_latents": active_units(vae, train_maps), "training_n": own[style][0],
             **_prefixed("training", own[style][1]),
-            **_prefixed("posterior_mean", diversity(posterior_mean_features(vae, space, train_maps), J)),
+            **_prefixed("posterior_mean", _measures(posterior_mean_features(vae, space, train_maps), J)),
+            "example_step": example,
         })
     return rows
 
@@ -121,10 +130,22 @@ def _step_note(t: pd.DataFrame, prims: Sequence[str], styles: Sequence[str]) -> 
     steps = [(f"{name} {value:.2f} ({value - before:+.2f})") for (_, before), (name, value) in zip(chain, chain[1:])]
     drops = [before - value for (_, before), (_, value) in zip(chain, chain[1:])]
     k = int(np.argmax(drops))
-    return (f"Step_SD (cm; means over primitives and styles) from {chain[0][0]} {chain[0][1]:.2f}: " + ", ".join(steps)
+    text = (f"Step_SD (cm; means over primitives and styles) from {chain[0][0]} {chain[0][1]:.2f}: " + ", ".join(steps)
             + (f"; the largest loss, {drops[k]:.2f} cm, is at: {chain[k + 1][0]}" if drops[k] > 0 else "")
             + f". The neutral VAE's own prior samples: {mean(['neutral']):.2f}; the styles' own clips: "
             f"{_range([t.loc[(p, s), 'training_step_sd'] for p in prims for s in styles])}.")
+    pairs = [(t.loc[(p, s), "posterior_mean_step_mean"], t.loc[(p, s), "example_step"]) for p in prims for s in styles]
+    if any(np.isnan(e) for _, e in pairs):
+        return text
+    gap = float(np.mean([abs(a - e) for a, e in pairs]))
+    neutral_sd = mean([TRAINING])
+    text += (f" The CVAEs' decoders at the posterior means step {_range([a for a, _ in pairs])} cm on average "
+             f"(their style examples {_range([e for _, e in pairs])}; mean absolute difference {gap:.2f} cm, the "
+             f"neutral clips' step_SD {neutral_sd:.2f})")
+    if gap < 0.5 * neutral_sd and mean(styles, "posterior_mean_step_sd") < 0.5 * neutral_sd:
+        text += (": the Gram term of one example fixes the second moments of the features, the root's speed among "
+                 "them, so every sample walks at about the example's step length")
+    return text + "."
 
 
 def evaluate_table5_2(
@@ -144,8 +165,9 @@ def evaluate_table5_2(
     with the latent dimensions each model uses on the training clips
     (:func:`~..model.active_units`), its own training data's measures and its decoder's at
     the posterior means (:func:`diversity_rows`). Table (rounded to 5 decimals): primitive,
-    model, n, pose_sd, v_sd, step_sd, active_latents, training_n, training_*,
-    posterior_mean_* and the published values. Figure: the unrounded table. Claims: the
+    model, n, pose_sd, v_sd, step_sd, step_mean (mean step length, cm), active_latents,
+    training_n, training_* (the same measures), posterior_mean_*, example_step (a CVAE's
+    style example's step length) and the published values. Figure: the unrounded table. Claims: the
     neutral VAE's pose_SD within ``pose_sd_tolerance`` of the training data's (half credit
     when only of the training data through the autoencoder); its step_SD below the training
     data's; every style's pose_SD, relative to its own training data's, below the neutral
