@@ -21,9 +21,10 @@ from ..synthesis import RootSolver
 PAPER = "ma2010"
 PUBLISHED_MAX_STRIDE_ERROR_CM = 1.2  # Sec. 7.1 / Fig. 6
 PROTOCOL = (
-    "Paper: walks captured from 25 subjects at 120 fps, normalized to one skeleton. Ours: synthetic walks "
-    "of generated subjects (motionvar.synth), cut into gait cycles at the key frames, rotations put on the "
-    "mean skeleton; style = stride of the left and right support phases measured on that skeleton."
+    "Paper: walks captured from 25 subjects at 120 fps, normalized to one skeleton. Ours: the dataset's walks "
+    "(synthetic subjects of motionvar.synth by default, or the user's motion capture), cut into gait cycles at "
+    "the key frames, rotations put on the mean skeleton; style = stride of the left and right support phases "
+    "measured on that skeleton."
 )
 
 
