@@ -16,6 +16,7 @@ import matplotlib.pyplot as plt
 import numpy as np
 import pandas as pd
 from matplotlib.figure import Figure
+from matplotlib.ticker import MaxNLocator
 
 from ...claims import EvaluationResult
 from ...plots.animation import render_frames
@@ -110,11 +111,14 @@ def training_curves(histories: Mapping[str, pd.DataFrame], groups: Mapping[str, 
             if not with_active[c]:
                 ax.set_axis_off()
                 continue
+            top = 1
             for name in names:
                 h = histories[name]
                 if "active" in h:
                     ax.plot(h["epoch"], h["active"], label=name, lw=1.2, marker=".", ms=3)
-            ax.set_ylim(bottom=0)
+                    top = max(top, int(h["active"].max()))
+            ax.set_ylim(-0.5, top + 1)
+            ax.yaxis.set_major_locator(MaxNLocator(integer=True))
             ax.set_xlabel("epoch", fontsize=8)
             ax.set_ylabel("latent dimensions in use", fontsize=8)
             ax.set_title(f"{title}: active units", fontsize=9)

@@ -142,7 +142,7 @@ def _step_note(t: pd.DataFrame, prims: Sequence[str], styles: Sequence[str]) -> 
     text += (f" The CVAEs' decoders at the posterior means step {_range([a for a, _ in pairs])} cm on average "
              f"(their style examples {_range([e for _, e in pairs])}; mean absolute difference {gap:.2f} cm, the "
              f"neutral clips' step_SD {neutral_sd:.2f})")
-    if gap < 0.5 * neutral_sd and mean(styles, "posterior_mean_step_sd") < 0.5 * neutral_sd:
+    if k == 2 and gap < 0.5 * neutral_sd and mean(styles, "posterior_mean_step_sd") < 0.5 * neutral_sd:
         text += (": the Gram term of one example fixes the second moments of the features, the root's speed among "
                  "them, so every sample walks at about the example's step length")
     return text + "."
