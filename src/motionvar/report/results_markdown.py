@@ -40,7 +40,7 @@ def results_markdown(main: pd.DataFrame, main_name: str, others: Mapping[str, pd
                      run_note: str = "") -> str:
     """The Results section body: ``main`` (the full synthetic run) per paper, then one
     line per dataset of ``others`` (name -> claims)."""
-    parts = [f"Claims of the last full run on `{main_name}`{(' (' + run_note + ')') if run_note else ''}: "
+    parts = [f"Claims of the last run on `{main_name}`{(' (' + run_note + ')') if run_note else ''}: "
              f"{verdict_counts(main['verdict'])}. The report holds the figures, tables and notes.", ""]
     for paper, title in PAPER_TITLES.items():
         parts += [f"### {title}", "", paper_results(main, paper)]
