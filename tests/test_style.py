@@ -538,6 +538,9 @@ def test_evaluate_table5_2(style_run, layout):
     assert "Step_SD (cm; means over primitives and styles)" in result.claims[2].note
     fig = draw_table5_2(result)
     assert any(coll.get_label() == "own training data" for ax in fig.axes for coll in ax.collections)
+    # published bars for the thesis' rows only (none for the autoencoder baseline)
+    published = [c for c in fig.axes[0].containers if c.get_label() == "published"]
+    assert len(published) == 1 and len(published[0]) == 4
     plt.close(fig)
 
 

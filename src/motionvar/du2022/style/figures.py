@@ -71,8 +71,9 @@ def diversity_figure(table: pd.DataFrame, measures: Sequence[str] = ("pose_sd", 
             ours = t[m] / t.loc["training data", m]
             ax.bar(x - 0.2, ours, 0.4, label="measured", color="#1f77b4")
             pub = t.get(f"published_{m}")
-            if pub is not None and pub.notna().all():
-                ax.bar(x + 0.2, pub / pub.loc["training data"], 0.4, label="published", color="#ff7f0e")
+            if pub is not None and pd.notna(pub.get("training data")):
+                ok = pub.notna().to_numpy()  # the thesis has no row for our baselines
+                ax.bar(x[ok] + 0.2, (pub / pub.loc["training data"])[ok], 0.4, label="published", color="#ff7f0e")
             for col, marker, label in ((f"training_{m}", "_", "own training data"),
                                        (f"posterior_mean_{m}", ".", "at the posterior means")):
                 if col in t and t[col].notna().any():

@@ -14,9 +14,11 @@ size given by the caller (the config). A CVAE's regime decides whether its poste
 collapses: its Frobenius style term (Eq. 5.10) starts one (frame-averaged Gram) to three
 (summed Gram, Eq. 5.9) orders of magnitude above the content term and, left to run, drives
 the decoder to one output that matches the style example whatever z is. Measured at full
-size (walk left stance, 10 epochs from the neutral VAE, alpha 200): Adam at lr 1e-3 with the
-averaged Gram left 0 of 32 latent dimensions in use; with the summed Gram lr 1e-4 left 0 for
-2 of 6 styles and 3e-5 keeps 3-13; plain SGD at 1e-5 blows up the content term with the sum.
+size (walk left and right stance, 10 epochs from the neutral VAE, alpha 200): Adam at lr
+1e-3 with the averaged Gram left 0 of 32 latent dimensions in use; with the summed Gram, lr
+1e-4 left 0 for 2 of 6 left-stance styles, 3e-5 left 1 for 4 of 6 right-stance ones and 1e-5
+keeps 10-19 in all 12; plain SGD at 1e-5 blows up the content term with the sum. Lower rates
+only stop earlier on the same path: the style moves in as the latent dimensions go out.
 Every run draws its shuffles and noise from one ``torch.Generator`` seeded by ``seed``,
 so the same inputs give the same weights. Histories are DataFrames, one row per epoch.
 
