@@ -68,7 +68,10 @@ def config_params(section, keys):
         value = part
         for k in key.split("."):
             value = value[k]
-        out[key.split(".")[-1]] = value
+        name = key.split(".")[-1]
+        if name in out:
+            raise WorkflowError(f"config_params({section!r}): keys {keys} give {name!r} twice; use two params")
+        out[name] = value
     return out
 
 
