@@ -18,6 +18,8 @@ from ...prep.intervals import parse_intervals
 from ..examples import extract_cycles, rows_matching
 from .common import PAPER, PROTOCOL
 
+GERUNDS = {"walk": "walking", "run": "running"}  # claim statements: "the key frames of running"
+
 
 def step_phases(maxima: np.ndarray, strikes: np.ndarray) -> np.ndarray:
     """Phase in [0, 1) of each maximum within its step (previous strike -> next strike);
@@ -114,7 +116,7 @@ def fig3_keyframes(
     for behaviour in ("walk", "run"):
         common = dict(
             claim_id=f"{PAPER}.fig3.{behaviour}_keyframes_at_one_gait_phase", paper=PAPER, source="Fig. 3, Sec. 4.1-4.2",
-            statement=f"The key frames (extrema of S_M(t)) of {behaviour}ing fall at the same gait phase in every "
+            statement=f"The key frames (extrema of S_M(t)) of {GERUNDS.get(behaviour, behaviour)} fall at the same gait phase in every "
                       "step, so they can segment and time-warp the motion.",
             published="each local extremum of S_M(t) is a key frame, used to cut and time-warp clips (no number given)",
         )
