@@ -255,7 +255,7 @@ def tiny(layout):
 
 def test_autoencoder_learns_and_is_deterministic(tiny, layout):
     space, hist, prims = tiny
-    assert list(hist.columns) == ["epoch", "loss", "seconds"] and len(hist) == 30
+    assert list(hist.columns) == ["epoch", "loss", "end_loss", "seconds", "kept"] and len(hist) == 30
     assert hist["loss"].iloc[-1] < 0.5 * hist["loss"].iloc[0]
     clips = [toy_walk(n_frames=120, seed=s, turn=0.2 * s) for s in range(6)]
     windows = space.scaler.transform(sliding_windows([motion_features(m, layout) for m in clips]))
@@ -263,6 +263,28 @@ def test_autoencoder_learns_and_is_deterministic(tiny, layout):
     a, _ = train_autoencoder(windows, cfg, n_kernels=8)
     b, _ = train_autoencoder(windows, cfg, n_kernels=8)
     assert all(torch.equal(p, q) for p, q in zip(a.state_dict().values(), b.state_dict().values()))
+
+
+def test_autoencoder_keeps_the_best_epoch(tiny, layout):
+    """keep="best" returns the weights of the epoch with the lowest end-of-epoch loss (a
+    learning rate high enough to make the loss jump about), "last" the last epoch's."""
+    space, _, _ = tiny
+    clips = [toy_walk(n_frames=120, seed=s, turn=0.2 * s) for s in range(6)]
+    windows = space.scaler.transform(sliding_windows([motion_features(m, layout) for m in clips]))
+    cfg = TrainConfig(epochs=8, lr=3e-2, batch_size=4, seed=1)
+    x = torch.as_tensor(windows, dtype=torch.float32).permute(0, 2, 1)
+    for keep in ("best", "last"):
+        model, hist = train_autoencoder(windows, cfg, n_kernels=8, keep=keep)
+        with torch.no_grad():
+            loss = float(torch.mean((model(x) - x) ** 2))
+        kept = hist.loc[hist["kept"]]
+        assert len(kept) == 1 and loss == pytest.approx(float(kept["end_loss"].iloc[0]), rel=1e-4)
+        if keep == "best":
+            assert kept["end_loss"].iloc[0] == hist["end_loss"].min()
+        else:
+            assert kept["epoch"].iloc[0] == cfg.epochs
+    with pytest.raises(ValueError, match="keep must be one of"):
+        train_autoencoder(windows, cfg, n_kernels=8, keep="first")
 
 
 def test_vae_and_cvae_training(tiny):

@@ -12,6 +12,7 @@ def main(snakemake) -> None:
         dataset, layout, TrainConfig(ae["epochs"], ae["lr"], ae["batch_size"], p["seed"]),
         window=p["canonical_frames"], stride=ae["window_stride"], max_windows=ae["max_windows"],
         decoder_order=ae["decoder_order"], n_kernels=ae["kernels"], kernel_width=ae["kernel_width"],
+        keep=ae["keep"],
     )
     space.save(snakemake.output.model)
     history.to_csv(snakemake.output.history, index=False)

@@ -91,7 +91,8 @@ def diversity_figure(table: pd.DataFrame, measures: Sequence[str] = ("pose_sd", 
 
 def training_curves(histories: Mapping[str, pd.DataFrame], groups: Mapping[str, Sequence[str]]) -> Figure:
     """Loss per epoch (log scale), one panel per group of runs (e.g. autoencoder, VAEs,
-    CVAEs of a primitive); when some histories have an ``active`` column (latent
+    CVAEs of a primitive; a ring marks the epoch whose weights were kept when it is not
+    the last, :func:`~.training.train_autoencoder`); when some histories have an ``active`` column (latent
     dimensions in use, :func:`~.training.train_vae`), a second row of panels draws it."""
     with_active = [any("active" in histories[n] for n in names) for names in groups.values()]
     n_rows = 2 if any(with_active) else 1
@@ -100,7 +101,11 @@ def training_curves(histories: Mapping[str, pd.DataFrame], groups: Mapping[str, 
         ax = axes[0, c]
         for name in names:
             h = histories[name]
-            ax.plot(h["epoch"], h["loss"], label=name, lw=1.2)
+            line, = ax.plot(h["epoch"], h["loss"], label=name, lw=1.2)
+            if "kept" in h and h["kept"].any() and not h["kept"].iloc[-1]:  # weights of an earlier epoch kept
+                k = h.loc[h["kept"]].iloc[0]
+                ax.plot([k["epoch"]], [k["loss"]], marker="o", mfc="none", color=line.get_color(), ms=6,
+                        label=f"{name}: kept epoch {int(k['epoch'])}")
         ax.set_yscale("log")
         ax.set_xlabel("epoch", fontsize=8)
         ax.set_ylabel("training loss", fontsize=8)

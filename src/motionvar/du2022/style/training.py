@@ -33,6 +33,7 @@ From a dataset to the saved models of the pipeline (one per rule):
 
 from __future__ import annotations
 
+import copy
 import logging
 import time
 from dataclasses import dataclass
@@ -51,6 +52,7 @@ from .networks import ConvAutoencoder, MotionVAE
 log = logging.getLogger(__name__)
 
 OPTIMIZERS = ("adam", "sgd")
+AUTOENCODER_KEEP = ("best", "last")  # which epoch's weights train_autoencoder returns
 
 
 @dataclass(frozen=True)
@@ -87,18 +89,24 @@ def _batches(n: int, batch_size: int, gen: torch.Generator) -> list[torch.Tensor
 
 def train_autoencoder(
     windows: np.ndarray, cfg: TrainConfig, decoder_order: str = "conv_depool", n_kernels: int = 256,
-    kernel_width: int = 15,
+    kernel_width: int = 15, keep: str = "best",
 ) -> tuple[ConvAutoencoder, pd.DataFrame]:
-    """Train Eq. 5.1-5.2 on scaled windows (W, T, C); history columns epoch, loss (MSE
-    per element), seconds."""
+    """Train Eq. 5.1-5.2 on scaled windows (W, T, C). ``keep``: "best" returns the weights
+    of the epoch whose end-of-epoch loss over all windows is lowest (a late spike of the
+    loss does not end in the model), "last" those of the last epoch. History columns:
+    epoch, loss (running mean of the minibatch MSE), end_loss (MSE of the end-of-epoch
+    weights over all windows), kept (the epoch returned), seconds."""
     if windows.ndim != 3 or len(windows) == 0:
         raise ValueError(f"train_autoencoder: windows must be a non-empty (W, T, C) array; got {windows.shape}")
+    if keep not in AUTOENCODER_KEEP:
+        raise ValueError(f"train_autoencoder: keep must be one of {AUTOENCODER_KEEP}; got {keep!r}")
     torch.manual_seed(cfg.seed)
     gen = torch.Generator().manual_seed(cfg.seed)
     x = torch.as_tensor(windows, dtype=torch.float32).permute(0, 2, 1).contiguous()
     model = ConvAutoencoder(x.shape[1], n_kernels=n_kernels, kernel_width=kernel_width, decoder_order=decoder_order)
     opt = cfg.make_optimizer(model.parameters())
     rows, t0 = [], time.perf_counter()
+    best_loss, best_state = np.inf, None
     for epoch in range(1, cfg.epochs + 1):
         total = 0.0
         for idx in _batches(len(x), cfg.batch_size, gen):
@@ -108,9 +116,17 @@ def train_autoencoder(
             loss.backward()
             opt.step()
             total += float(loss.detach()) * len(idx)
-        rows.append({"epoch": epoch, "loss": total / len(x), "seconds": time.perf_counter() - t0})
+        with torch.no_grad():
+            end_loss = float(sum(torch.sum((model(xb) - xb) ** 2) for xb in x.split(512)) / x.numel())
+        if keep == "last" or end_loss < best_loss:
+            best_loss, best_state = end_loss, copy.deepcopy(model.state_dict())
+        rows.append({"epoch": epoch, "loss": total / len(x), "end_loss": end_loss,
+                     "seconds": time.perf_counter() - t0})
+    model.load_state_dict(best_state)
     model.eval()
-    return model, pd.DataFrame(rows)
+    history = pd.DataFrame(rows)
+    history["kept"] = history["epoch"] == int(history.loc[history["end_loss"] == best_loss, "epoch"].iloc[-1])
+    return model, history
 
 
 def train_vae(
@@ -195,26 +211,31 @@ def fit_feature_space(
     decoder_order: str = "conv_depool",
     n_kernels: int = 256,
     kernel_width: int = 15,
+    keep: str = "best",
 ) -> tuple[FeatureSpace, pd.DataFrame]:
     """The conv autoencoder (Eq. 5.1-5.2) with its :class:`~.features.FeatureScaler`,
     trained on the windows of ``window`` frames every ``stride`` frames of all clips
     (Sec. 5.4.1); ``max_windows`` > 0 keeps a random subset of that many (drawn with
-    ``cfg.seed``). History columns: epoch, loss, seconds, windows."""
+    ``cfg.seed``); ``keep`` as :func:`train_autoencoder`. History columns: those of
+    :func:`train_autoencoder` and windows."""
     windows = training_windows(dataset, layout, window, stride)
     n_all = len(windows)
     if 0 < max_windows < n_all:
-        keep = np.sort(np.random.default_rng(cfg.seed).choice(n_all, max_windows, replace=False))
-        windows = windows[keep]
+        subset = np.sort(np.random.default_rng(cfg.seed).choice(n_all, max_windows, replace=False))
+        windows = windows[subset]
     log.info("%d windows of %d frames (%d in all) from %d clips; joints %s", len(windows),
              windows.shape[1], n_all, len(dataset), ", ".join(layout.names))
     scaler = FeatureScaler.fit(windows, layout.n_joints)
     ae, history = train_autoencoder(
         scaler.transform(windows), cfg, decoder_order=decoder_order, n_kernels=n_kernels, kernel_width=kernel_width,
+        keep=keep,
     )
     space = FeatureSpace(ae, scaler)
     history["windows"] = len(windows)
-    log.info("trained in %.1f s; final loss %.4g; reconstruction RMSE %.3f", history["seconds"].iloc[-1],
-             history["loss"].iloc[-1], space.reconstruction_rmse(windows[:512]))
+    kept = history.loc[history["kept"]].iloc[0]
+    log.info("trained in %.1f s; kept epoch %d of %d (end-of-epoch loss %.4g; last %.4g); reconstruction RMSE %.3f",
+             history["seconds"].iloc[-1], kept["epoch"], len(history), kept["end_loss"],
+             history["end_loss"].iloc[-1], space.reconstruction_rmse(windows[:512]))
     return space, history
 
 
