@@ -19,6 +19,7 @@ LEVELS = {
     "io": 1, "report": 1,
     "synth": 2, "prep": 2, "models": 2, "plots": 2,
     "ma2010": 3, "du2022": 3, "egges2004": 3,
+    "cli": 4,  # the `motionvar` command: glue over the papers and shared parts; nothing imports it
 }
 PAPERS = {"ma2010", "du2022", "egges2004"}
 

@@ -86,6 +86,43 @@ def test_every_rule_has_a_benchmark_and_a_log(ci_run):
 
 
 @pytest.mark.e2e
+def test_motionvar_command_generates_from_the_ci_models(ci_run, tmp_path):
+    """Every `motionvar` subcommand on the models the CI run saved (never refitting): the
+    files read back on the dataset's rig with the requested length."""
+    from motionvar.core import cmu_skeleton
+    from motionvar.egges2004.storage import load_idle_model
+    from motionvar.io.bvh import read_bvh
+    from motionvar.ma2010.storage import load_style_variation_model
+
+    work = ci_run[0]
+    models = work / "results" / "synthetic" / "models"
+
+    def cli(*args):
+        r = subprocess.run([sys.executable, "-m", "motionvar.cli.main", *args, "--dataset", "synthetic", "--quiet"],
+                           cwd=work, capture_output=True, text=True, timeout=300)
+        assert r.returncode == 0, r.stdout + r.stderr
+        return r.stdout
+
+    listing = cli("models")
+    assert "MISSING" not in listing and "style old: primitives walk_leftStance" in listing
+    stride = load_style_variation_model(models / "ma2010" / "style_variation.npz").model.style_.mean()
+    cli("ma2010", "--style", f"{stride:.1f}", "--seconds", "5", "--variants", "2", "--out", str(tmp_path / "ma"))
+    subject = sorted(load_idle_model(models / "egges2004" / "idle_model").databases)[-1]
+    cli("egges2004", "--subject", subject, "--seconds", "10", "--out", str(tmp_path / "idle.bvh"))
+    cli("du2022", "walk", "--path", "0,0 150,0 250,100", "--out", str(tmp_path / "walk.bvh"))
+    cli("du2022", "style", "--style", "old", "--n", "2", "--out", str(tmp_path / "style"))
+    walks = sorted((tmp_path / "ma").glob("*.bvh"))
+    styles = sorted((tmp_path / "style").glob("*.bvh"))
+    assert len(walks) == 2 and len(styles) == 2
+    for path, seconds in [(walks[0], 5.0), (walks[1], 5.0), (tmp_path / "idle.bvh", 10.0),
+                          (tmp_path / "walk.bvh", None), (styles[0], None)]:
+        m = read_bvh(path)
+        assert m.skeleton.names == cmu_skeleton().names, path  # the synthetic data's rig
+        if seconds is not None:
+            assert m.n_frames == round(seconds * m.fps) + 1, path
+
+
+@pytest.mark.e2e
 def test_lint_is_clean(tmp_path):
     result = snakemake("--lint", cwd=ROOT, timeout=120)
     assert result.returncode == 0, result.stdout + result.stderr

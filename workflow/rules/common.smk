@@ -243,14 +243,21 @@ def claim_files(dataset):
     ]
 
 
+# Model files built for every dataset whatever it supports (patterns with {dataset}; the
+# `motionvar` command reads them): a paper's rule file adds those that need only the
+# prep stage. Models that need more join the default target as an evaluation's `extra`.
+DATASET_MODELS = []
+
+
 def default_outputs(dataset):
     """What `snakemake` builds for one dataset: the data figures, the preprocessed
-    clips, every registered evaluation (or its not-applicable outputs), the merged
-    claims and their summary."""
+    clips, the DATASET_MODELS, every registered evaluation (or its not-applicable
+    outputs), the merged claims and their summary."""
     return [
         f"results/{dataset}/prep/metadata.csv",
         f"results/{dataset}/figures/dataset_overview.png",
         f"results/{dataset}/figures/dataset_animation.gif",
+        *[p.format(dataset=dataset) for p in DATASET_MODELS],
         *evaluation_outputs(dataset),
         *gif_pages(dataset),
         f"results/{dataset}/claims.csv",

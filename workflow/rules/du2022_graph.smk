@@ -88,6 +88,31 @@ rule du2022_graph_search:
         "../scripts/du2022_graph_search.py"
 
 
+# the graph's transitions and the synthesis settings, saved beside the primitives for
+# `motionvar du2022 walk` (in the default target of every dataset: DATASET_MODELS)
+rule du2022_graph_edges:
+    input:
+        metadata=f"{PREP}/metadata.csv",
+        joint_map=joint_map_input,
+    output:
+        model=GRAPH_EDGES[0],
+        settings=GRAPH_EDGES[1],
+    params:
+        options=graph_params("synthesis", keys=["seed"]),
+        joint_map=lambda wc: joint_map_path(wc.dataset),
+    log:
+        ev_log("du2022_graph_edges"),
+    benchmark:
+        ev_benchmark("du2022_graph_edges")
+    threads: 1
+    resources:
+        mem_mb=1000,
+    conda:
+        ENV
+    script:
+        "../scripts/du2022_graph_edges.py"
+
+
 # The evaluations (tables, figures, claims): one rule each, same body; evaluation ->
 # (published figure, inputs, params, mem_mb, further outputs). Script: ../scripts/<evaluation>.py.
 # The script path comes from params.evaluation: Snakemake resolves a script path again when

@@ -4,6 +4,11 @@
 GRAPH_CFG = config["graph"]
 GRAPH = "results/{dataset}/models/du2022/graph"
 GRAPH_DENSE = "pick_reach_dense"
+# the graph's transitions, written by rule du2022_graph_edges (motionvar.du2022.graph.storage), read by
+# `motionvar du2022 walk`; a folder of its own (a file beside the primitives would match
+# {primitive}); it needs only the prep metadata, so every dataset gets it (DATASET_MODELS)
+GRAPH_EDGES = [f"{GRAPH}/graph/edges.npz", f"{GRAPH}/graph/edges.json"]
+DATASET_MODELS.extend(GRAPH_EDGES)
 
 
 def graph_params(*sections, keys=()):

@@ -95,6 +95,32 @@ rule style_cvae:
         "../scripts/style_cvae.py"
 
 
+# the rig's mean skeleton, feature layout and frame rates, for decoding the style models
+# into joint rotations with `motionvar du2022 style` (in the default target: DATASET_MODELS)
+rule style_rig:
+    input:
+        clips=f"{PREP}/clips.npz",
+        metadata=f"{PREP}/metadata.csv",
+        joint_map=joint_map_input,
+    output:
+        model=STYLE_RIG[0],
+        settings=STYLE_RIG[1],
+    params:
+        options=config_params("style", ["canonical_frames"]),
+        joint_map=lambda wc: joint_map_path(wc.dataset),
+    log:
+        ev_log("style_rig"),
+    benchmark:
+        ev_benchmark("style_rig")
+    threads: 1
+    resources:
+        mem_mb=2000,
+    conda:
+        ENV
+    script:
+        "../scripts/style_rig.py"
+
+
 # The evaluations share one rule body: the prepared clips, the autoencoder, the neutral
 # VAEs of `vaes` and the CVAEs of `cvaes` (primitives) in; table, figure, claims (and
 # GIFs) out; params: the config.style keys listed. The script, workflow/scripts/<evaluation>.py,

@@ -7,6 +7,10 @@ STYLE_STYLE_PATTERN = "[a-z]+"
 # A saved model is <base>.pt (torch state dict) + <base>.json (settings); its training
 # history is <base>_history.csv.
 STYLE_SUFFIX = {"model": ".pt", "settings": ".json", "history": "_history.csv"}
+# what decoding the models onto the rig needs (rule style_rig), for `motionvar du2022 style`;
+# it needs only the prep stage, so every dataset gets it (DATASET_MODELS)
+STYLE_RIG = [f"{STYLE_MODELS}/rig.npz", f"{STYLE_MODELS}/rig.json"]
+DATASET_MODELS.extend(STYLE_RIG)
 
 
 def style_vaes(primitives, kind="model"):

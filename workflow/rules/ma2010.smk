@@ -33,6 +33,31 @@ rule ma2010_clips:
         "../scripts/ma2010_clips.py"
 
 
+# the model of Sec. 5-6 fitted once on all the walking cycles, saved for `motionvar ma2010`
+# (it joins the default target with ma2010_fig6: MA2010_MODEL in ma2010_helpers.smk)
+rule ma2010_model:
+    input:
+        **MA2010_INPUTS["walks"],
+        joint_map=joint_map_input,
+    output:
+        model=MA2010_MODEL[0],
+        settings=MA2010_MODEL[1],
+    params:
+        options=config_params("ma2010", _MODEL),
+        joint_map=lambda wc: joint_map_path(wc.dataset),
+    log:
+        ev_log("ma2010_model"),
+    benchmark:
+        ev_benchmark("ma2010_model")
+    threads: 1
+    resources:
+        mem_mb=3000,
+    conda:
+        ENV
+    script:
+        "../scripts/ma2010_model.py"
+
+
 for _ev, _spec in MA2010_EVALUATIONS.items():
 
     rule:

@@ -15,6 +15,9 @@ MA2010_INPUTS = {
 # the model's keys; root_group places the root rotation when the joint groups are built
 # (motionvar.ma2010.examples.WalkCycles), so every evaluation of the walking cycles reads it
 _MODEL = ["structure", "variogram_model", "root_group"]
+# the fitted model, written by rule ma2010_model (motionvar.ma2010.storage), read by `motionvar ma2010`;
+# built with ma2010_fig6 (same needs: walking cycles)
+MA2010_MODEL = [f"{MA2010}/style_variation.npz", f"{MA2010}/style_variation.json"]
 
 # evaluation -> inputs, figure label, config.ma2010 keys its script reads, threads,
 # memory, and further outputs / params
@@ -27,6 +30,7 @@ MA2010_EVALUATIONS = {
     "ma2010_fig6": {
         "input": "walks", "figure": "Fig. 6", "mem_mb": 4000,
         "options": [*_MODEL, "seed", "loo_max_clips", "loo_unit"],
+        "extra": MA2010_MODEL,
     },
     "ma2010_variogram": {
         "input": "walks", "figure": "Sec. 6 (variogram)", "mem_mb": 3000,
@@ -61,4 +65,5 @@ MA2010_EVALUATIONS = {
 }
 
 for _ev, _spec in MA2010_EVALUATIONS.items():
-    register_evaluation(_ev, paper="ma2010", extra=[p for p in _spec.get("output", {}).values() if p.endswith(".gif")])
+    register_evaluation(_ev, paper="ma2010", extra=[p for p in _spec.get("output", {}).values() if p.endswith(".gif")]
+                        + _spec.get("extra", []))

@@ -1,0 +1,97 @@
+"""``motionvar ma2010``: style-and-variation walks (Ma et al. 2010, Eq. 10-15) from the
+model saved by rule ma2010_model, one BVH per variant."""
+
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+
+from .common import (
+    CLIError, ResultsDir, dataset_rig, load_or_fail, note, on_rig, out_dir, parse_numbers, positive, say, write_motions,
+)
+from .progress import Progress
+
+MODEL = "ma2010/style_variation.npz"
+MODEL_SETTINGS = "ma2010/style_variation.json"
+WHAT = "the Ma 2010 style-and-variation model"
+EVALUATIONS = ("ma2010_fig6",)  # the model is built where these are supported
+
+
+def add_parser(sub: argparse._SubParsersAction, common) -> None:
+    p = sub.add_parser(
+        "ma2010", parents=[common()], help="style-and-variation walks (Ma et al. 2010)",
+        description="Walks of the given style with latent variation drawn from the parameter propagation network "
+                    "(Eq. 10) once per variant, or fixed with --xi; cycles predicted by Eq. 11-13, joined by "
+                    "transitions (Eq. 14-15), root from footskate cleanup (Sec. 6.3). One BVH per variant.")
+    p.add_argument("--style", required=True,
+                   help="the style parameters: the strides (cm) of the left and right support phase; one number "
+                        "for both or two comma-separated (`motionvar models` shows the range)")
+    p.add_argument("--xi", default=None,
+                   help="fix the latent variation of joint groups: A=..,B=..,C=..,D=.. (A legs, B left arm, C right "
+                        "arm, D upper body; any subset) or 4 numbers A,B,C,D; the others are drawn from Eq. 10")
+    p.add_argument("--seconds", type=float, default=10.0, help="length of each walk (s; default 10)")
+    p.add_argument("--variants", type=int, default=1, help="number of walks, each with its own xi (default 1)")
+    p.add_argument("--out", required=True, help="output folder (ma2010_<style>_v<k>.bvh)")
+    p.set_defaults(run=run)
+
+
+def parse_xi(text: str | None) -> dict[str, float]:
+    """``A=0.1,B=0.2`` or ``0.1,0.2,0.3,0.4`` (groups A-D in order) -> {key: value}."""
+    if not text:
+        return {}
+    if "=" not in text:
+        values = parse_numbers(text, "--xi")
+        if len(values) != 4:
+            raise CLIError(f"--xi: give 4 numbers (groups A,B,C,D) or KEY=VALUE pairs; got {len(values)} numbers")
+        return dict(zip("ABCD", values))
+    out = {}
+    for part in text.split(","):
+        key, sep, value = part.partition("=")
+        if not sep or not key.strip():
+            raise CLIError(f"--xi: expected KEY=VALUE pairs like A=0.1,B=0.2; got {part!r}")
+        out[key.strip()] = parse_numbers(value, f"--xi {key.strip()}")[0]
+    return out
+
+
+def run(args: argparse.Namespace) -> int:
+    from ..ma2010.examples import root_solver
+    from ..ma2010.generate import STRIDE_TOLERANCE, check_style, check_xi, generate_walks
+    from ..ma2010.storage import load_style_variation_model
+
+    rd = ResultsDir(Path(args.results), args.dataset)
+    seconds = positive(args.seconds, "--seconds")
+    if args.variants < 1:
+        raise CLIError(f"--variants must be >= 1; got {args.variants}")
+    style_in = parse_numbers(args.style, "--style")
+    xi_in = parse_xi(args.xi)
+    folder = out_dir(args.out)
+    path, _ = rd.require(WHAT, MODEL, MODEL_SETTINGS, evaluations=EVALUATIONS)
+    saved = load_or_fail(WHAT, load_style_variation_model, path)
+    model = saved.model
+    d = model.style_.shape[1]
+    if len(style_in) == 1 and d > 1:
+        style_in = style_in * d  # one number: every stride
+    try:
+        style = check_style(style_in, model, saved.style_names, saved.style_unit)
+        xi = check_xi(xi_in, model)
+    except ValueError as exc:
+        raise CLIError(str(exc)) from exc
+    solver = root_solver(model.skeleton_, saved.joint_map)
+    rig = dataset_rig(rd)
+    with Progress("ma2010 walks", args.variants, enabled=not args.quiet) as bar:
+        walks = generate_walks(model, solver, style, seconds, args.variants, args.seed, xi, progress=bar)
+    tag = "_".join(f"{v:g}" for v in style)
+    paths = [folder / f"ma2010_{tag}_v{k + 1}.bvh" for k in range(len(walks))]
+    write_motions(paths, [on_rig(w.motion, rig) for w in walks], args.unit_cm)
+    for p, w in zip(paths, walks):
+        m = w.measures
+        xi_text = ", ".join(f"{g} {v:.3g}" for g, v in w.xi.items())
+        drawn = "" if w.draws == 1 else f" (xi drawn {w.draws} times: strides off by > {STRIDE_TOLERANCE:.0%} redrawn)"
+        say(f"{p}: {w.motion.n_frames} frames at {w.motion.fps:g} fps ({w.motion.duration:.2f} s); style "
+            f"{', '.join(f'{v:g}' for v in style)} {saved.style_unit}; measured strides "
+            f"{m['left_support_stride_cm']:.1f}, {m['right_support_stride_cm']:.1f} cm; foot skating "
+            f"{m['foot_skating_cm_s']:.2f} cm/s; xi: {xi_text}{drawn}")
+        if not w.accepted:
+            note(f"warning: {p}: no draw of xi in {w.draws} gave the requested strides within {STRIDE_TOLERANCE:.0%}; "
+                 f"this is the closest (try another --seed or --xi)")
+    return 0

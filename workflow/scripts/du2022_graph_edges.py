@@ -1,0 +1,24 @@
+"""Rule du2022_graph_edges (Du 2022 Sec. 4.4, Fig. 4.6): the Morphable Graph's transitions
+(consecutive primitives of each clip of the prep metadata) with the rig's joint map and
+the settings of graph-walk synthesis (config graph.synthesis), saved beside the motion
+primitives (motionvar.du2022.graph.storage) for the `motionvar du2022 walk` command."""
+
+
+def main(snakemake) -> None:
+    import logging
+
+    import pandas as pd
+
+    from _graph import joint_map
+    from motionvar.du2022.graph import MorphableGraph
+    from motionvar.du2022.graph.storage import save_graph
+
+    graph = MorphableGraph.from_metadata(pd.read_csv(snakemake.input.metadata, dtype={"clip_id": str}))
+    save_graph(snakemake.output.model, graph, joint_map(snakemake), settings=dict(snakemake.params.options))
+    logging.info("nodes %s; edges:\n%s", graph.nodes, graph.edge_table().to_string())
+
+
+if "snakemake" in globals():
+    from _rule import run
+
+    run(snakemake, main)  # noqa: F821
