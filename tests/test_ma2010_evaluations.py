@@ -112,6 +112,28 @@ def test_fig6_leave_one_out(walks):
     check(result, figures.draw_fig6, "")
 
 
+def test_fig6_compares_with_the_validation_cycle_through_the_same_measure(walks):
+    """Fig. 6 compares the predicted clip's stride with the validation clip's: the held-out
+    cycle goes through the same measure (default), and its own error against its style is
+    reported as the measure's floor; "style" compares with the strides asked for."""
+    result = fig6_leave_one_out(walks, "lower_first", "linear", seed=0, max_clips=2, ablation=False)
+    folds = result.table[result.table["kind"] == "fold"]
+    validation = folds[["validation_left_cm", "validation_right_cm"]].to_numpy()
+    ours = folds[["ours_own_xi_left_cm", "ours_own_xi_right_cm"]].to_numpy()
+    style = folds[["true_left_cm", "true_right_cm"]].to_numpy()
+    assert np.allclose(folds["ours_own_xi_stride_error_cm"], np.abs(ours - validation).max(axis=1))
+    assert np.allclose(folds["ours_own_xi_style_error_cm"], np.abs(ours - style).max(axis=1))
+    assert np.allclose(folds["validation_stride_error_cm"], np.abs(validation - style).max(axis=1))
+    assert "validation" in set(result.table.loc[result.table["kind"] == "summary", "method"])
+    assert "floor" in result.claims[0].note and result.figure["stride_reference"] == "validation"
+    by_style = fig6_leave_one_out(walks, "lower_first", "linear", seed=0, max_clips=2, ablation=False,
+                                  stride_reference="style").table
+    by_style = by_style[by_style["kind"] == "fold"]
+    assert np.allclose(by_style["ours_own_xi_stride_error_cm"], by_style["ours_own_xi_style_error_cm"])
+    with pytest.raises(ValueError, match="stride_reference must be one of"):
+        fig6_leave_one_out(walks, "lower_first", "linear", max_clips=1, ablation=False, stride_reference="truth")
+
+
 def test_root_group_choice_moves_only_the_root_rotation(walks):
     """Config ma2010.root_group: the root joint (0, the pelvis) goes with the legs by default
     (as every shipped joint map says), or with the upper body; nothing else moves."""

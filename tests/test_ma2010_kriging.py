@@ -156,3 +156,23 @@ def test_variogram_evaluation_table_and_figure(tmp_path):
         fig = draw_variogram(result)
         assert len(fig.axes) == 5
         plt.close(fig)
+
+
+def test_trend_cut_off_ignores_a_thin_direction_of_collinear_parameters():
+    """Two parameters that vary together (left and right strides of a symmetric walk: a
+    0.999 correlation, as the generator's walks) leave a thin direction whose literal
+    least-squares slope fits the noise; ``trend_rcond`` drops it, so a query off the line
+    (a user asking for unequal strides) gets the trend of the main direction instead of a
+    slope fitted to noise, and a query on the line is predicted as before."""
+    rng = np.random.default_rng(3)
+    s = rng.normal(130.0, 5.0, 60)
+    x = np.column_stack([s + rng.normal(0, 0.15, 60), s + rng.normal(0, 0.15, 60)])
+    y = np.column_stack([0.02 * s + rng.normal(0, 0.05, 60), -0.01 * s + rng.normal(0, 0.05, 60)])
+    on_line, off_line = np.array([[132.0, 132.0]]), np.array([[128.0, 136.0]])
+    truth_off = np.array([0.02 * 132.0, -0.01 * 132.0])  # the outputs depend on the mean stride only
+    literal = UniversalKriging("linear", trend_rcond=0.0).fit(x, y)
+    cut = UniversalKriging("linear", trend_rcond=0.1).fit(x, y)
+    assert np.abs(cut.trend(off_line) - truth_off).max() < 0.5 * np.abs(literal.trend(off_line) - truth_off).max()
+    assert np.allclose(cut.trend(on_line), literal.trend(on_line), atol=0.05)
+    with pytest.raises(ValueError, match="trend_rcond"):
+        UniversalKriging(trend_rcond=1.5)

@@ -29,7 +29,7 @@ MA2010_EVALUATIONS = {
     },
     "ma2010_fig6": {
         "input": "walks", "figure": "Fig. 6", "mem_mb": 4000,
-        "options": [*_MODEL, "seed", "loo_max_clips", "loo_unit"],
+        "options": [*_MODEL, "seed", "loo_max_clips", "loo_unit", "fig6_stride_reference"],
         "extra": MA2010_MODEL,
     },
     "ma2010_variogram": {

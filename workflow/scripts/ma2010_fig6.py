@@ -11,7 +11,7 @@ def main(snakemake) -> None:
 
     o = snakemake.params.options
     result = fig6_leave_one_out(load_walks(snakemake), o["structure"], o["variogram_model"], o["seed"], o["loo_max_clips"],
-                                o["loo_unit"])
+                                o["loo_unit"], stride_reference=o["fig6_stride_reference"])
     write_evaluation(snakemake, result, draw_fig6)
 
 

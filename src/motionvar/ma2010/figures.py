@@ -72,8 +72,9 @@ def draw_fig6(result: EvaluationResult) -> Figure:
              ("ours_mean_xi", "ours, xi at the network's conditional mean", "s", "tab:purple"),
              ("ours_sampled_xi", "ours, xi sampled from the network", "+", "tab:green"),
              ("kriging", "Kriging, style only", "x", "tab:orange")]
+    reference = f.get("stride_reference", "style")
     for ax, side in zip(axes[:2], ("left", "right")):
-        t = folds[f"true_{side}_cm"].to_numpy()
+        t = folds[f"{'validation' if reference == 'validation' else 'true'}_{side}_cm"].to_numpy()
         for name, label, marker, colour in kinds:
             ax.scatter(t, folds[f"{name}_{side}_cm"], s=14, marker=marker, color=colour, label=label)
         ax.scatter(t[closing], folds.loc[closing, f"ours_own_xi_{side}_cm"], s=90, facecolors="none",
@@ -82,7 +83,7 @@ def draw_fig6(result: EvaluationResult) -> Figure:
         ax.plot([lo, hi], [lo, hi], color="0.5", lw=1)
         ax.set_xlim(lo, hi)
         ax.set_ylim(lo, hi)
-        ax.set_xlabel(f"true stride, {side} support (cm)")
+        ax.set_xlabel(f"{'validation cycle' if reference == 'validation' else 'requested'} stride, {side} support (cm)")
         ax.set_ylabel("stride of the synthesized cycle (cm)")
         ax.set_title(f"{side} support phase (points beyond the frame not shown)", fontsize=9)
         ax.legend(fontsize=7, loc="upper left")
@@ -119,7 +120,8 @@ def draw_fig6(result: EvaluationResult) -> Figure:
                              va="center", fontsize=6)
     axes[3].axvline(bound, color="tab:red", ls="--", lw=1)
     style_only = {"kriging": "Kriging (style only)", "rbf": "RBF (style only)",
-                  "least_squares": "least squares (style only)"}
+                  "least_squares": "least squares (style only)",
+                  "validation": "held-out cycle itself vs its style (the measure's floor)"}
     labels = {m: style_only.get(m, f"ours, {r['xi']} xi, root in {r['root_group']}")
               for m, r in summary.drop_duplicates("method").set_index("method").iterrows()}
     axes[3].set_yticks(y)

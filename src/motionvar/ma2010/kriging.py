@@ -269,11 +269,16 @@ class UniversalKriging:
     """Universal Kriging of vector-valued samples s_i (N, D) at parameters x_i (N, p).
 
     ``variogram_model``, ``variogram_scale``, ``variogram_weights``: see the module
-    docstring; ("linear", "none", "pairs") is the earlier single fitted model."""
+    docstring; ("linear", "none", "pairs") is the earlier single fitted model.
+    ``trend_rcond``: singular values of the trend's design [1, c] below ``trend_rcond`` x the
+    largest count as zero in the pseudo-inverse (0: numerical precision only, the literal
+    Eq. 12-13). Parameters that vary together (the two support strides of a symmetric walk)
+    leave a thin direction whose hyperplane slope fits noise; a cut drops it."""
 
     def __init__(
         self, variogram_model: str = "auto", n_bins: int | None = None, standardize: bool = True,
         variogram_scale: str = "sd", variogram_weights: str = "cressie", max_lag: float = MAX_LAG,
+        trend_rcond: float = 0.0,
     ):
         if variogram_model != "auto" and variogram_model not in VARIOGRAM_MODELS:
             raise ValueError(f"UniversalKriging: unknown variogram model {variogram_model!r} "
@@ -290,6 +295,9 @@ class UniversalKriging:
         self.variogram_scale = variogram_scale
         self.variogram_weights = variogram_weights
         self.max_lag = max_lag
+        if not 0.0 <= trend_rcond < 1.0:
+            raise ValueError(f"UniversalKriging: trend_rcond must be in [0, 1); got {trend_rcond!r}")
+        self.trend_rcond = trend_rcond
 
     def _scale(self, x: np.ndarray) -> np.ndarray:
         return (x - self.x_mean_) / self.x_scale_
@@ -308,7 +316,9 @@ class UniversalKriging:
         self.x_scale_ = np.where(sd > 1e-12, sd, 1.0) if self.standardize else np.ones(x.shape[1])
         xs = self._scale(x)
         design = np.concatenate([np.ones((len(xs), 1)), xs], axis=1)
-        self.trend_ = np.linalg.pinv(design) @ y  # Eq. 12-13: hyperplane coefficients
+        # Eq. 12-13: hyperplane coefficients by pseudo-inverse; with trend_rcond > 0 the
+        # directions of the parameter cloud thinner than trend_rcond x its widest carry no trend
+        self.trend_ = np.linalg.pinv(design, rcond=max(self.trend_rcond, 1e-15)) @ y
         self.residuals_ = y - design @ self.trend_
         # dimensions the trend explains up to rounding are constant (else "sd" would scale noise up)
         exact = self.residuals_.std(axis=0) <= 1e-10 * max(float(y.std(axis=0).max(initial=0.0)), 1e-300)

@@ -91,6 +91,8 @@ class StyleVariationModel:
             :mod:`.kriging` (default "auto": chosen by fit; "sd": output dimensions
             weighed by 1/variance; "linear", "none" is the earlier single model).
         flight: predict the root height curve (behaviours with flight phases, Sec. 6.3).
+        trend_rcond: relative cut-off of the pseudo-inverse of each group's Kriging trend
+            (Eq. 12-13; :class:`.kriging.UniversalKriging`); 0 is the literal fit.
     """
 
     def __init__(
@@ -101,8 +103,10 @@ class StyleVariationModel:
         flight: bool = False,
         n_bins: int | None = None,
         variogram_scale: str = "sd",
+        trend_rcond: float = 0.0,
     ):
         self.groups = {g: np.asarray(v, dtype=np.int64) for g, v in groups.items()}
+        self.trend_rcond = trend_rcond
         self.structure = structure
         self.variogram_model = variogram_model
         self.variogram_scale = variogram_scale
@@ -150,7 +154,8 @@ class StyleVariationModel:
             lead = g == self.timing_group_
             codec = ClipCodec.fit(clips, joints, timing=lead, root_height=lead and self.flight)
             x = np.concatenate([clips.style, self.xi_[g][:, None]], axis=1)
-            krig = UniversalKriging(self.variogram_model, self.n_bins, variogram_scale=self.variogram_scale)
+            krig = UniversalKriging(self.variogram_model, self.n_bins, variogram_scale=self.variogram_scale,
+                                    trend_rcond=self.trend_rcond)
             krig = krig.fit(x, codec.encode(clips))
             self.interpolators_[g] = (codec, krig)
         return self

@@ -21,7 +21,13 @@ def cubic_bspline(r: np.ndarray) -> np.ndarray:
 
 
 class RBFInterpolation:
-    """f(x) = a_0 + a x + sum_i w_i B(2 ||x - x_i|| / radius_i), vector-valued."""
+    """f(x) = a_0 + a x + sum_i w_i B(2 ||x - x_i|| / radius_i), vector-valued.
+
+    ``linear_rcond``: relative cut-off of the linear term's pseudo-inverse, as
+    ``trend_rcond`` of :class:`motionvar.ma2010.kriging.UniversalKriging`."""
+
+    def __init__(self, linear_rcond: float = 0.0):
+        self.linear_rcond = linear_rcond
 
     def fit(self, x: np.ndarray, y: np.ndarray) -> "RBFInterpolation":
         x = np.asarray(x, dtype=float)
@@ -33,7 +39,7 @@ class RBFInterpolation:
         self.x_mean_, self.x_scale_ = x.mean(axis=0), np.where(sd > 1e-12, sd, 1.0)
         xs = (x - self.x_mean_) / self.x_scale_
         design = np.concatenate([np.ones((len(xs), 1)), xs], axis=1)
-        self.linear_ = np.linalg.pinv(design) @ y
+        self.linear_ = np.linalg.pinv(design, rcond=max(self.linear_rcond, 1e-15)) @ y
         resid = y - design @ self.linear_
         d = cdist(xs, xs)
         distinct = np.where(d > 1e-12, d, np.inf)
