@@ -95,7 +95,7 @@ def test_claims_merge_rejects_duplicate_claim_ids(tmp_path, capsys):
 
 def test_claims_summary_rejects_a_table_with_unknown_verdicts(tmp_path, capsys):
     table = tmp_path / "claims.csv"
-    pd.DataFrame([dict(zip(CLAIM_COLUMNS, ["du2022.x", "du2022", "s", "s", "s", "s", "maybe", ""]))]).to_csv(
+    pd.DataFrame([dict(zip(CLAIM_COLUMNS, ["du2022.x", "du2022", "s", "s", "s", "s", "maybe", "", "", "", "", ""]))]).to_csv(
         table, index=False)
     out = tmp_path / "summary.html"
     fake = FakeSnakemake(tmp_path, "claims_summary", input=Named(claims=str(table)), output=Named([str(out)]),

@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import json
 import math
+import numbers
 from collections.abc import Iterable, Sequence
 from dataclasses import asdict, dataclass, field
 from pathlib import Path
@@ -25,7 +26,10 @@ import pandas as pd
 CHECKED_VERDICTS = ("reproduced", "partial", "not reproduced")
 UNDECIDED_VERDICTS = ("not testable", "not applicable")
 VERDICTS = CHECKED_VERDICTS + UNDECIDED_VERDICTS
-CLAIM_COLUMNS = ("claim_id", "paper", "source", "statement", "published", "measured", "verdict", "note")
+TEXT_COLUMNS = ("claim_id", "paper", "source", "statement", "published", "measured", "verdict", "note")
+CLAIM_COLUMNS = (*TEXT_COLUMNS, "value", "bound", "unit", "direction")
+#: how a claim's ``value`` is compared with its ``bound`` for the verdict
+DIRECTIONS = ("<=", ">=", "<", ">", "")
 
 
 @dataclass(frozen=True)
@@ -33,6 +37,10 @@ class Claim:
     """One checked statement of a paper.
 
     ``note`` says why a claim did not reproduce, or what differs from the paper's setup.
+    ``value`` is the number the verdict is computed from (in ``unit``), ``bound`` the number
+    it is compared with in ``direction`` (e.g. max stride error 1.88 "<=" 1.2 cm; a share of
+    cases 0.8 ">=" 1.0): what a stability run aggregates over seeds. Claims without a single
+    deciding number leave them None (claims files written before these fields still read).
     """
 
     claim_id: str
@@ -43,6 +51,10 @@ class Claim:
     measured: str
     verdict: str
     note: str = ""
+    value: float | None = None
+    bound: float | None = None
+    unit: str = ""
+    direction: str = ""
 
     def __post_init__(self) -> None:
         if self.verdict not in VERDICTS:
@@ -51,6 +63,14 @@ class Claim:
             raise ValueError(f"claim {self.claim_id}: id must start with the paper key {self.paper!r}")
         if self.verdict in UNDECIDED_VERDICTS and not self.note.strip():
             raise ValueError(f"claim {self.claim_id}: a {self.verdict!r} claim needs its reason in the note")
+        if self.direction not in DIRECTIONS:
+            raise ValueError(f"claim {self.claim_id}: direction {self.direction!r} not in {DIRECTIONS}")
+        for name in ("value", "bound"):
+            v = getattr(self, name)
+            if v is not None:
+                if isinstance(v, bool) or not isinstance(v, numbers.Real):
+                    raise ValueError(f"claim {self.claim_id}: {name} must be a number or None; got {v!r}")
+                object.__setattr__(self, name, float(v))  # numpy scalars -> float (JSON)
 
 
 class NotApplicable(Exception):
@@ -145,7 +165,7 @@ def write_claims(path: str | Path, claims: Sequence[Claim]) -> None:
     ids = [c.claim_id for c in claims]
     if len(set(ids)) != len(ids):
         raise ValueError(f"{path}: duplicate claim ids {ids}")
-    path.write_text(json.dumps([asdict(c) for c in claims], indent=2) + "\n")
+    path.write_text(json.dumps([asdict(c) for c in claims], indent=2, allow_nan=True) + "\n")
 
 
 def read_claims(path: str | Path) -> list[Claim]:

@@ -10,7 +10,7 @@ from pathlib import Path
 
 import pandas as pd
 
-from ..claims import CHECKED_VERDICTS, CLAIM_COLUMNS, UNDECIDED_VERDICTS, VERDICTS
+from ..claims import CHECKED_VERDICTS, CLAIM_COLUMNS, TEXT_COLUMNS, UNDECIDED_VERDICTS, VERDICTS
 
 VERDICT_COLOURS = {
     "reproduced": "#c9ecd0", "partial": "#ffe8a8", "not reproduced": "#f6c6c6",
@@ -26,8 +26,11 @@ def read_claims_table(path: str | Path) -> pd.DataFrame:
         table = pd.read_csv(path, dtype=str, keep_default_na=False)
     except (pd.errors.ParserError, pd.errors.EmptyDataError, UnicodeDecodeError) as exc:
         raise ValueError(f"{path}: not a readable claims table ({exc})") from exc
-    if list(table.columns) != list(CLAIM_COLUMNS):
-        raise ValueError(f"{path}: columns {list(table.columns)}, expected {list(CLAIM_COLUMNS)}")
+    cols = list(table.columns)
+    if cols == list(CLAIM_COLUMNS[:len(TEXT_COLUMNS)]):  # written before claims carried value and bound
+        table = table.reindex(columns=list(CLAIM_COLUMNS), fill_value="")
+    elif cols != list(CLAIM_COLUMNS):
+        raise ValueError(f"{path}: columns {cols}, expected {list(CLAIM_COLUMNS)}")
     bad = sorted(set(table["verdict"]) - set(VERDICTS))
     if bad:
         raise ValueError(f"{path}: unknown verdicts {bad} (expected {list(VERDICTS)})")
