@@ -11,6 +11,8 @@ from .common import (
 )
 from .progress import Progress
 
+CLEANUPS = ("root", "root+feet")  # motionvar.ma2010.postprocess.CLEANUPS (not imported: --help stays fast)
+
 MODEL = "ma2010/style_variation.npz"
 MODEL_SETTINGS = "ma2010/style_variation.json"
 WHAT = "the Ma 2010 style-and-variation model"
@@ -22,7 +24,9 @@ def add_parser(sub: argparse._SubParsersAction, common) -> None:
         "ma2010", parents=[common()], help="style-and-variation walks (Ma et al. 2010)",
         description="Walks of the given style with latent variation drawn from the parameter propagation network "
                     "(Eq. 10) once per variant, or fixed with --xi; cycles predicted by Eq. 11-13, joined by "
-                    "transitions (Eq. 14-15), root from footskate cleanup (Sec. 6.3). One BVH per variant.")
+                    "transitions (Eq. 14-15), root from footskate cleanup (Sec. 6.3), by default followed by pinning "
+                    "the feet in contact with leg IK (Kovar et al. 2002; --cleanup root: the paper's alone). One BVH "
+                    "per variant.")
     p.add_argument("--style", required=True,
                    help="the style parameters: the strides (cm) of the left and right support phase; one number "
                         "for both or two comma-separated (`motionvar models` shows the range)")
@@ -31,6 +35,10 @@ def add_parser(sub: argparse._SubParsersAction, common) -> None:
                         "arm, D upper body; any subset) or 4 numbers A,B,C,D; the others are drawn from Eq. 10")
     p.add_argument("--seconds", type=float, default=10.0, help="length of each walk (s; default 10)")
     p.add_argument("--variants", type=int, default=1, help="number of walks, each with its own xi (default 1)")
+    p.add_argument("--cleanup", choices=CLEANUPS, default="root+feet",
+                   help="footskate cleanup: 'root' the paper's (Sec. 6.3: the support foot is fixed and the root "
+                        "follows; the other foot of a double support slides, 1-3 cm/s), 'root+feet' (default) that "
+                        "root, then every foot in contact held still by leg IK (Kovar et al. 2002)")
     p.add_argument("--out", required=True, help="output folder (ma2010_<style>_v<k>.bvh)")
     p.set_defaults(run=run)
 
@@ -79,7 +87,8 @@ def run(args: argparse.Namespace) -> int:
     solver = root_solver(model.skeleton_, saved.joint_map)
     rig = dataset_rig(rd)
     with Progress("ma2010 walks", args.variants, enabled=not args.quiet) as bar:
-        walks = generate_walks(model, solver, style, seconds, args.variants, args.seed, xi, progress=bar)
+        walks = generate_walks(model, solver, style, seconds, args.variants, args.seed, xi, progress=bar,
+                               cleanup=args.cleanup)
     tag = "_".join(f"{v:g}" for v in style)
     paths = [folder / f"ma2010_{tag}_v{k + 1}.bvh" for k in range(len(walks))]
     write_motions(paths, [on_rig(w.motion, rig) for w in walks], args.unit_cm)
@@ -90,7 +99,7 @@ def run(args: argparse.Namespace) -> int:
         say(f"{p}: {w.motion.n_frames} frames at {w.motion.fps:g} fps ({w.motion.duration:.2f} s); style "
             f"{', '.join(f'{v:g}' for v in style)} {saved.style_unit}; measured strides "
             f"{m['left_support_stride_cm']:.1f}, {m['right_support_stride_cm']:.1f} cm; foot skating "
-            f"{m['foot_skating_cm_s']:.2f} cm/s; xi: {xi_text}{drawn}")
+            f"{m['foot_skating_cm_s']:.2f} cm/s (cleanup {args.cleanup}); xi: {xi_text}{drawn}")
         if not w.accepted:
             note(f"warning: {p}: no draw of xi in {w.draws} gave the requested strides within {STRIDE_TOLERANCE:.0%}; "
                  f"this is the closest (try another --seed or --xi)")

@@ -6,7 +6,9 @@ variant draws the remaining xi from the parameter propagation network once (Eq. 
 person walks the whole sequence), predicts the gait cycle (Eq. 11-13), repeats it for the
 requested duration with transitions (Eq. 14-15) and recovers the root by footskate
 cleanup (Sec. 6.3) — the path of "ours" in Sec. 7.4 (:mod:`.comparison`), here with the
-user's style and xi instead of the examples' median.
+user's style and xi instead of the examples' median. The cleanup is the solver's
+(:class:`.synthesis.RootSolver` ``cleanup``; the command asks for "root+feet", the
+paper's root plus the feet in contact pinned by leg IK [KSG02], unless told "root").
 
 :func:`style_range` is the range of style parameters the model is asked for: the
 examples' range widened by :data:`STYLE_MARGIN` of it on each side (universal Kriging
@@ -21,7 +23,7 @@ walk misses the requested strides (:data:`STRIDE_TOLERANCE`).
 from __future__ import annotations
 
 from collections.abc import Callable, Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -219,6 +221,7 @@ def generate_walks(
     progress: Callable[[int, int], None] | None = None,
     tolerance: float = STRIDE_TOLERANCE,
     max_draws: int = MAX_DRAWS,
+    cleanup: str | None = None,
 ) -> list[GeneratedWalk]:
     """``n_variants`` walks of ``seconds`` s (``round(seconds * fps) + 1`` frames) at style
     ``style`` (module docstring). Variant ``v`` draws from
@@ -227,7 +230,12 @@ def generate_walks(
     support strides (Sec. 7.2, as every walk model here: :func:`.examples.build_clipset`): a
     draw whose walk misses them by more than ``tolerance`` (relative) is drawn again, at
     most ``max_draws`` times (:data:`STRIDE_TOLERANCE`); with every groups' xi given there
-    is nothing to draw again. ``progress(done, total)`` is called after every variant."""
+    is nothing to draw again. ``progress(done, total)`` is called after every variant.
+    ``cleanup`` overrides the solver's footskate cleanup (:data:`.postprocess.CLEANUPS`:
+    "root" the paper's, "root+feet" with the feet in contact pinned by leg IK); None keeps
+    the solver's."""
+    if cleanup is not None:
+        solver = replace(solver, cleanup=cleanup)
     if not seconds > 0:
         raise ValueError(f"generate_walks: seconds must be positive; got {seconds}")
     if n_variants < 1:

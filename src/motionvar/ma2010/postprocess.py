@@ -2,7 +2,11 @@
 (Eq. 14-15) and footskate cleanup, which computes the root motion.
 
 Poses here are local rotations (T, J, 4) plus, optionally, a root height curve (T,);
-the root position is set by :func:`reconstruct_root` at the end.
+the root position is set by :func:`reconstruct_root` at the end. Footskate cleanup comes
+in two forms (:data:`CLEANUPS`): "root", the paper's (the support foot is fixed and
+treated as the root, [TLP07]; the other foot of a double support is not held and slides),
+and "root+feet", that root followed by [KSG02] in its simplest form (:func:`pin_feet`:
+every foot in contact is held where its contact began by analytic leg IK).
 """
 
 from __future__ import annotations
@@ -11,8 +15,10 @@ import numpy as np
 from scipy.signal import find_peaks
 
 from ..core.kinematics import fk
+from ..core.leg_ik import two_bone_ik
 from ..core.quaternions import qdistance_sinusoidal, qexp, qinv, qlog, qmul, qrot, quat_about_axis
 from ..core.skeleton import Skeleton
+from ..prep.intervals import mask_to_intervals
 
 
 def pose_distance(pose: np.ndarray, poses: np.ndarray) -> np.ndarray:
@@ -228,3 +234,148 @@ def reconstruct_root(
     root = np.cumsum(step, axis=0)
     root[:, 1] = height
     return root
+
+
+#: Footskate cleanups: "root" (Sec. 6.3 as published: :func:`reconstruct_root`) and
+#: "root+feet" (that root, then every foot in contact pinned by leg IK, :func:`pin_feet`).
+CLEANUPS = ("root", "root+feet")
+
+
+def check_cleanup(cleanup: str) -> str:
+    if cleanup not in CLEANUPS:
+        raise ValueError(f"footskate cleanup must be one of {list(CLEANUPS)}; got {cleanup!r}")
+    return cleanup
+
+
+#: Where a pinned foot is held during a contact (:func:`contact_offsets`).
+ANCHORS = ("median", "start")
+
+
+def contact_offsets(
+    foot_positions: np.ndarray, contacts: np.ndarray, planted: np.ndarray, blend_frames: int, anchor: str = "median"
+) -> np.ndarray:
+    """Horizontal displacement (T, S, 3; y = 0) that holds each of S feet still during its
+    contacts, blended in before and out after each contact.
+
+    Within a contact the foot's contact point is the joint nearest its planted height,
+    taken per frame pair as :func:`..metrics.foot_skating.contact_point_speeds` takes it
+    (the ankle while the heel is down, the toe as the foot rolls over it); its horizontal
+    travel since the contact's first frame is accumulated, and the displacement is the
+    anchor minus that travel, so that moving the whole foot by it (its orientation kept)
+    leaves the contact point still while the foot rolls. ``anchor`` "median": the median
+    travel over the contact (per axis), i.e. where the foot stands in most of the contact:
+    after :func:`reconstruct_root`, where the root holds it as the support foot, so the
+    support foot's leg needs no correction and only the double-support frames at the
+    contact's ends do (a foot that is never the support is held near its middle position).
+    "start": where the contact began (the displacement then stays through the support
+    phase, where a nearly straight leg may not reach it).
+
+    Towards a contact the displacement is blended in over the ``blend_frames`` frames
+    before its first frame and out over those after its last frame (Eq. 15's weights,
+    within the gap to the foot's neighbouring contacts), so the swinging foot takes it
+    up and back smoothly. Loops over contacts, not frames.
+
+    Args:
+        foot_positions: (T, S, F, 3) global positions of F joints of S feet (ankle first).
+        contacts: (T, S) contact masks.
+        planted: (S, F) planted height of each joint.
+        blend_frames: frames over which the displacement is blended in and out.
+        anchor: "median" or "start" (:data:`ANCHORS`).
+    """
+    if anchor not in ANCHORS:
+        raise ValueError(f"contact_offsets: anchor must be one of {list(ANCHORS)}; got {anchor!r}")
+    p = np.asarray(foot_positions, dtype=float)
+    c = np.asarray(contacts, dtype=bool)
+    T, S = p.shape[:2]
+    if c.shape != (T, S):
+        raise ValueError(f"contact_offsets: contacts must be (T, S) = {(T, S)}; got {c.shape}")
+    above = np.maximum(p[1:, ..., 1], p[:-1, ..., 1]) - np.asarray(planted, dtype=float)  # (T-1, S, F)
+    point = np.argmin(above, axis=2)
+    step = np.take_along_axis(np.diff(p, axis=0), point[..., None, None], axis=2)[:, :, 0]  # (T-1, S, 3)
+    step[..., 1] = 0.0
+    step[~(c[1:] & c[:-1])] = 0.0
+    travel = np.concatenate([np.zeros((1, S, 3)), np.cumsum(step, axis=0)])  # (T, S, 3)
+    out = np.zeros((T, S, 3))
+    for f in range(S):  # loop over feet and their contacts
+        runs = mask_to_intervals(c[:, f])
+        prev = np.concatenate([[0], runs[:-1, 1]])
+        nxt = np.append(runs[1:, 0], T)
+        for (s, e), a, b in zip(runs, prev, nxt):
+            ref = np.median(travel[s:e, f], axis=0) if anchor == "median" else travel[s, f]
+            out[s:e, f] = ref - travel[s:e, f]
+            k_in, k_out = min(int(blend_frames), s - a), min(int(blend_frames), b - e)
+            if k_in > 0:
+                out[s - k_in:s, f] += blend_weights(k_in + 2)[-2:0:-1, None] * out[s, f]
+            if k_out > 0:
+                out[e:e + k_out, f] += blend_weights(k_out + 2)[1:-1, None] * out[e - 1, f]
+    return out
+
+
+def leg_chains(skeleton: Skeleton, feet: np.ndarray) -> np.ndarray:
+    """(2, 3) hip, knee and ankle joints of each leg: the ankle (``feet[:, 0]``), its
+    parent (the knee) and that one's parent (the hip joint, which turns the thigh)."""
+    ankles = np.asarray(feet, dtype=np.int64).reshape(2, -1)[:, 0]
+    knees = skeleton.parents[ankles]
+    hips = skeleton.parents[knees]
+    if np.any(knees < 0) or np.any(hips < 0) or np.any(skeleton.parents[np.maximum(hips, 0)] < 0):
+        raise ValueError(f"leg_chains: the ankles {[skeleton.names[a] for a in ankles]} need a knee, a hip and the "
+                         "hip's parent above them")
+    return np.stack([hips, knees, ankles], axis=1)
+
+
+#: Time (s) over which a pinned foot's displacement is blended in before and out after its
+#: contact: a quarter of a walking swing (~0.4 s, docs/gait.md), as the foot lands or lifts off.
+FOOT_BLEND_S = 0.1
+
+
+def pin_feet(
+    rotations: np.ndarray,
+    root: np.ndarray,
+    skeleton: Skeleton,
+    feet: np.ndarray,
+    planted: np.ndarray,
+    contacts: np.ndarray,
+    blend_frames: int,
+    anchor: str = "median",
+) -> np.ndarray:
+    """Footskate cleanup of [KSG02] in its simplest form, after :func:`reconstruct_root`:
+    each foot in contact is held still (:func:`contact_offsets`: where it stands in most of
+    the contact, ``anchor``; blended in and out over ``blend_frames`` at the contact's
+    ends) by analytic two-bone IK of its leg
+    (:func:`motionvar.core.leg_ik.two_bone_ik`: law of cosines for the knee, the knee's
+    swivel plane kept, the foot's global orientation kept). The root is not moved. The
+    support foot, which the root already holds, needs (next to) no correction; the other
+    foot of a double support, which slides under the paper's cleanup, is pinned.
+
+    Args:
+        rotations: (T, J, 4) local rotations; root: (T, 3) root positions.
+        feet: (2, F) joints of the left and right foot (ankle first), planted: (2, F)
+            their planted heights (as :func:`reconstruct_root`).
+        contacts: (T, 2) contact masks of the two feet (the project's contact detection).
+        blend_frames, anchor: see :func:`contact_offsets`.
+
+    Returns the new local rotations (T, J, 4); only the legs' hip, knee and ankle joints
+    change, and only on frames with a displacement (a copy of ``rotations`` otherwise).
+    Vectorised over frames: the loop is over the two legs.
+    """
+    feet = np.asarray(feet, dtype=np.int64).reshape(2, -1)
+    legs = leg_chains(skeleton, feet)
+    pos, grot = fk(rotations, root, skeleton.offsets, skeleton.parents, return_rotations=True)
+    offset = contact_offsets(pos[:, feet], contacts, planted, blend_frames, anchor)
+    out = np.array(rotations, dtype=float, copy=True)
+    for f, (hip, knee, ankle) in enumerate(legs):  # loop over the two legs
+        t = np.flatnonzero(np.any(offset[:, f] != 0.0, axis=-1))
+        if not len(t):
+            continue
+        # a straight knee bends over the toes
+        forward = pos[t, feet[f, 1]] - pos[t, ankle] if feet.shape[1] > 1 else None
+        ik = two_bone_ik(pos[t, hip], pos[t, knee], pos[t, ankle], grot[t, hip], grot[t, knee],
+                         pos[t, ankle] + offset[t, f], fallback_pole=forward)
+        new = np.stack([
+            qmul(qinv(grot[t, skeleton.parents[hip]]), ik.hip_rotation),
+            qmul(qinv(ik.hip_rotation), ik.knee_rotation),
+            qmul(qinv(ik.knee_rotation), grot[t, ankle]),  # the foot keeps its orientation
+        ], axis=1)  # (n, 3, 4)
+        old = out[t[:, None], [hip, knee, ankle]]
+        out[t[:, None], [hip, knee, ankle]] = np.where(np.sum(new * old, axis=-1, keepdims=True) < 0, -new, new)
+    return out

@@ -16,7 +16,7 @@ from ..core.motion import Motion
 from ..core.skeleton import Skeleton
 from ..core.quaternions import qnormalize, qslerp
 from .correspondence import retime_frames
-from .postprocess import land, reconstruct_root
+from .postprocess import CLEANUPS, FOOT_BLEND_S, land, pin_feet, reconstruct_root
 
 
 def rest_foot_heights(skeleton: Skeleton, joints: np.ndarray) -> np.ndarray:
@@ -43,17 +43,32 @@ class RootSolver:
     threshold (cm), and the support foot's minimum contact time ``min_support_s`` (s;
     0 = the literal per-frame rule, the lower foot of every frame supports; see
     :func:`.postprocess.support_foot`). ``left_foot`` / ``right_foot`` name the joint whose
-    travel measures a stride (the ankle)."""
+    travel measures a stride (the ankle).
+
+    ``cleanup`` (:data:`.postprocess.CLEANUPS`): "root", the paper's footskate cleanup
+    (the default, what every evaluation uses): the support foot is fixed and the root
+    follows from it (:func:`.postprocess.reconstruct_root`); "root+feet": that root, then
+    every foot in contact (the project's contact detection on the root-solved motion, as
+    the foot-skating measure sees it) is held still by leg IK where it stands in most of
+    the contact, blended in and out over ``foot_blend_s`` at the contact's ends ([KSG02],
+    :func:`.postprocess.pin_feet`), so the other foot of a double support does not slide
+    either."""
 
     skeleton: Skeleton
     feet: np.ndarray
     planted: np.ndarray
     flight_threshold: float | None = None
     min_support_s: float = MIN_SUPPORT_S
+    cleanup: str = "root"
+    foot_blend_s: float = FOOT_BLEND_S
 
     def __post_init__(self) -> None:
         if not (np.isfinite(self.min_support_s) and self.min_support_s >= 0):
             raise ValueError(f"RootSolver: min_support_s must be >= 0 s; got {self.min_support_s}")
+        if self.cleanup not in CLEANUPS:
+            raise ValueError(f"RootSolver: cleanup must be one of {list(CLEANUPS)}; got {self.cleanup!r}")
+        if not (np.isfinite(self.foot_blend_s) and self.foot_blend_s >= 0):
+            raise ValueError(f"RootSolver: foot_blend_s must be >= 0 s; got {self.foot_blend_s}")
 
     @property
     def left_foot(self) -> int:
@@ -64,12 +79,22 @@ class RootSolver:
         return int(self.feet[1, 0])
 
     def motion(self, rotations: np.ndarray, fps: float, root_height: np.ndarray | None = None) -> Motion:
+        """The motion of ``rotations`` (T, J, 4) at ``fps`` with its root recovered (and, with
+        ``cleanup`` "root+feet", its feet pinned); ``root_height`` (T,) is used in flight."""
         root = reconstruct_root(
             rotations, self.skeleton, self.feet, self.planted,
             root_height=root_height if self.flight_threshold is not None else None,
             flight_threshold=self.flight_threshold, min_support_frames=int(round(self.min_support_s * fps)),
         )
-        return Motion(skeleton=self.skeleton, root_pos=root, rotations=rotations, fps=fps)
+        motion = Motion(skeleton=self.skeleton, root_pos=root, rotations=rotations, fps=fps)
+        if self.cleanup == "root" or len(rotations) < 2:  # one frame: nothing can slide
+            return motion
+        from .examples import foot_contacts  # the contact detection the measures use (imported here: no cycle)
+
+        contacts = foot_contacts(motion, self)
+        pinned = pin_feet(rotations, root, self.skeleton, self.feet, self.planted, contacts,
+                          int(round(self.foot_blend_s * fps)))
+        return Motion(skeleton=self.skeleton, root_pos=root, rotations=pinned, fps=fps)
 
 
 def realtime_clips(
