@@ -46,6 +46,7 @@ include: "workflow/rules/ma2010.smk"
 include: "workflow/rules/egges2004.smk"
 include: "workflow/rules/applicability.smk"
 include: "workflow/rules/report.smk"
+include: "workflow/rules/stability.smk"
 
 
 rule all:

@@ -37,6 +37,21 @@ def test_shipped_configs_are_valid():
     validate(merged(load("config.yaml"), load("ci.yaml")), SCHEMA)
 
 
+def test_seeds_config_is_the_ci_config_for_five_seeds():
+    """config/seeds.yaml: five synthetic datasets (seeds 0-4) compared by claims_stability,
+    with exactly the reduced sizes of config/ci.yaml (so the two cannot drift apart)."""
+    seeds, ci = load("seeds.yaml"), load("ci.yaml")
+    validate(merged(load("config.yaml"), copy.deepcopy(seeds)), SCHEMA)
+    names = [f"synthetic_s{k}" for k in range(5)]
+    assert seeds["run_datasets"] == names and seeds["stability"]["datasets"] == names
+    assert [seeds["datasets"][n]["seed"] for n in names] == list(range(5))
+    shared = {k: v for k, v in ci.items() if k != "datasets"}
+    assert {k: v for k, v in seeds.items() if k not in ("datasets", "run_datasets", "stability")} == shared
+    for n in names:
+        assert {k: v for k, v in seeds["datasets"][n].items() if k not in ("seed", "subjects")} == \
+            {k: v for k, v in ci["datasets"]["synthetic"].items() if k != "subjects"} | {"source": "synthetic"}
+
+
 def test_defaults_are_filled_per_source():
     cfg = {"datasets": {"synthetic": {"source": "synthetic"}, "mine": {"source": "bvh", "path": "x", "unit_cm": 1.0}}}
     validate(cfg, SCHEMA)
@@ -103,6 +118,8 @@ def run_dry(tmp_path, config_text):
         ("prep: {heading: sideways}\n", "config key prep.heading: 'sideways' is not one of"),
         ("datasets:\n  cmu: {source: bvh, path: /data}\n", "config key datasets.cmu: 'unit_cm' is a required property"),
         ("run_datasets: [cmu]\n", "run_datasets names ['cmu'], not in datasets"),
+        ("stability: {datasets: [s0, synthetic]}\n", "stability.datasets names ['s0'], not in datasets"),
+        ("stability: {datasets: [synthetic]}\n", "stability.datasets needs at least 2 datasets"),
     ],
 )
 def test_bad_config_stops_the_run_naming_the_key(tmp_path, text, expected):

@@ -10,6 +10,7 @@ import numpy as np
 import pytest
 import matplotlib.pyplot as plt
 import yaml
+from claim_checks import check_value_bound
 from egges2004_toy import toy_dataset
 from matplotlib.figure import Figure
 
@@ -127,6 +128,9 @@ def test_evaluations_on_toy_subjects(fitted):
         "source.str.startswith('generated') and features == 'all'", engine="python")["windows"].iloc[0]
     assert result.figure["labels"] == ["01", "02", "03"] and result.figure["window_s"] == 5.0
     assert claim.claim_id == "egges2004.sec8.generated_idle_identifies_person"
+    acc = table[table["features"] == "all"].set_index("source")["accuracy"]
+    assert claim.value == pytest.approx(acc["generated (Egges 2004)"] - acc["Perlin noise on PCs"])
+    check_value_bound(claim)  # reproduced needs generated >= Perlin (and above chance)
     assert isinstance(figures.draw_identification(result), Figure)
 
     params = RepetitionParams(sequence_s=30.0, window_s=3.0, fps=10.0, loop_clip_s=5.0)
@@ -135,6 +139,10 @@ def test_evaluations_on_toy_subjects(fitted):
     assert pooled["looped recorded clip"].min() > 0.99 and pooled["looped rest variations"].min() > 0.99
     assert np.median(pooled["generated variations (Sec. 6)"]) < 0.99
     assert claim.verdict in ("reproduced", "partial", "not reproduced") and result.figure["n_pcs"] == 4
+    cut, rec = (np.median(pooled[k]) for k in ("generated variations, cut to the recorded length",
+                                               "recorded rest variations"))
+    assert (claim.value, claim.bound, claim.direction) == (cut, rec, "<=")
+    check_value_bound(claim)
     assert isinstance(figures.draw_repetition(result), Figure)
 
     # windows longer than half the recorded rests: those are left out, the rest is still measured
@@ -149,10 +157,14 @@ def test_evaluations_on_toy_subjects(fitted):
     result = repetition(model, recordings, params, 0)
     assert len(result.figure["pooled"]["recorded rest variations"]) == 0
     assert result.claims[0].verdict in ("partial", "not reproduced")
+    assert np.isnan(result.claims[0].bound)  # no recorded rest to compare with
 
     result = fitting(model, FittingParams(pairs=4, sequence_s=20.0, between_s=10.0, figure_balance_s=10.0), 0)
     assert result.table[["max_start_error_cm", "max_end_error_cm"]].to_numpy().max() < 1e-6
     assert result.claims[0].verdict in ("reproduced", "partial")
+    linear = result.table[result.table["ramp"] == "linear"]
+    assert result.claims[0].value == linear["max_junction_step_ratio"].max() and result.claims[0].bound == 1.0
+    check_value_bound(result.claims[0])
     f = result.figure
     assert f["subject"] == "01" and set(f["fitted"]) == {"linear", "smoothstep"}
     for curve in f["fitted"].values():  # Fig. 4: the fitted shift starts at p and ends at q
@@ -163,6 +175,8 @@ def test_evaluations_on_toy_subjects(fitted):
     result = speed(model, SpeedParams(sequence_s=10.0, repeats=1, subjects=1), 0)
     assert len(result.table) == 1 and result.table["realtime_ratio"].iloc[0] > 1
     assert result.claims[0].verdict == "reproduced"
+    assert result.claims[0].value == result.table["realtime_ratio"].min() and result.claims[0].unit == "ratio"
+    check_value_bound(result.claims[0])
     assert isinstance(figures.draw_speed(result), Figure)
 
 

@@ -9,6 +9,7 @@ import numpy as np
 import pandas as pd
 import pytest
 import torch
+from claim_checks import check_value_bound
 from scipy.integrate import simpson
 
 from motionvar.core import Motion, Skeleton
@@ -509,6 +510,7 @@ def test_basis_sizes_and_fig3_9(canonical_dataset):
     (claim,) = result.claims
     assert claim.claim_id == "du2022.fig3_9.rmse_decreases_with_k" and claim.verdict == "reproduced"
     assert "2/2 behaviours strictly decreasing" in claim.measured
+    assert (claim.value, claim.bound, claim.unit, claim.direction) == (1.0, 1.0, "share", ">=")
     fig = draw_fig3_9(result)
     assert len(fig.axes) == 2
     plt.close(fig)
@@ -554,6 +556,10 @@ def test_fig3_10(fda_curves):
     first = result.claims[0]  # FPCA minimises the feature-space error (Eq. 3.3)
     assert first.verdict == "reproduced" and first.measured.startswith("FPCA lowest in 4/4")
     assert re.match(r"\d+/12 curves monotone", result.claims[3].measured)  # 2 primitives x 3 FPCAs x 2 spaces
+    assert first.value == 1.0 and result.claims[3].value == int(result.claims[3].measured.split("/")[0]) / 12
+    assert result.claims[1].bound == pytest.approx(0.5)  # "most": more than half of the cases
+    for c in result.claims:
+        check_value_bound(c)
     no_pick = evaluate_fig3_10(fda_curves[:2], methods, ["walk_leftStance"], "pick_reach")
     assert len(no_pick.claims) == 3
     fig = draw_fig3_10(result)
@@ -575,6 +581,8 @@ def test_fig3_11(fda_curves):
             assert row["silhouette"] == sep["silhouette"] and row["knn3_accuracy"] == sep["knn_accuracy"]
     (claim,) = result.claims
     assert claim.claim_id == "du2022.fig3_11.sfpca_best_separation_pick" and "3-NN accuracy" in claim.measured
+    assert claim.value in (0.0, 0.5, 1.0) and claim.unit == "share"
+    check_value_bound(claim)
     panels = result.figure["panels"]
     assert len(panels) == 2 and panels[1][0]["xy"].shape == (14, 2)
     fig = draw_fig3_11(result)

@@ -8,6 +8,7 @@ import json
 import numpy as np
 import pandas as pd
 import pytest
+from claim_checks import check_value_bound
 from graph_toy import toy_clips
 
 from motionvar.core import cmu_joint_map
@@ -420,8 +421,10 @@ def test_fig4_12_verdicts_follow_the_numbers():
     claims = {c.claim_id.split(".")[-1]: c for c in fig4_12_claims(pd.DataFrame(rows), per_query)}
     assert list(claims)[:3] == [f"kmeans_halves_random_error_{k}" for k in ("position", "orientation", "pose")]
     assert all(c.verdict == "reproduced" for c in claims.values())
+    assert claims["kmeans_under_120_evaluations"].value == 0.75 and claims["gmm_tree_close_to_kmeans"].value == 1.0
     rows = [dict(r, median=r["median"] if r["method"] != "kmeans" else 3.9) for r in rows]
     claims = {c.claim_id.split(".")[-1]: c for c in fig4_12_claims(pd.DataFrame(rows), per_query)}
+    assert claims["kmeans_halves_random_error_position"].value == 0.0  # share of primitives, bound 1
     assert claims["kmeans_halves_random_error_position"].verdict == "not reproduced"
     assert claims["kmeans_near_brute_force_position"].verdict == "not reproduced"
     # where even brute force cannot halve random's error the bar is not testable, never reproduced
@@ -431,9 +434,16 @@ def test_fig4_12_verdicts_follow_the_numbers():
     pose = claims["kmeans_halves_random_error_pose"]
     assert pose.verdict == "not testable" and "0.55" in pose.note and "brute force 0.55" in pose.measured
     assert claims["kmeans_halves_random_error_position"].verdict == "not reproduced"  # brute force can: a verdict
+    assert pose.value is None and pose.direction == ""
+    for c in claims.values():
+        check_value_bound(c)
     assert compactness_claim(1_000, 200_000).verdict == "reproduced"
     assert compactness_claim(1_000, 20_000).verdict == "partial"
     assert compactness_claim(1_000, 2_000).verdict == "not reproduced"
+    for data_bytes in (200_000, 20_000, 2_000):
+        c = compactness_claim(1_000, data_bytes)
+        assert (c.value, c.bound, c.unit) == (data_bytes / 1_000, 100.0, "ratio")
+        check_value_bound(c)
 
 
 def test_primitive_clips_selects_and_names_the_file(dataset):
@@ -462,6 +472,8 @@ def test_search_primitive_and_fig4_12(prim, right):
         "kmeans_halves_random_error_pose", "kmeans_under_120_evaluations", "gmm_tree_close_to_kmeans",
         "median_tree_closer_to_random", "kmeans_near_brute_force_position"]
     assert "beams 2/3/4" in result.claims[0].measured and "kd-tree" in result.claims[5].note
+    for c in result.claims:
+        check_value_bound(c)
     assert len(draw_fig4_12(result).axes) == 2 * 3
 
 
@@ -472,6 +484,8 @@ def test_fig4_9_coverage_of_the_training_clips(prim, dataset):
     assert len(t) == 9 and list(t["joint"].unique()) == ["left_ankle", "left_hand", "right_hand"]
     assert list(t["n_training"]) == [4] * 3 + [8] * 6 and t["coverage"].between(0, 1).all()
     assert result.claims[0].claim_id == "du2022.fig4_9.samples_cover_training"
+    assert result.claims[0].value == t["coverage"].min() and result.claims[0].bound == 0.9
+    check_value_bound(result.claims[0])
     assert result.figure["panels"][0]["density"].shape == (32, 32)
     assert len(draw_fig4_9(result).axes) == 9
 
@@ -490,6 +504,9 @@ def test_fig4_10_follows_path_and_reaches(prim, right, dataset, tmp_path):
     assert (path["max_deviation_cm"] >= path["path_distance_cm"] - 1e-9).all()
     assert "T = 2" in result.claims[0].note and "greedy" in result.claims[0].note
     assert [c.claim_id for c in result.claims] == ["du2022.fig4_10.follows_path", "du2022.fig4_10.reaches_targets"]
+    assert result.claims[0].value == pytest.approx(path["position_error_cm"].mean()) and result.claims[0].unit == "cm"
+    for c in result.claims:
+        check_value_bound(c)
     assert len(result.figure["reaches"]) == 2
     assert len(draw_fig4_10(result).axes) == 2
     animate_fig4_10(result, tmp_path / "fig4_10.gif", max_seconds=0.5, panel_px=60)
@@ -508,6 +525,8 @@ def test_sec4_6_1_compactness(prim, dataset, tmp_path):
     assert t.loc["pick_reach_dense", "data_bytes"] == motion_bytes(120, J)
     assert t.loc["walk_leftStance", "clips"] == 4 and t.loc["all", "model_bytes"] == 2 * size
     assert result.claims[0].claim_id == "du2022.sec4_6_1.model_much_smaller_than_data"
+    assert result.claims[0].value == t.loc["all", "ratio"]
+    check_value_bound(result.claims[0])
     assert len(draw_sec4_6_1(result).axes) == 1
     with pytest.raises(ValueError, match="dense picks"):
         evaluate_sec4_6_1(models, {"walk_leftStance": size, "pick_reach_dense": size}, dataset.metadata)

@@ -10,6 +10,7 @@ import matplotlib.pyplot as plt
 import numpy as np
 import pandas as pd
 import pytest
+from claim_checks import check_value_bound
 from ma2010_toywalk import toy_walk
 
 from motionvar.claims import VERDICTS, NotApplicable
@@ -56,6 +57,7 @@ def check(result, draw, claim_prefix):
     assert len(result.table) and result.claims
     for c in result.claims:
         assert c.claim_id.startswith(f"{PAPER}.{claim_prefix}") and c.verdict in VERDICTS
+        check_value_bound(c)  # the number the verdict comes from travels with the claim
     fig = draw(result)
     assert fig.axes
     plt.close(fig)
@@ -109,6 +111,10 @@ def test_fig6_leave_one_out(walks):
     assert [c.claim_id for c in result.claims] == ["ma2010.fig6.loo_max_stride_error_below_1_2cm",
                                                    "ma2010.mk05.kriging_beats_rbf"]
     assert "steady cycles" in result.claims[0].measured and "upper_body" in result.claims[0].note
+    stride, kriging = result.claims
+    assert stride.value == folds["ours_own_xi_stride_error_cm"].max() and (stride.bound, stride.unit) == (1.2, "cm")
+    diff = folds["kriging_pose_error_cm"].mean() - folds["rbf_pose_error_cm"].mean()
+    assert kriging.value == pytest.approx(diff) and kriging.bound == -0.01 and kriging.direction == "<"
     check(result, figures.draw_fig6, "")
 
 
@@ -188,6 +194,7 @@ def test_fig7b_reliability(walks, model):
     result = fig7b_reliability(walks, model, n_grid=3, margin=0.2)
     assert len(result.table) == 9 and np.all(result.table["nearest_example_cm"] >= 0)
     assert len(result.figure["failed"]) == 9
+    assert result.claims[0].value == result.figure["rho"] or np.isnan(result.figure["rho"])
     check(result, figures.draw_fig7b, "fig7b")
 
 
@@ -200,6 +207,8 @@ def test_fig8_variants_vary_and_interpolations_do_not(walks, model):
     assert min(spreads["ours"].values()) > 0 and max(spreads["RBF"].values()) < 1e-6
     assert min(spreads["ceiling (their own xi)"].values()) > 0 and "ceiling" in result.claims[0].note
     assert result.claims[1].verdict == "reproduced"  # RBF and Kriging give no variation
+    assert result.claims[1].value == max(max(spreads["RBF"].values()), max(spreads["Kriging"].values()))
+    assert result.claims[0].unit == "share" and result.claims[0].value in (0.0, 1 / 3, 2 / 3, 1.0)
     assert len(result.figure["motions"]) == 3
     check(result, figures.draw_fig8, "")
 
@@ -244,4 +253,6 @@ def test_sec8_timing_with_a_fake_clock(walks, model):
     row = result.table.iloc[0]
     assert row["seconds_per_second"] == pytest.approx(0.5 / row["motion_seconds"])
     assert row["example_cycles"] == walks.clips.n_clips and row["subjects"] == 4
+    (claim,) = result.claims
+    assert claim.value == row["seconds_per_second"] and (claim.bound, claim.unit) == (0.15, "s per s")
     check(result, figures.draw_sec8, "sec8")

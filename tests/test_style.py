@@ -9,6 +9,7 @@ import numpy as np
 import pandas as pd
 import pytest
 import torch
+from claim_checks import check_value_bound
 
 from motionvar.core import JointMap, Motion, cmu_joint_map, cmu_skeleton
 from motionvar.core import quaternions as Q
@@ -465,7 +466,7 @@ def style_run(tmp_path_factory, layout):
     small = dict(n_samples=2, latent=4, hidden=(32, 16, 8))
     space, ae_hist = fit_feature_space(dataset, layout, TrainConfig(3, 3e-3, 8, seed=0), window=60, stride=5,
                                        max_windows=8, n_kernels=16)
-    assert list(ae_hist.columns) == ["epoch", "loss", "seconds", "windows"] and (ae_hist["windows"] == 8).all()
+    assert list(ae_hist.columns) == ["epoch", "loss", "end_loss", "seconds", "kept", "windows"] and (ae_hist["windows"] == 8).all()
     space.save(path / "ae.pt")
     vae, shape, info, _ = fit_primitive_vae(dataset, layout, space, "walk_leftStance", TrainConfig(3, 1e-3, 4), **small)
     assert shape == (16, 30) and {k: info[k] for k in ("primitive", "style", "n_clips")} == {
@@ -513,6 +514,8 @@ def test_evaluate_table5_1(style_run, layout):
     n_diag = int((t["row_minimum_at"] == t["model"]).sum())
     assert claim.measured.startswith(f"{n_diag} of 3 rows")
     assert claim.verdict == {3: "reproduced", 2: "partial"}.get(n_diag, "not reproduced")
+    assert claim.value == n_diag / 3 and (claim.bound, claim.unit, claim.direction) == (1.0, "share", ">=")
+    check_value_bound(claim)
     fig = draw_table5_1(result)
     assert isinstance(fig, Figure) and len(fig.axes) == 4  # two heat maps and their colour bars
     plt.close(fig)
@@ -549,6 +552,7 @@ def test_evaluate_table5_2(style_run, layout):
     vae, data, ae = (tt.loc[m, "pose_sd"] for m in ("neutral", "training data", "training data (autoencoder)"))
     credit = 1.0 if abs(vae / data - 1) <= 0.05 else 0.5 if abs(vae / ae - 1) <= 0.05 else 0.0
     assert result.claims[0].verdict == {1.0: "reproduced", 0.5: "partial", 0.0: "not reproduced"}[credit]
+    assert result.claims[0].value == credit  # one primitive: its credit is the share
     assert "through the autoencoder" in result.claims[0].measured
     # claim 3: relative to each model's own training data; the thesis' raw comparison also reported
     ratio = tt["pose_sd"] / tt["training_pose_sd"]
@@ -557,6 +561,9 @@ def test_evaluate_table5_2(style_run, layout):
     assert result.claims[2].measured.startswith(f"{n_own} of 2 relative to their own training data")
     assert f"against the neutral VAE's pose_SD: {n_raw} of 2" in result.claims[2].measured
     assert result.claims[2].verdict == {2: "reproduced", 1: "partial", 0: "not reproduced"}[n_own]
+    assert result.claims[2].value == n_own / 2
+    for c in result.claims:
+        check_value_bound(c)
     assert "Step_SD (cm; means over primitives and styles)" in result.claims[2].note
     fig = draw_table5_2(result)
     assert any(coll.get_label() == "own training data" for ax in fig.axes for coll in ax.collections)

@@ -34,14 +34,23 @@ def test_claims_merge_and_summary(tmp_path):
     html_out = tmp_path / "summary.html"
     fake = FakeSnakemake(
         tmp_path, "claims_summary", input=Named(claims=str(out)), output=Named([str(html_out)]),
-        params=Named(categories={"ma2010": "Ma et al. 2010", "du2022": "Du 2022"}),
+        params=Named(categories={"ma2010": "Ma et al. 2010", "du2022": "Du 2022"}, stability=""),
     )
     run(fake, script("claims_summary").main)
     html = html_out.read_text()
     assert html.index("Ma et al. 2010") < html.index("Du 2022")  # paper order of the categories
     for colour in ("#c9ecd0", "#ffe8a8", "#f6c6c6"):
         assert colour in html
-    assert "statement 3" in html and "&lt; 1 cm" in html
+    assert "statement 3" in html and "&lt; 1 cm" in html and "across seeds" not in html
+    # with a stability run's table, each verdict says whether the seeds agree on it
+    stab = tmp_path / "claims_stability.csv"
+    pd.DataFrame({"claim_id": ["du2022.c1", "ma2010.c3"], "verdict": ["reproduced", "partial"], "n_agree": [5, 3],
+                  "n_seeds": [5, 5], "stable": [True, False]}).to_csv(stab, index=False)
+    fake.params = Named(categories={}, stability=str(stab))
+    run(fake, script("claims_summary").main)
+    html = html_out.read_text()
+    assert "stable across seeds: reproduced in 5/5" in html and "NOT stable across seeds: partial in 3/5" in html
+    assert "not in the stability run" in html  # du2022.c2
 
 
 def test_claims_merge_of_no_evaluations_is_an_empty_table(tmp_path):
@@ -50,7 +59,7 @@ def test_claims_merge_of_no_evaluations_is_an_empty_table(tmp_path):
     assert out.read_text().strip() == ",".join(CLAIM_COLUMNS)
     html_out = tmp_path / "summary.html"
     fake = FakeSnakemake(tmp_path, "claims_summary", input=Named(claims=str(out)), output=Named([str(html_out)]),
-                         params=Named(categories={}))
+                         params=Named(categories={}, stability=""))
     run(fake, script("claims_summary").main)
     assert "No claims yet" in html_out.read_text()
 
@@ -99,7 +108,7 @@ def test_claims_summary_rejects_a_table_with_unknown_verdicts(tmp_path, capsys):
         table, index=False)
     out = tmp_path / "summary.html"
     fake = FakeSnakemake(tmp_path, "claims_summary", input=Named(claims=str(table)), output=Named([str(out)]),
-                         params=Named(categories={}))
+                         params=Named(categories={}, stability=""))
     with pytest.raises(SystemExit):
         run(fake, script("claims_summary").main)
     err = capsys.readouterr().err

@@ -21,6 +21,12 @@ PAPER_CATEGORY = {
 }
 SUMMARY_CATEGORY = "Summary"
 
+# outputs of rule claims_stability (stability.smk), in the default target when config
+# stability.datasets names the datasets of a seeds run (config/seeds.yaml)
+STABILITY = "results/stability"
+STABILITY_CSV = f"{STABILITY}/claims_stability.csv"
+STABILITY_OUTPUTS = [STABILITY_CSV, f"{STABILITY}/claims_stability.png", f"{STABILITY}/claims_stability.html"]
+
 # name -> {"paper": ..., "extra": [path patterns with {dataset}]}
 EVALUATIONS = {}
 
@@ -50,12 +56,20 @@ def validate_config(schema_path):
         if isinstance(cause, jsonschema.ValidationError):
             raise WorkflowError(f"Invalid configuration: {_config_error(cause)}") from None
         raise
-    missing = [d for d in config["run_datasets"] if d not in config["datasets"]]
-    if missing:
-        raise WorkflowError(
-            f"Invalid configuration: run_datasets names {missing}, not in datasets "
-            f"({', '.join(config['datasets'])})"
-        )
+    for key, names in (("run_datasets", config["run_datasets"]), ("stability.datasets", stability_datasets())):
+        missing = [d for d in names if d not in config["datasets"]]
+        if missing:
+            raise WorkflowError(
+                f"Invalid configuration: {key} names {missing}, not in datasets "
+                f"({', '.join(config['datasets'])})"
+            )
+    if len(stability_datasets()) == 1:
+        raise WorkflowError("Invalid configuration: stability.datasets needs at least 2 datasets (one per seed)")
+
+
+def stability_datasets():
+    """The datasets of a claims-stability run (config key stability.datasets; [] for none)."""
+    return list(config.get("stability", {}).get("datasets", []))
 
 
 def config_params(section, keys):
@@ -266,5 +280,7 @@ def default_outputs(dataset):
 
 
 def all_outputs(wildcards):
-    """Input function of the default target: the default outputs of every dataset in run_datasets."""
-    return [path for dataset in run_datasets() for path in default_outputs(dataset)]
+    """Input function of the default target: the default outputs of every dataset in
+    run_datasets, and the claims-stability outputs when stability.datasets names some."""
+    stability = STABILITY_OUTPUTS if stability_datasets() else []
+    return [path for dataset in run_datasets() for path in default_outputs(dataset)] + stability

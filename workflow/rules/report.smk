@@ -93,6 +93,8 @@ rule claims_summary:
         ),
     params:
         categories=PAPER_CATEGORY,
+        # a stability run's table, where one exists (rule claims_stability): each verdict marked stable or not
+        stability=STABILITY_CSV if os.path.exists(STABILITY_CSV) else "",
     log:
         ev_log("claims_summary"),
     benchmark:

@@ -1,15 +1,19 @@
 """Rule claims_summary: the merged claims as an HTML page, one table per paper with the
-verdicts coloured (results/{dataset}/claims_summary.html)."""
+verdicts coloured (results/{dataset}/claims_summary.html), each marked stable or not
+where a stability run exists (results/stability/claims_stability.csv)."""
 
 
 def main(snakemake) -> None:
     from pathlib import Path
 
+    import pandas as pd
+
     from motionvar.report.summary import claims_html, read_claims_table
 
     table = read_claims_table(snakemake.input.claims)
+    stability = pd.read_csv(snakemake.params.stability) if snakemake.params.stability else None
     html = claims_html(table, paper_titles=snakemake.params.categories,
-                       title=f"Claims checked on dataset '{snakemake.wildcards.dataset}'")
+                       title=f"Claims checked on dataset '{snakemake.wildcards.dataset}'", stability=stability)
     Path(snakemake.output[0]).write_text(html, encoding="utf-8")
 
 

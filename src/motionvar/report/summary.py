@@ -45,6 +45,7 @@ th, td { border: 1px solid #ccc; padding: 0.35em 0.5em; text-align: left; vertic
 th { background: #f0f0f0; }
 table.claims { table-layout: fixed; }
 td.verdict { font-weight: bold; font-size: 0.85em; }
+span.stab { font-weight: normal; font-size: 0.85em; }
 td.note { font-size: 0.85em; color: #444; }
 .id { font-family: monospace; font-size: 0.75em; overflow-wrap: anywhere; color: #555; }
 .counts span { display: inline-block; padding: 0.15em 0.6em; margin-right: 0.5em; border-radius: 0.3em; }
@@ -63,12 +64,27 @@ def _counts(verdicts: pd.Series) -> str:
     return checked + (' <span class="apart">not decided:</span> ' + "".join(undecided) if undecided else "")
 
 
+def _stability_text(stability: pd.DataFrame | None, claim_id: str) -> str:
+    if stability is None:
+        return ""
+    rows = stability[stability["claim_id"] == claim_id]
+    if rows.empty:
+        return '<br><span class="stab">not in the stability run</span>'
+    r = rows.iloc[0]
+    word = "stable" if bool(r["stable"]) else "NOT stable"
+    return (f'<br><span class="stab">{word} across seeds: {html.escape(str(r["verdict"]))} in '
+            f'{int(r["n_agree"])}/{int(r["n_seeds"])}</span>')
+
+
 def claims_html(
-    table: pd.DataFrame, paper_titles: Mapping[str, str] | None = None, title: str = "Claims"
+    table: pd.DataFrame, paper_titles: Mapping[str, str] | None = None, title: str = "Claims",
+    stability: pd.DataFrame | None = None,
 ) -> str:
     """An HTML page of ``table`` (columns :data:`motionvar.claims.CLAIM_COLUMNS`):
     counts of verdicts per paper, then per paper a table of its claims in id order.
-    Papers appear in the order of ``paper_titles`` (paper key -> heading), others after."""
+    Papers appear in the order of ``paper_titles`` (paper key -> heading), others after.
+    With ``stability`` (a :func:`motionvar.report.stability.claims_stability` table) each
+    verdict says whether the seeds agree on it."""
     titles = dict(paper_titles or {})
     esc = html.escape
     parts = [
@@ -101,7 +117,8 @@ def claims_html(
             parts.append(
                 f'<tr><td>{esc(r.source)}<br><span class="id">{esc(r.claim_id)}</span></td>'
                 f"<td>{esc(r.statement)}</td><td>{esc(r.published)}</td><td>{esc(r.measured)}</td>"
-                f'<td class="verdict" style="background:{VERDICT_COLOURS[r.verdict]}">{esc(r.verdict)}</td>'
+                f'<td class="verdict" style="background:{VERDICT_COLOURS[r.verdict]}">{esc(r.verdict)}'
+                f"{_stability_text(stability, r.claim_id)}</td>"
                 f'<td class="note">{esc(r.note)}</td></tr>'
             )
         parts.append("</table>")

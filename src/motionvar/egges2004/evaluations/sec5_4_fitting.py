@@ -127,6 +127,9 @@ def fitting(model: IdleModel, params: FittingParams, seed: int) -> EvaluationRes
             f"smoothstep {float(smooth['max_junction_accel_ratio'].max()):.2f})"
         ),
         verdict=verdict,
+        # the main condition: the largest junction step against the recorded steps' quantile; exact ends
+        # (end_err <= 1e-6 cm) are required beside it (without them: not reproduced)
+        value=step_ratio, bound=1.0, unit="ratio", direction="<=",
         note=(
             "Errors are between the joint positions (forward kinematics) of the target posture and of the fitted "
             "frame. Reproduced = exact ends (<= 1e-6 cm) and no junction step larger than the "

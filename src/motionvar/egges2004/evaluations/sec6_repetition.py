@@ -143,6 +143,9 @@ def repetition(
             f"(recorded idle {med[REC_IDLE]:.2f} over its own length)"
         ),
         verdict=verdict,
+        # the main condition: at the recorded length, no more repetition than the recorded rest (rec is NaN when no
+        # recorded rest is long enough); before it, generated variations must repeat less than a loop (gen < loop)
+        value=cut, bound=rec, unit="ncc", direction="<=",
         note=(
             "Repetition = for each non-overlapping window, the highest normalised cross-correlation with any other "
             "non-overlapping window of the same sequence (1 = an exact repeat). Reproduced = generated variations "

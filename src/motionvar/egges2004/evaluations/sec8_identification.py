@@ -172,5 +172,8 @@ def identification(
             f"{len(subjects)} subjects); Perlin baseline {per:.2f}; held-out recordings {rec:.2f}"
         ),
         verdict=verdict, note=note,
+        # the main condition: generated windows named at least as well as the Perlin baseline's (accuracy generated
+        # minus Perlin); above chance (binomial p < alpha) is required beside it (without it: not reproduced)
+        value=gen - per, bound=0.0, unit="share", direction=">=",
     )
     return EvaluationResult(table, [claim], {**confusion, "window_s": params.window_s})

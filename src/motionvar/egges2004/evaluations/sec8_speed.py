@@ -75,6 +75,7 @@ def speed(model: IdleModel, params: SpeedParams, seed: int) -> EvaluationResult:
             f"of {table['playback_fps'].iloc[0]:g} fps ({params.sequence_s:g}-s sequences, best of {params.repeats})"
         ),
         verdict=verdict_threshold(worst, 1.0, ">="),
+        value=worst, bound=1.0, unit="ratio", direction=">=",
         note=(
             "Measured on one core of the CI machine, generating whole sequences at once (the paper's engine runs "
             "frame by frame inside an animation system); includes the exponential maps back to joint rotations, "

@@ -133,6 +133,7 @@ def fig3_keyframes(
             measured=f"circular SD of the maxima's phase within the step: {sd:.3f} of a step over {n} maxima; median "
                      f"offset from the nearest foot strike {offset * 1000:+.0f} ms",
             verdict=verdict_threshold(sd, phase_sd_bound, "<=", tolerance=1.0),
+            value=sd, bound=phase_sd_bound, unit="step", direction="<=",
             note=f"Reproduced when the SD is at most {phase_sd_bound:g} of a step (partial: twice that; our bound, the "
                  f"paper gives none). Steps run from one foot strike ({source}) to the next. {PROTOCOL}",
         ))

@@ -60,6 +60,7 @@ def fig7b_reliability(
         measured=f"Spearman rho = {rho:.2f} (p = {p:.1g}) between stride error and distance to the nearest example, "
                  f"{len(table)} grid points ({int(failed.sum())} failed syntheses ranked last)",
         verdict=verdict_from_bool(rho > 0 and p < 0.05),
+        value=rho, bound=0.0, unit="rho", direction=">",  # the main condition; p < 0.05 is required beside it
         note="Reproduced when rho > 0 at p < 0.05. Reliability = stride error of the synthesized cycle (the paper "
              f"does not define its reliability level). Grid: the examples' range widened by {margin:g} "
              f"of its extent on each side. {PROTOCOL}",

@@ -140,6 +140,7 @@ def fig8_fixed_style(
                      + f"; max stride error {errors.max():.2f} cm ({int(np.sum(errors > PUBLISHED_MAX_STRIDE_ERROR_CM))}"
                      f"/{n} over 1.2 cm; ceiling {ceil_errors.max():.2f} cm)",
             verdict=verdict_from_fraction(sum(checks), len(checks), full=1.0, partial=0.6),
+            value=sum(checks) / len(checks), bound=1.0, unit="share", direction=">=",
             note=f"Three checks: spread > 0 in every group; spread within [{lo:g}, {hi:g}] x the spread of the "
                  f"{len(near)} example cycles nearest the style (one per subject, as Fig. 1); every stride error <= "
                  f"{PUBLISHED_MAX_STRIDE_ERROR_CM} cm (Fig. 6's bound). Passed: {checks}. Ceiling: the same style "
@@ -165,6 +166,7 @@ def fig8_fixed_style(
             measured=f"largest spread of {n} RBF / Kriging clips at one style: {none_vary:.2e} cm (ours: "
                      f"{min(ours.values()):.2f}-{max(ours.values()):.2f} cm)",
             verdict=verdict_from_bool(none_vary < 1e-6),
+            value=none_vary, bound=1e-6, unit="cm", direction="<",
             note="Both interpolate over the style alone, so a repeated style gives the same clip.",
         ),
     ]

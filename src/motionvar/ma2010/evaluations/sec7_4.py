@@ -111,6 +111,7 @@ def sec7_4_comparison(
                              + (" (ours best)" if best[k] else "") for k in NATURALNESS_SCORES)
                  + f"; variation between ours' sequences {variation['ours']:.2f} cm",
         verdict=verdict_from_fraction(n_best, len(best), full=1.0, partial=0.5),
+        value=n_best / len(best) if best else float("nan"), bound=1.0, unit="share", direction=">=",
         note=("Diverged (unrolled process left the rotation range before the end): "
               + ", ".join(f"{LABELS[m]} after {min(x.duration for x in out[m]):.1f} s" for m in METHODS
                           if any(x.duration < full for x in out[m])) + ". " if any(

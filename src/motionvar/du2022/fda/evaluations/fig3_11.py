@@ -66,6 +66,7 @@ def evaluate_fig3_11(
             + ", ".join(f"{m} {sub.loc[m, 'silhouette']:.3f}" for m in methods)
             + f"; {knn}-NN accuracy " + ", ".join(f"{m} {sub.loc[m, col]:.3f}" for m in methods),
             verdict=verdict_from_fraction(n_best, 2),
+            value=n_best / 2, bound=1.0, unit="share", direction=">=",
             note="The thesis judges t-SNE plots by eye; we measure in the latent space itself. Reproduced: SFPCA "
             "best by both silhouette and k-NN accuracy (ties count); partial: by one of them.",
         ))

@@ -69,6 +69,7 @@ def fig4_10_claims(table: pd.DataFrame, n_steps: int, end_gap_cm: float, reach_o
               f"{path_rows['heading_error_deg'].mean():.1f} deg; end of walk {end_gap_cm:.0f} cm from the path's "
               f"end{dev}",
               verdict_threshold(mean_step, PATH_CLOSE_CM, "<=", tolerance=1.0),
+              value=mean_step, bound=PATH_CLOSE_CM, unit="cm", direction="<=",
               note=f"reproduced when the mean remaining step position error is <= {PATH_CLOSE_CM:.0f} cm (partial up "
                    f"to twice that). Synthesis: {mode or 'see the caption'}; steps are not blended. Changed since the "
                    "previous run (issue 13): Algorithm 1 line 9 and a look-ahead of T steps implemented (the walk "
@@ -82,6 +83,7 @@ def fig4_10_claims(table: pd.DataFrame, n_steps: int, end_gap_cm: float, reach_o
               + ", ".join(f"{e:.2f}" for e in reach_rows["position_error_cm"]) + " cm (tree: "
               + ", ".join(f"{e:.1f}" for e in reach_rows["position_error_tree_cm"]) + " cm)",
               verdict_from_fraction(ok, len(reach_rows)),
+              value=ok / len(reach_rows) if len(reach_rows) else float("nan"), bound=1.0, unit="share", direction=">=",
               note=f"targets: training end positions of the {REACH_JOINT} moved {reach_offset_cm:g} cm in a random "
                    f"direction; reproduced when every remaining error is <= {REACH_CLOSE_CM:.0f} cm."),
     ]

@@ -80,6 +80,7 @@ def fig4_9_claim(table: pd.DataFrame, level: float, threshold: float = 0.9) -> C
         f"{level:.0%} density region): " + "; ".join(
             f"{r.primitive} {r.joint} {r.view}: {r.coverage:.2f}" for r in table.itertuples()),
         verdict_threshold(worst, threshold, ">=", tolerance=0.1),
+        value=worst, bound=threshold, unit="share", direction=">=",
         note=f"reproduced when every projection covers >= {threshold:.0%} of the training points (a perfect model "
              f"covers ~{level:.0%}); partial down to {threshold * 0.9:.0%}.",
     )

@@ -103,6 +103,7 @@ def evaluate_table5_1(
         measured=f"{len(on_diag)} of {rows} rows have their minimum on the diagonal"
                  + (f" (off: {', '.join(off)})" if off else ""),
         verdict=verdict_from_fraction(len(on_diag), rows),
+        value=len(on_diag) / rows if rows else float("nan"), bound=1.0, unit="share", direction=">=",
         note=f"{primitive}, {n_samples} samples a model; " + _regime_note(cvaes) + " D uses frame-averaged Gram "
              "matrices (the thesis' scale: its neutral-to-neutral 0.0149); the summed Gram of Eq. 5.9 multiplies every "
              "entry by the same 900 (30 feature frames squared), so the pattern is the same. Synthetic styles, CMU "

@@ -237,6 +237,7 @@ def evaluate_table5_2(
             published="52.68 vs 52.86 (left), 52.88 vs 53.04 (right): within 0.4%",
             measured="; ".join(parts),
             verdict=verdict_from_fraction(credit, len(prims)), note=claim1_note,
+            value=credit / len(prims) if prims else float("nan"), bound=1.0, unit="share", direction=">=",
         ),
         Claim(
             claim_id="du2022.table5_2.neutral_step_sd_lower_than_training", paper="du2022", source="Tables 5.2-5.3",
@@ -247,6 +248,8 @@ def evaluate_table5_2(
                 f"VAE's decoder at the posterior means {t.loc[(p, 'neutral'), 'posterior_mean_step_sd']:.2f})"
                 for p, (a, b) in step.items()),
             verdict=verdict_from_fraction(sum(a < b for a, b in step.values()), len(prims)), note=note,
+            value=sum(a < b for a, b in step.values()) / len(prims) if prims else float("nan"), bound=1.0,
+            unit="share", direction=">=",
         ),
         Claim(
             claim_id="du2022.table5_2.style_pose_sd_lower_than_neutral", paper="du2022", source="Tables 5.2-5.3",
@@ -257,6 +260,7 @@ def evaluate_table5_2(
                       f"data's: {ratios}); as printed, against the neutral VAE's pose_SD: {len(lower_raw)} of "
                       f"{n_style}; CVAE below its style's own clips: {len(below_data)} of {n_style}"),
             verdict=verdict_from_fraction(len(lower_own), n_style), note=claim3_note,
+            value=len(lower_own) / n_style if n_style else float("nan"), bound=1.0, unit="share", direction=">=",
         ),
     ]
     return EvaluationResult(table=table.round(5), claims=claims, figure={"table": table})
