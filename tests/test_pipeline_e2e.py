@@ -3,10 +3,8 @@ through the default profile (so it ends with the report), within the CI time bud
 and `snakemake --lint` is clean."""
 
 import re
-import resource
 import subprocess
 import sys
-import time
 from pathlib import Path
 
 import pandas as pd
@@ -33,19 +31,8 @@ def snakemake(*args, cwd, timeout=900):
     )
 
 
-@pytest.fixture(scope="module")
-def ci_run(tmp_path_factory):
-    work = tmp_path_factory.mktemp("ci_run")
-    (work / "reports").mkdir()  # the default profile writes reports/replication.html
-    before = resource.getrusage(resource.RUSAGE_CHILDREN)
-    start = time.perf_counter()
-    result = snakemake("-d", str(work), "--configfile", CI_CONFIG, "--cores", "2", cwd=work)
-    wall = time.perf_counter() - start
-    after = resource.getrusage(resource.RUSAGE_CHILDREN)
-    cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
-    print(f"CI pipeline: wall {wall:.1f} s, CPU {cpu:.1f} s")
-    assert result.returncode == 0, result.stdout[-4000:] + result.stderr[-8000:]
-    return work, wall, cpu, result
+# ci_run (tests/conftest.py): the run of config/ci.yaml, once per session (shared with
+# tests/test_cluster_generic.py)
 
 
 @pytest.mark.e2e

@@ -29,7 +29,8 @@ rule du2022_fda_canonical:
         "../scripts/du2022_fda_canonical.py"
 
 
-rule du2022_fda_basis:
+# a checkpoint: the primitives it lists (n_basis.csv) decide which SFPCA models Table 3.1 reads
+checkpoint du2022_fda_basis:
     input:
         clips=f"{FDA}/canonical/clips.npz",
         metadata=f"{FDA}/canonical/metadata.csv",
@@ -51,11 +52,37 @@ rule du2022_fda_basis:
         "../scripts/du2022_fda_basis.py"
 
 
+# SFPCA of one Fig. 3.10 primitive at Table 3.1's reference dimension, fitted once: read by
+# the primitive's curves (which fit SFPCA at that dimension too) and by Table 3.1.
+rule du2022_fda_sfpca:
+    input:
+        clips=f"{FDA}/canonical/clips.npz",
+        metadata=f"{FDA}/canonical/metadata.csv",
+        n_basis=f"{FDA}/n_basis.csv",
+    output:
+        model=f"{FDA_SFPCA}/{{primitive}}.npz",
+        settings=f"{FDA_SFPCA}/{{primitive}}.json",
+    params:
+        options=config_params("fda", ["sfpca", "table.reference_components", "table.max_components"]),
+    log:
+        ev_log("du2022_fda_sfpca", "{primitive}"),
+    benchmark:
+        ev_benchmark("du2022_fda_sfpca", "{primitive}")
+    threads: 1
+    resources:
+        mem_mb=4000,
+    conda:
+        ENV
+    script:
+        "../scripts/du2022_fda_sfpca.py"
+
+
 rule du2022_fda_curves:
     input:
         clips=f"{FDA}/canonical/clips.npz",
         metadata=f"{FDA}/canonical/metadata.csv",
         n_basis=f"{FDA}/n_basis.csv",
+        sfpca=lambda wc: fda_sfpca_files(wc.primitive) if "sfpca" in FDA_PARTS[wc.part] else [],
     output:
         curves=f"{FDA}/curves/{{primitive}}_{{part}}.npz",
     wildcard_constraints:
@@ -111,7 +138,7 @@ FDA_EVALUATIONS = {
     ),
     "du2022_table3_1": (
         "Table 3.1",
-        {**FDA_CANONICAL, "n_basis": f"{FDA}/n_basis.csv"},
+        {**FDA_CANONICAL, "n_basis": f"{FDA}/n_basis.csv", "sfpca": fda_sfpca_models},
         {
             "options": config_params(
                 "fda",

@@ -1,5 +1,6 @@
 """Loaders shared by the Du 2022 ch. 3 rule scripts (du2022_fda_*, du2022_fig3_*,
-du2022_table3_1): the canonical primitives, the curve files, torch's thread count."""
+du2022_table3_1): the canonical primitives, the curve files, the saved SFPCA models,
+torch's thread count."""
 
 from __future__ import annotations
 
@@ -28,3 +29,11 @@ def load_curves(paths) -> list[dict]:
         with np.load(path, allow_pickle=False) as z:
             out.append({k: z[k] for k in z.files})
     return out
+
+
+def load_sfpca(paths) -> dict:
+    """{primitive: SFPCA} of rule du2022_fda_sfpca's files (``<primitive>.npz`` + ``.json``)."""
+    from motionvar.du2022.fda import SFPCA
+
+    paths = [paths] if isinstance(paths, str) else list(paths)
+    return {Path(p).stem: SFPCA.load(p) for p in paths if str(p).endswith(".npz")}

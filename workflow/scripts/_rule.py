@@ -14,11 +14,22 @@ the rule's outputs. :class:`motionvar.claims.NotApplicable` from an evaluation (
 lacks what it needs) writes the evaluation's not-applicable outputs instead. Any other
 exception is a bug and propagates with its traceback.
 It also selects matplotlib's file backend (Agg) for the script.
+
+Profiling: with the environment variable ``MOTIONVAR_PROFILE=DIR`` set, ``run`` wraps the
+rule's ``main`` in cProfile and writes ``DIR/<rule>.prof`` (``pstats``/snakeviz format)
+and ``DIR/<rule>.txt`` (the top 30 functions by cumulative time, and whether torch was
+imported). A rule with wildcards besides ``dataset`` gets their values in the name
+(``du2022_fda_curves.walk_leftStance_pca.prof``), so its jobs do not overwrite each
+other. Without the variable nothing changes. Example::
+
+    MOTIONVAR_PROFILE=/tmp/prof snakemake --cores 1 --forcerun du2022_table3_1 \
+        -- results/synthetic/tables/du2022_table3_1.csv
 """
 
 from __future__ import annotations
 
 import logging
+import os
 import sys
 import traceback
 import warnings
@@ -41,7 +52,7 @@ def run(snakemake, main) -> None:
         warnings.simplefilter("default")
         logging.info("rule %s, wildcards %s", snakemake.rule, dict(snakemake.wildcards.items()))
         try:
-            main(snakemake)
+            _profiled(snakemake, main)
         except NotApplicable as exc:
             if not all(hasattr(snakemake.output, k) for k in ("table", "figure", "claims")):
                 _fail(snakemake, log, f"not applicable to this dataset: {exc.reason}")
@@ -50,6 +61,48 @@ def run(snakemake, main) -> None:
         except BAD_INPUT as exc:
             _fail(snakemake, log, str(exc))
         logging.info("done")
+
+
+PROFILE_ENV = "MOTIONVAR_PROFILE"
+
+
+def profile_stem(snakemake) -> str:
+    """File name stem of a job's profile: the rule's name, then the values of its
+    wildcards other than ``dataset`` (``/`` and spaces made ``_``), joined by ``.``."""
+    values = [str(v) for k, v in snakemake.wildcards.items() if k != "dataset"]
+    stem = ".".join([str(snakemake.rule), "_".join(values)] if values else [str(snakemake.rule)])
+    return stem.replace("/", "_").replace(" ", "_")
+
+
+def _profiled(snakemake, main) -> None:
+    """``main(snakemake)``, under cProfile when ``MOTIONVAR_PROFILE`` names a folder
+    (module docstring); the profile is written even when ``main`` raises."""
+    folder = os.environ.get(PROFILE_ENV)
+    if not folder:
+        main(snakemake)
+        return
+    import cProfile
+    import io
+    import pstats
+    import time
+    from pathlib import Path
+
+    out = Path(folder)
+    out.mkdir(parents=True, exist_ok=True)
+    stem = profile_stem(snakemake)
+    profiler = cProfile.Profile()
+    start = time.perf_counter()
+    try:
+        profiler.runcall(main, snakemake)
+    finally:
+        wall = time.perf_counter() - start
+        profiler.dump_stats(str(out / f"{stem}.prof"))
+        text = io.StringIO()
+        pstats.Stats(profiler, stream=text).sort_stats("cumulative").print_stats(30)
+        header = (f"rule {snakemake.rule} ({stem}): main {wall:.2f} s wall; "
+                  f"torch imported: {'yes' if 'torch' in sys.modules else 'no'}\n")
+        (out / f"{stem}.txt").write_text(header + text.getvalue())
+        logging.info("profile written to %s", out / f"{stem}.prof")
 
 
 def _fail(snakemake, log, message: str) -> None:

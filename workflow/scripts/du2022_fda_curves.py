@@ -1,14 +1,15 @@
 """Rule du2022_fda_curves (Du 2022 Fig. 3.10-3.11): the reconstruction errors per number of
 latent dimensions and the latent coordinates of one primitive for some of the methods
 (FPCA, normalized FPCA, SFPCA, Bayesian GPLVM), as one .npz of arrays (measurements, not a
-fitted model: motionvar.du2022.fda.evaluations.curves)."""
+fitted model: motionvar.du2022.fda.evaluations.curves). SFPCA at Table 3.1's reference
+dimension is read from rule du2022_fda_sfpca's file instead of fitted again."""
 
 
 def main(snakemake) -> None:
     import numpy as np
     import pandas as pd
 
-    from _du2022_fda import canonical, setup_threads
+    from _du2022_fda import canonical, load_sfpca, setup_threads
     from motionvar.du2022.fda import functional_primitive, n_basis_of
     from motionvar.du2022.fda.evaluations import reconstruction_curves
 
@@ -17,7 +18,8 @@ def main(snakemake) -> None:
     n_basis = n_basis_of(pd.read_csv(snakemake.input.n_basis), primitive, snakemake.input.n_basis)
     fd, meta = functional_primitive(canonical(snakemake), primitive, n_basis)
     curves = reconstruction_curves(fd, meta["variant"], primitive, snakemake.params.methods, o["dims"],
-                                   o["n_components"], o["seed"], o["sfpca"], o["gplvm"])
+                                   o["n_components"], o["seed"], o["sfpca"], o["gplvm"],
+                                   load_sfpca(getattr(snakemake.input, "sfpca", [])).values())
     with open(snakemake.output.curves, "wb") as fh:
         np.savez(fh, **curves)
 

@@ -1,20 +1,20 @@
 """Rule du2022_table3_1 (Du 2022 Table 3.1): clips, basis functions and latent dimensions
-per motion primitive (SFPCA weights at a reference dimension, and FPCA);
-motionvar.du2022.fda.evaluations.table3_1."""
+per motion primitive (SFPCA weights at a reference dimension: rule du2022_fda_sfpca's for the
+Fig. 3.10 primitives, fitted here for the others; and FPCA); motionvar.du2022.fda.evaluations.table3_1."""
 
 
 def main(snakemake) -> None:
     import pandas as pd
 
-    from _du2022_fda import canonical, setup_threads
+    from _du2022_fda import canonical, load_sfpca
     from _rule import write_evaluation
     from motionvar.du2022.fda.evaluations import evaluate_table3_1
     from motionvar.du2022.fda.figures import draw_table3_1
 
-    setup_threads(snakemake)
     o = snakemake.params.options
     result = evaluate_table3_1(canonical(snakemake), pd.read_csv(snakemake.input.n_basis), o["sfpca"],
-                               o["reference_components"], o["max_components"], o["observation_error_cm"])
+                               o["reference_components"], o["max_components"], o["observation_error_cm"],
+                               sfpca_models=load_sfpca(snakemake.input.sfpca))
     write_evaluation(snakemake, result, draw_table3_1, float_format="%.6g")
 
 

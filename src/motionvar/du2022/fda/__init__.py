@@ -46,16 +46,36 @@ API:
   :mod:`.figures` draws them.
 """
 
-from ...models.bayesian_gplvm import BayesianGPLVM
-from .bspline import BSplineBasis, choose_n_basis, frame_times
-from .fpca import FPCA, NormalizedFPCA, WeightedFPCA, functional_std, zscore_weights
-from .functional_gplvm import FunctionalGPLVM
-from .functions import FunctionalMotions, FunctionLayout, align_quaternion_signs, bspline_fit_rmse
-from .primitives import (
-    canonical_primitives, choose_basis_sizes, functional_primitive, n_basis_of, primitive_motions, sfpca_for,
-)
-from .sfpca import SFPCA, ObservationObjective, TopEigenvectors
-from .evaluations.measures import feature_error, knn_accuracy, latent_separation, observation_error
+import importlib
+
+# The names below are imported on first use (PEP 562), so that a rule that needs only the
+# canonical primitives or the B-splines does not pay for scikit-learn, scipy.optimize or
+# torch at start-up (issue #16: start-up is a large share of the short rules' time).
+_EXPORTS = {
+    "...models.bayesian_gplvm": ["BayesianGPLVM"],
+    ".bspline": ["BSplineBasis", "choose_n_basis", "frame_times"],
+    ".fpca": ["FPCA", "NormalizedFPCA", "WeightedFPCA", "functional_std", "zscore_weights"],
+    ".functional_gplvm": ["FunctionalGPLVM"],
+    ".functions": ["FunctionalMotions", "FunctionLayout", "align_quaternion_signs", "bspline_fit_rmse"],
+    ".primitives": ["canonical_primitives", "choose_basis_sizes", "functional_primitive", "n_basis_of",
+                    "primitive_motions", "sfpca_for"],
+    ".sfpca": ["SFPCA", "ObservationObjective", "TopEigenvectors"],
+    ".evaluations.measures": ["feature_error", "knn_accuracy", "latent_separation", "observation_error"],
+}
+_WHERE = {name: module for module, names in _EXPORTS.items() for name in names}
+
+
+def __getattr__(name: str):
+    if name not in _WHERE:
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    value = getattr(importlib.import_module(_WHERE[name], __name__), name)
+    globals()[name] = value
+    return value
+
+
+def __dir__() -> list[str]:
+    return sorted(set(globals()) | set(_WHERE))
+
 
 __all__ = [
     "BSplineBasis", "BayesianGPLVM", "FPCA", "FunctionLayout", "FunctionalGPLVM", "FunctionalMotions",

@@ -48,6 +48,15 @@ def zscore_weights(std: np.ndarray, rel_floor: float = 1e-8) -> np.ndarray:
     return np.where(tiny, 1.0, 1.0 / np.where(tiny, 1.0, std))
 
 
+def _jsonable(value):
+    """A constructor parameter as JSON (tuples as lists, numpy scalars as Python)."""
+    if isinstance(value, np.generic):
+        return value.item()
+    if isinstance(value, tuple):
+        return [_jsonable(v) for v in value]
+    return value
+
+
 def register_saved(cls: type) -> type:
     """Class decorator: lets :meth:`FPCA.load` restore instances of ``cls``."""
     _SAVED_CLASSES[cls.__name__] = cls
@@ -178,6 +187,8 @@ class FPCA:
     _SAVED_ARRAYS = ("parents_", "offsets_mean_", "function_weights_", "mean_", "components_", "explained_variance_",
                      "explained_variance_ratio_", "singular_values_")
     _EXTRA_SAVED: tuple[str, ...] = ()  # fitted scalars kept in the JSON settings
+    _OPTIONAL_SAVED: tuple[str, ...] = ()  # fitted scalars kept when present (older files may lack them)
+    _SAVED_PARAMS: tuple[str, ...] = ()  # constructor parameters kept in the settings ("params")
 
     def save(self, path: str | Path) -> list[Path]:
         """Write the fitted model as ``<base>.npz`` (arrays) and ``<base>.json`` (class and
@@ -194,9 +205,11 @@ class FPCA:
             "n_joints": int(self.layout_.n_joints),
             "n_frames": int(self.n_frames_),
         }
-        for name in self._EXTRA_SAVED:
+        for name in self._EXTRA_SAVED + tuple(n for n in self._OPTIONAL_SAVED if hasattr(self, n)):
             value = getattr(self, name)
             settings[name] = value.item() if isinstance(value, np.generic) else value
+        if self._SAVED_PARAMS:
+            settings["params"] = {name: _jsonable(getattr(self, name)) for name in self._SAVED_PARAMS}
         arrays = {name: np.asarray(getattr(self, name)) for name in self._SAVED_ARRAYS}
         return save_model(path, arrays, settings)
 
@@ -217,16 +230,31 @@ class FPCA:
             raise ValueError(f"{path}: saved {name} lacks {missing}")
         for n in model._SAVED_ARRAYS:
             setattr(model, n, a[n])
-        for n in model._EXTRA_SAVED:
+        for n in model._EXTRA_SAVED + tuple(n for n in model._OPTIONAL_SAVED if n in settings):
             setattr(model, n, settings[n])
         model._gram_sqrt, model._gram_isqrt = model.basis_.gram_sqrt()
         K, D = model.mean_.shape
         model.eigenfunctions_ = np.einsum("kl,nld->nkd", model._gram_isqrt, model.components_.reshape(-1, K, D))
         model._restore_params()
+        for n, value in settings.get("params", {}).items():
+            if n in model._SAVED_PARAMS:
+                setattr(model, n, tuple(value) if isinstance(value, list) else value)
         return model
 
     def _restore_params(self) -> None:
-        """Set constructor parameters not saved (defaults) after :meth:`load`."""
+        """Set constructor parameters not saved (defaults) after :meth:`load`; those in
+        ``_SAVED_PARAMS`` are then set from the file."""
+
+    def check_fitted_on(self, X: FunctionalMotions, source: str = "model") -> None:
+        """ValueError naming ``source`` unless this model was fitted on the clips ``X``
+        (same basis and functions, and the same mean coefficients, exactly): a model read
+        from a file must belong to the data it is used with."""
+        if not hasattr(self, "mean_"):
+            raise RuntimeError(f"{type(self).__name__} is not fitted yet")
+        if self.mean_.shape != X.coefs.shape[1:] or not np.array_equal(self.mean_, X.coefs.mean(axis=0)):
+            raise ValueError(f"{source}: fitted on other clips than those given ({X.n_clips} clips, "
+                             f"coefficients {X.coefs.shape[1:]}; the model's {self.mean_.shape}): rerun the rule "
+                             f"that wrote it")
 
 
 @register_saved

@@ -80,6 +80,29 @@ def align_quaternion_signs(rotations: Sequence[np.ndarray]) -> list[np.ndarray]:
     return [r * s[None, :, None] for r, s in zip(fixed, signs)]
 
 
+def _function_values(motions: Sequence[Motion]) -> tuple[FunctionLayout, list[np.ndarray]]:
+    """The layout and each clip's (T, D) function values: root translation and
+    sign-continuous quaternions (:func:`align_quaternion_signs`), independent of the basis."""
+    layout = FunctionLayout(motions[0].skeleton.n_joints)
+    rots = align_quaternion_signs([m.rotations for m in motions])
+    return layout, [layout.pack(m.root_pos, r) for m, r in zip(motions, rots)]
+
+
+def _positions_by_length(motions: Sequence[Motion], groups: list[np.ndarray]) -> list[np.ndarray]:
+    """(n, T, J, 3) joint positions of the clips of each group of equal length, by one
+    forward-kinematics call per group (element for element the same arithmetic as
+    ``Motion.positions`` per clip); clips with per-frame joint translations per clip."""
+    out = []
+    for idx in groups:
+        clips = [motions[i] for i in idx]
+        if any(m.translations is not None for m in clips):
+            out.append(np.stack([m.positions() for m in clips]))
+            continue
+        out.append(fk(np.stack([m.rotations for m in clips]), np.stack([m.root_pos for m in clips]),
+                      np.stack([m.skeleton.offsets for m in clips])[:, None], clips[0].skeleton.parents))
+    return out
+
+
 def _check_clips(motions: Sequence[Motion], basis: BSplineBasis) -> None:
     if len(motions) == 0:
         raise ValueError("functional data: no clips given")
@@ -140,9 +163,15 @@ class FunctionalMotions:
         defaults to the median clip length."""
         basis = BSplineBasis(n_basis, degree)
         _check_clips(motions, basis)
-        layout = FunctionLayout(motions[0].skeleton.n_joints)
-        rots = align_quaternion_signs([m.rotations for m in motions])
-        values = [layout.pack(m.root_pos, r) for m, r in zip(motions, rots)]
+        return cls._from_values(motions, *_function_values(motions), basis, n_frames)
+
+    @classmethod
+    def _from_values(
+        cls, motions: Sequence[Motion], layout: FunctionLayout, values: list[np.ndarray], basis: BSplineBasis,
+        n_frames: int | None,
+    ) -> "FunctionalMotions":
+        """:meth:`from_motions` with the clips' function values (:func:`_function_values`)
+        already computed: one sign alignment serves every basis size."""
         if n_frames is None:
             n_frames = int(round(float(np.median([m.n_frames for m in motions]))))
         return cls(
@@ -194,10 +223,13 @@ def bspline_fit_rmse(
     ks = np.atleast_1d(n_basis)
     lengths = np.array([m.n_frames for m in motions])
     groups = [np.flatnonzero(lengths == T) for T in np.unique(lengths)]
-    original = [np.stack([motions[i].positions() for i in idx]) for idx in groups]  # once for every K
+    original = _positions_by_length(motions, groups)  # once for every K
+    prepared = _function_values(motions)  # likewise (the sign alignment does not depend on K)
     rmse = np.empty(len(ks))
     for j, k in enumerate(ks):
-        fd = FunctionalMotions.from_motions(motions, int(k), degree=degree)
+        basis = BSplineBasis(int(k), degree)
+        _check_clips(motions, basis)
+        fd = FunctionalMotions._from_values(motions, *prepared, basis, None)
         sq_sum, count = 0.0, 0
         for idx, orig in zip(groups, original):
             fitted = fd.subset(idx).positions(n_frames=orig.shape[1])

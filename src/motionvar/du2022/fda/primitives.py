@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import logging
 from collections.abc import Sequence
+from typing import TYPE_CHECKING
 
 import numpy as np
 import pandas as pd
@@ -16,7 +17,9 @@ from ...core.motion import Motion
 from ...prep import apply_warp, median_length_index, resample_motion, warp_to_median
 from .bspline import choose_n_basis
 from .functions import FunctionalMotions, bspline_fit_rmse
-from .sfpca import SFPCA
+
+if TYPE_CHECKING:
+    from .sfpca import SFPCA
 
 log = logging.getLogger(__name__)
 
@@ -117,6 +120,8 @@ def sfpca_for(fd: FunctionalMotions, n_components: int, eval_frames_per_basis: i
     """An unfitted :class:`SFPCA` for the clips ``fd``: its objective runs forward kinematics
     at ``eval_frames_per_basis`` frames per basis function (0: every canonical frame);
     ``options`` are SFPCA's (``weight_groups``, ``gradient``, ``max_iter``, ``tol``)."""
+    from .sfpca import SFPCA  # here: rules that fit no SFPCA skip scipy.optimize and scikit-learn
+
     per_basis = eval_frames_per_basis
     n_eval = min(fd.n_frames, per_basis * fd.basis.n_basis) if per_basis else None
     return SFPCA(n_components, n_eval_frames=n_eval, **options)

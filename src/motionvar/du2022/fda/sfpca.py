@@ -77,6 +77,44 @@ class TopEigenvectors:
         return cls._fn.apply(A, n)
 
 
+def _qmul_jm(a, b):
+    """Hamilton product of quaternions stored as (4, M) tensors (components first)."""
+    torch = _torch()
+    aw, ax, ay, az = a.unbind(0)
+    bw, bx, by, bz = b.unbind(0)
+    return torch.stack((aw * bw - ax * bx - ay * by - az * bz, aw * bx + ax * bw + ay * bz - az * by,
+                        aw * by - ax * bz + ay * bw + az * bx, aw * bz + ax * by - ay * bx + az * bw), dim=0)
+
+
+def _qrot_jm(q, v):
+    """Vectors v (3, M) rotated by unit quaternions q (4, M)."""
+    torch = _torch()
+    u = q[1:]
+    t = 2.0 * torch.linalg.cross(u, v, dim=0)
+    return v + q[:1] * t + torch.linalg.cross(u, t, dim=0)
+
+
+def fk_joint_major(quats, root, offsets_jm, parents):
+    """Joint positions (N, T, J, 3) of unit quaternions (N, T, J, 4), root positions
+    (N, T, 3) and bone offsets ``offsets_jm`` (J, 3, N*T): :func:`motionvar.core.fk_torch`
+    computed in a joint-major layout in which every joint's components are contiguous
+    (N*T,) rows. The same operations in the same order as ``fk_torch``, so the positions
+    and their gradients are bit-identical, in about 20 % less time (measured at N*T =
+    44,400, the full walk_leftStance objective): elementwise kernels on contiguous rows
+    instead of strided views of the (N, T, J, 4) array."""
+    torch = _torch()
+    N, T, J, _ = quats.shape
+    rots = quats.permute(2, 3, 0, 1).reshape(J, 4, N * T).unbind(0)
+    locs = offsets_jm.unbind(0)
+    gpos = [root.permute(2, 0, 1).reshape(3, N * T)]
+    grot = [rots[0]]
+    for j in range(1, J):
+        p = int(parents[j])
+        grot.append(_qmul_jm(grot[p], rots[j]))
+        gpos.append(gpos[p] + _qrot_jm(grot[p], locs[j]))
+    return torch.stack(gpos).reshape(J, 3, N, T).permute(2, 3, 0, 1).contiguous()
+
+
 class ObservationObjective:
     """Eq. 3.8 as a function of the function weights w: the mean squared joint-position
     error (cm^2, over clips, frames and joints) of the FPCA reconstruction of diag(w) Y(t)
@@ -118,6 +156,10 @@ class ObservationObjective:
         self.offsets = torch.as_tensor(X.offsets[:, None], dtype=self.dtype)
         self.parents = np.asarray(X.parents)
         self.n_joints = X.layout.n_joints
+        # the bone offsets per joint and coordinate over all (clip, frame) pairs, contiguous:
+        # the layout of :func:`fk_joint_major`
+        J = self.n_joints
+        self.offsets_jm = self.offsets.expand(N, T, J, 3).permute(2, 3, 0, 1).reshape(J, 3, N * T).contiguous()
 
     @property
     def active_functions(self) -> np.ndarray:
@@ -126,8 +168,6 @@ class ObservationObjective:
 
     def loss(self, w):
         """Torch scalar objective for torch weights ``w`` (D,) (differentiable)."""
-        from ...core.kinematics import fk_torch
-
         torch = self.torch
         N, K, D, Da = self.shape
         wa = w[self.active]
@@ -146,7 +186,7 @@ class ObservationObjective:
         root = values[..., :3]
         quats = values[..., 3:].reshape(N, values.shape[1], self.n_joints, 4)
         quats = quats * torch.rsqrt((quats * quats).sum(-1, keepdim=True))
-        pos = fk_torch(quats, root, self.offsets, self.parents)
+        pos = fk_joint_major(quats, root, self.offsets_jm, self.parents)
         return ((pos - self.target) ** 2).sum(-1).mean()
 
     def value(self, w: np.ndarray) -> float:
@@ -183,6 +223,8 @@ class SFPCA(FPCA):
     """
 
     _EXTRA_SAVED = ("init_", "loss_raw_", "loss_normalized_", "loss_", "n_iter_")
+    _OPTIONAL_SAVED = ("n_evals_", "converged_", "fit_time_s_")
+    _SAVED_PARAMS = ("weight_groups", "gradient", "max_iter", "tol", "bounds", "n_eval_frames", "init")
 
     def __init__(
         self,

@@ -11,12 +11,31 @@
   :func:`knn_accuracy`, :func:`latent_separation` (Sec. 3.3.5), shared by the above.
 """
 
-from .curves import curves_table, reconstruction_curves
-from .fig3_9 import evaluate_fig3_9
-from .fig3_10 import evaluate_fig3_10
-from .fig3_11 import evaluate_fig3_11
-from .measures import feature_error, knn_accuracy, latent_separation, observation_error
-from .table3_1 import evaluate_table3_1
+import importlib
+
+# imported on first use (PEP 562): an evaluation's rule loads only its own module
+_EXPORTS = {
+    ".curves": ["curves_table", "reconstruction_curves"],
+    ".fig3_9": ["evaluate_fig3_9"],
+    ".fig3_10": ["evaluate_fig3_10"],
+    ".fig3_11": ["evaluate_fig3_11"],
+    ".measures": ["feature_error", "knn_accuracy", "latent_separation", "observation_error"],
+    ".table3_1": ["evaluate_table3_1"],
+}
+_WHERE = {name: module for module, names in _EXPORTS.items() for name in names}
+
+
+def __getattr__(name: str):
+    if name not in _WHERE:
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    value = getattr(importlib.import_module(_WHERE[name], __name__), name)
+    globals()[name] = value
+    return value
+
+
+def __dir__() -> list[str]:
+    return sorted(set(globals()) | set(_WHERE))
+
 
 __all__ = [
     "curves_table", "evaluate_fig3_10", "evaluate_fig3_11", "evaluate_fig3_9", "evaluate_table3_1", "feature_error",

@@ -26,6 +26,7 @@ from ..fpca import FPCA, NormalizedFPCA
 from ..functional_gplvm import FunctionalGPLVM
 from ..functions import FunctionalMotions
 from ..primitives import sfpca_for
+from ..sfpca import SFPCA
 from .measures import feature_error, observation_error
 
 log = logging.getLogger(__name__)
@@ -42,14 +43,32 @@ def kmeans_labels(fd: FunctionalMotions, positions: np.ndarray, n_clusters: int,
     return KMeans(n_clusters=n_clusters, init="k-means++", n_init=10, random_state=seed).fit_predict(x)
 
 
+def fitted_sfpca(model: SFPCA, fd: FunctionalMotions, sfpca: Mapping[str, Any], source: str = "SFPCA model") -> SFPCA:
+    """``model`` (an SFPCA fitted elsewhere, e.g. read from a file) checked to be the fit
+    that :func:`sfpca_for` with options ``sfpca`` would make on ``fd`` at its dimension:
+    same clips, same options. ValueError naming ``source`` otherwise."""
+    model.check_fitted_on(fd, source)
+    wanted = sfpca_for(fd, int(model.n_components), **sfpca)
+    differ = {n: (getattr(model, n), getattr(wanted, n)) for n in SFPCA._SAVED_PARAMS
+              if getattr(model, n) != getattr(wanted, n)}
+    if differ:
+        said = ", ".join(f"{n} {a!r} (wanted {b!r})" for n, (a, b) in differ.items())
+        raise ValueError(f"{source}: fitted with other options: {said}; rerun the rule that wrote it")
+    return model
+
+
 def method_curves(
     method: str, fd: FunctionalMotions, reference: np.ndarray, dims: Sequence[int], latent_dim: int, seed: int,
-    sfpca: Mapping[str, Any], gplvm: Mapping[str, Any],
+    sfpca: Mapping[str, Any], gplvm: Mapping[str, Any], fitted: Mapping[int, SFPCA] | None = None,
 ) -> tuple[list[tuple[float, float, float, str]], np.ndarray]:
     """([(feature error, observation error, fit seconds, note) per d in ``dims``], latent
     coordinates at ``latent_dim``) of one method. ``reference``: the clips' joint positions
     (``fd.positions()``); ``sfpca``: options of :func:`sfpca_for`; ``gplvm``: ``n_inducing``,
-    ``max_iter``, ``noise_init``, ``discriminative_sigma2`` (None: no prior), ``n_clusters``."""
+    ``max_iter``, ``noise_init``, ``discriminative_sigma2`` (None: no prior), ``n_clusters``.
+    ``fitted``: SFPCA fits already made with these options, by dimension (e.g. Table 3.1's
+    reference fit, :func:`.table3_1.fit_reference_sfpca`), used instead of fitting again;
+    their fit seconds are those of the original fit."""
+    fitted = fitted or {}
 
     def errors(coefs):
         return feature_error(fd, coefs), observation_error(fd, coefs, reference=reference)
@@ -70,7 +89,10 @@ def method_curves(
     latent = None
     for d in sorted(set(dims) | {latent_dim}):
         start = time.perf_counter()
-        if method == "sfpca":
+        if method == "sfpca" and d in fitted:
+            model = fitted_sfpca(fitted[d], fd, sfpca, f"SFPCA model at d = {d}")
+            note = f"init {model.init_}, {model.n_iter_} it, loss {model.loss_:.4g} cm^2"
+        elif method == "sfpca":
             model = sfpca_for(fd, d, **sfpca).fit(fd)
             note = f"init {model.init_}, {model.n_iter_} it, loss {model.loss_:.4g} cm^2"
         else:
@@ -80,6 +102,8 @@ def method_curves(
                                     random_state=seed).fit(fd, labels_dp)
             note = f"{model.gplvm_.n_iter_} it, {model.gplvm_.message_[:40]}"
         fit_s = time.perf_counter() - start
+        if method == "sfpca" and d in fitted:  # the time of the fit itself, made elsewhere
+            fit_s = float(getattr(model, "fit_time_s_", np.nan))
         log.info("%s d=%d: %.1f s, %s", method, d, fit_s, note)
         if d == latent_dim:
             latent = model.transform(fd)
@@ -91,10 +115,14 @@ def method_curves(
 def reconstruction_curves(
     fd: FunctionalMotions, labels: Sequence[str], primitive: str, methods: Sequence[str], dims: Sequence[int],
     latent_dim: int, seed: int, sfpca: Mapping[str, Any], gplvm: Mapping[str, Any],
+    sfpca_models: Sequence[SFPCA] = (),
 ) -> dict[str, np.ndarray]:
     """The Fig. 3.10-3.11 measurements of one primitive (module docstring) for ``methods``.
     ``dims`` above clips - 1 (the rank of the centred data) are dropped and ``latent_dim``
-    capped there; ``labels``: one per clip (Fig. 3.11 colours)."""
+    capped there; ``labels``: one per clip (Fig. 3.11 colours). ``sfpca_models``: SFPCA
+    fits of these clips with options ``sfpca`` made elsewhere (Table 3.1's reference fit),
+    used at their dimension instead of fitting again (:func:`method_curves`)."""
+    fitted = {int(m.n_components): m for m in sfpca_models}
     n_max = fd.n_clips - 1  # rank of the centred data
     dims = sorted({d for d in dims if d <= n_max})
     if not dims:
@@ -108,7 +136,7 @@ def reconstruction_curves(
         "canonical_frames": np.array(fd.n_frames), "methods": np.array(methods, dtype=str),
     }
     for method in methods:
-        rows, latent = method_curves(method, fd, reference, dims, latent_dim, seed, sfpca, gplvm)
+        rows, latent = method_curves(method, fd, reference, dims, latent_dim, seed, sfpca, gplvm, fitted)
         feat, obs, seconds, notes = zip(*rows)
         out.update({f"{method}/feature_error": np.array(feat), f"{method}/observation_error": np.array(obs),
                     f"{method}/fit_seconds": np.array(seconds), f"{method}/info": np.array(notes, dtype=str),

@@ -16,6 +16,7 @@ from ....claims import EvaluationResult
 from ..fpca import FPCA, WeightedFPCA
 from ..functions import FunctionalMotions
 from ..primitives import primitive_motions, sfpca_for
+from ..sfpca import SFPCA
 from .measures import observation_error
 
 log = logging.getLogger(__name__)
@@ -48,16 +49,38 @@ def smallest_dim(error_of: Callable[[int], float], d_max: int, threshold: float)
     return hi, seen
 
 
+def reference_dims(n_clips: int, reference_components: int, max_components: int) -> tuple[int, int]:
+    """(d_max, d_ref) of Table 3.1 for a primitive of ``n_clips`` clips: the largest
+    dimension searched and the one SFPCA's weights are optimised at, both capped at
+    clips - 1 (the rank of the centred data)."""
+    d_max = min(max_components, n_clips - 1)
+    return d_max, min(reference_components, d_max)
+
+
+def fit_reference_sfpca(
+    fd: FunctionalMotions, sfpca: Mapping[str, Any], reference_components: int, max_components: int,
+) -> SFPCA:
+    """The SFPCA of Table 3.1 for one primitive: fitted at the reference dimension
+    (:func:`reference_dims`) with options ``sfpca`` of :func:`sfpca_for`. For the Fig. 3.10
+    primitives it is fitted once (rule du2022_fda_sfpca) and read by Table 3.1 and by their
+    curves, which fit SFPCA at the same dimension with the same options."""
+    _, d_ref = reference_dims(fd.n_clips, reference_components, max_components)
+    return sfpca_for(fd, d_ref, **sfpca).fit(fd)
+
+
 def evaluate_table3_1(
     dataset, chosen: pd.DataFrame, sfpca: Mapping[str, Any], reference_components: int, max_components: int,
-    observation_error_cm: float,
+    observation_error_cm: float, sfpca_models: Mapping[str, SFPCA] | None = None,
 ) -> EvaluationResult:
     """Table 3.1 for the canonical primitives of ``dataset`` (``motionvar.io.MotionDataset``)
     with the basis sizes of ``chosen`` (the table of :func:`motionvar.du2022.fda.choose_basis_sizes`).
     SFPCA (options ``sfpca`` of :func:`sfpca_for`) is fitted once per primitive at
-    ``reference_components`` and its weights kept for every d up to ``max_components``
-    (both capped at clips - 1); the latent dimension is the smallest d whose mean joint
-    error is at most ``observation_error_cm``.
+    ``reference_components`` (:func:`fit_reference_sfpca`) and its weights kept for every d
+    up to ``max_components`` (both capped at clips - 1); the latent dimension is the
+    smallest d whose mean joint error is at most ``observation_error_cm``. ``sfpca_models``:
+    such fits already made ({primitive: SFPCA}, e.g. read from the files of rule
+    du2022_fda_sfpca; checked to be of the primitive's clips and dimension); the SFPCA of a
+    primitive without one is fitted here.
 
     Table: one row per primitive with the published numbers. Figure: ``curves``
     {(primitive, "sfpca" | "fpca"): [(d, error)]}, ``primitives``, ``threshold``. No claim:
@@ -66,10 +89,13 @@ def evaluate_table3_1(
     for _, c in chosen.iterrows():
         motions, _ = primitive_motions(dataset, c["primitive"])
         fd = FunctionalMotions.from_motions(motions, int(c["n_basis"]))
-        d_max = min(max_components, fd.n_clips - 1)
-        d_ref = min(reference_components, d_max)
-        weighted = sfpca_for(fd, d_ref, **sfpca).fit(fd)
-        log.info("%s: SFPCA(%d) %.1f s, init %s", c["primitive"], d_ref, weighted.fit_time_s_, weighted.init_)
+        d_max, d_ref = reference_dims(fd.n_clips, reference_components, max_components)
+        if sfpca_models and c["primitive"] in sfpca_models:
+            weighted = _given_model(sfpca_models[c["primitive"]], c["primitive"], fd, d_ref)
+        else:
+            weighted = fit_reference_sfpca(fd, sfpca, reference_components, max_components)
+        log.info("%s: SFPCA(%d) %.1f s, init %s", c["primitive"], d_ref, getattr(weighted, "fit_time_s_", np.nan),
+                 weighted.init_)
         reference = fd.positions()
         models = {"sfpca": WeightedFPCA(d_max, weighted.function_weights_).fit(fd), "fpca": FPCA(d_max).fit(fd)}
         row = {"primitive": c["primitive"], "behaviour": c["behaviour"], "clips": fd.n_clips,
@@ -90,3 +116,12 @@ def evaluate_table3_1(
     table = pd.DataFrame(rows)
     figure = {"curves": curves, "primitives": list(table["primitive"]), "threshold": observation_error_cm}
     return EvaluationResult(table=table, claims=[], figure=figure)
+
+
+def _given_model(model: SFPCA, primitive: str, fd: FunctionalMotions, d_ref: int) -> SFPCA:
+    """A given SFPCA of ``primitive``, checked against its clips and the reference dimension."""
+    model.check_fitted_on(fd, f"SFPCA model of {primitive}")
+    if int(model.n_components) != d_ref:
+        raise ValueError(f"SFPCA model of {primitive}: fitted at d = {model.n_components}, Table 3.1's reference "
+                         f"dimension is {d_ref} (config fda.table.reference_components): rerun rule du2022_fda_sfpca")
+    return model
