@@ -89,11 +89,12 @@ def _batches(n: int, batch_size: int, gen: torch.Generator) -> list[torch.Tensor
 
 def train_autoencoder(
     windows: np.ndarray, cfg: TrainConfig, decoder_order: str = "conv_depool", n_kernels: int = 256,
-    kernel_width: int = 15, keep: str = "best",
+    kernel_width: int = 15, keep: str = "last",
 ) -> tuple[ConvAutoencoder, pd.DataFrame]:
-    """Train Eq. 5.1-5.2 on scaled windows (W, T, C). ``keep``: "best" returns the weights
-    of the epoch whose end-of-epoch loss over all windows is lowest (a late spike of the
-    loss does not end in the model), "last" those of the last epoch. History columns:
+    """Train Eq. 5.1-5.2 on scaled windows (W, T, C). ``keep``: "last" returns the weights
+    of the last epoch (the thesis' final model), "best" those of the epoch whose
+    end-of-epoch loss over all windows is lowest (a late spike of the loss does not end in
+    the model; at full size this changed the VAEs downstream: config/schema.yaml). History columns:
     epoch, loss (running mean of the minibatch MSE), end_loss (MSE of the end-of-epoch
     weights over all windows), kept (the epoch returned), seconds."""
     if windows.ndim != 3 or len(windows) == 0:
@@ -211,7 +212,7 @@ def fit_feature_space(
     decoder_order: str = "conv_depool",
     n_kernels: int = 256,
     kernel_width: int = 15,
-    keep: str = "best",
+    keep: str = "last",
 ) -> tuple[FeatureSpace, pd.DataFrame]:
     """The conv autoencoder (Eq. 5.1-5.2) with its :class:`~.features.FeatureScaler`,
     trained on the windows of ``window`` frames every ``stride`` frames of all clips
