@@ -28,15 +28,16 @@ def stability_figure(table: pd.DataFrame) -> Figure:
     for ax, r in zip(axes[:, 0], rows.to_dict("records")):
         vals = np.array([r[f"value_{s}"] for s in seeds], dtype=float)
         verdicts = [r[f"verdict_{s}"] for s in seeds]
-        ax.scatter(vals, np.zeros_like(vals), s=28, c=[VERDICT_COLOURS.get(v, "#ddd") for v in verdicts],
+        jitter = (np.arange(len(vals)) - (len(vals) - 1) / 2) * 0.09  # seeds with equal values stay visible
+        ax.scatter(vals, jitter, s=28, c=[VERDICT_COLOURS.get(v, "#ddd") for v in verdicts],
                    edgecolors=[_EDGE.get(v, "k") for v in verdicts], linewidths=1.0, zorder=3)
         if np.isfinite(r["value_ci_low"]):
-            ax.plot([r["value_ci_low"], r["value_ci_high"]], [0.35, 0.35], color="0.3", lw=2)
-        ax.plot([r["value_mean"]], [0.35], marker="|", color="0.1", ms=8)
+            ax.plot([r["value_ci_low"], r["value_ci_high"]], [0.45, 0.45], color="0.3", lw=2)
+        ax.plot([r["value_mean"]], [0.45], marker="|", color="0.1", ms=8)
         if np.isfinite(r["bound"]):
             ax.axvline(r["bound"], color="tab:red", ls="--", lw=1)
-        lo = np.nanmin(np.append(vals, [r["bound"]]))
-        hi = np.nanmax(np.append(vals, [r["bound"]]))
+        extent = np.append(vals, [r["bound"], r["value_ci_low"], r["value_ci_high"]])
+        lo, hi = np.nanmin(extent), np.nanmax(extent)
         pad = 0.08 * (hi - lo) if hi > lo else max(abs(hi), 1.0) * 0.1
         ax.set_xlim(lo - pad, hi + pad)
         ax.set_ylim(-0.6, 0.8)
@@ -47,7 +48,8 @@ def stability_figure(table: pd.DataFrame) -> Figure:
         mark = "" if r["stable"] else "  (not stable)"
         ax.text(-0.01, 0.5, f"{r['claim_id']}{mark}", transform=ax.transAxes, ha="right", va="center",
                 fontsize=6.5, color="k" if r["stable"] else "tab:red")
-        ax.text(1.01, 0.5, f"{r['unit']}", transform=ax.transAxes, ha="left", va="center", fontsize=6)
+        unit = r["unit"] if isinstance(r["unit"], str) else ""  # a CSV read back gives NaN for ""
+        ax.text(1.01, 0.5, unit, transform=ax.transAxes, ha="left", va="center", fontsize=6)
     if rows.empty:
         axes[0, 0].set_axis_off()
         axes[0, 0].text(0.5, 0.5, "no claim carries a value", ha="center", va="center")

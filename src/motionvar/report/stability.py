@@ -115,8 +115,9 @@ def stability_html(table: pd.DataFrame, title: str = "Verdicts across seeds") ->
     for r in order.to_dict("records"):
         value = ("-" if not np.isfinite(r["value_mean"]) else
                  f"{r['value_mean']:.3g} ± {r['value_sd']:.2g} [{r['value_ci_low']:.3g}, {r['value_ci_high']:.3g}]"
-                 f" {esc(str(r['unit']))}")
-        bound = "-" if not np.isfinite(r["bound"]) else f"{esc(str(r['direction']))} {r['bound']:.3g}"
+                 f" {esc(r['unit'] if isinstance(r['unit'], str) else '')}")
+        direction = r["direction"] if isinstance(r["direction"], str) else ""
+        bound = "-" if not np.isfinite(r["bound"]) else f"{esc(direction)} {r['bound']:.3g}"
         cells = "".join(
             f"<td>{esc(str(r[f'verdict_{s}']))}"
             + (f"<br>{r[f'value_{s}']:.3g}" if np.isfinite(r[f"value_{s}"]) else "") + "</td>" for s in seeds)
