@@ -113,9 +113,14 @@ def stability_html(table: pd.DataFrame, title: str = "Verdicts across seeds") ->
     ]
     order = table.assign(_s=table["stable"].astype(bool)).sort_values(["_s", "claim_id"], kind="stable")
     for r in order.to_dict("records"):
-        value = ("-" if not np.isfinite(r["value_mean"]) else
-                 f"{r['value_mean']:.3g} ± {r['value_sd']:.2g} [{r['value_ci_low']:.3g}, {r['value_ci_high']:.3g}]"
-                 f" {esc(r['unit'] if isinstance(r['unit'], str) else '')}")
+        unit = esc(r["unit"] if isinstance(r["unit"], str) else "")
+        if not np.isfinite(r["value_mean"]):
+            value = "-"
+        elif not np.isfinite(r["value_sd"]):  # one seed measured it
+            value = f"{r['value_mean']:.3g} {unit} (one seed)"
+        else:
+            value = (f"{r['value_mean']:.3g} ± {r['value_sd']:.2g} [{r['value_ci_low']:.3g}, {r['value_ci_high']:.3g}]"
+                     f" {unit}")
         direction = r["direction"] if isinstance(r["direction"], str) else ""
         bound = "-" if not np.isfinite(r["bound"]) else f"{esc(direction)} {r['bound']:.3g}"
         cells = "".join(
