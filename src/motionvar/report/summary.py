@@ -96,6 +96,10 @@ def claims_html(
         return "\n".join(parts + ["</body></html>"]) + "\n"
     papers = [p for p in titles if p in set(table["paper"])]
     papers += sorted(set(table["paper"]) - set(papers))
+    if stability is not None:
+        parts.append('<p class="none">Each verdict also says whether the seeds of the stability run '
+                     "(results/stability/claims_stability.csv, config/seeds.yaml at its own, reduced sizes) agree "
+                     "on it: stable when at least 4 of 5 give the same verdict.</p>")
     parts.append('<table><tr><th>paper</th><th>claims</th><th>verdicts</th></tr>')
     for paper in papers:
         rows = table[table["paper"] == paper]
