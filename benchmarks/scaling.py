@@ -69,26 +69,13 @@ class Case:
 
 # ---- inputs -----------------------------------------------------------------------------
 def random_clips(n: int, seed: int = 0, frames=(50, 70)):
-    """Smooth clips on the CMU rig: each joint turns about a fixed axis by a few sinusoids
-    (as benchmarks/fda_sfpca.py)."""
-    from motionvar.core import Motion, cmu_skeleton
-    from motionvar.core.quaternions import quat_about_axis
-
-    rng = np.random.default_rng(seed)
-    sk = cmu_skeleton()
-    J = sk.n_joints
-    axes = rng.normal(size=(J, 3))
-    mix = rng.normal(size=(4, J)) * rng.uniform(0.05, 0.5, size=J)
-    clips = []
-    for _ in range(n):
-        T = int(rng.integers(*frames))
-        t = np.linspace(0, 1, T)[:, None]
-        phase = rng.uniform(0, 2 * np.pi, size=4)
-        angles = np.sin(2 * np.pi * t * np.array([1, 1, 2, 3]) + phase) @ (mix * rng.uniform(0.7, 1.3, size=(4, 1)))
-        q = np.stack([quat_about_axis(axes[j], angles[:, j]) for j in range(J)], axis=1)
-        root = np.concatenate([t * rng.uniform(60, 90), 90 + 2 * np.sin(4 * np.pi * t), t * 15 * rng.normal()], 1)
-        clips.append(Motion(skeleton=sk.scaled(rng.uniform(0.9, 1.1)), root_pos=root, rotations=q, fps=120.0))
-    return clips
+    """Smooth clips on the CMU rig (benchmarks/fda_sfpca.py's inputs, imported from there)."""
+    sys.path.insert(0, str(Path(__file__).resolve().parent))
+    try:
+        from fda_sfpca import random_clips as fda_random_clips
+    finally:
+        sys.path.pop(0)
+    return fda_random_clips(n, seed, frames)
 
 
 _CLIPS: dict[int, list] = {}
