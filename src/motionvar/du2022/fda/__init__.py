@@ -46,7 +46,7 @@ API:
   :mod:`.figures` draws them.
 """
 
-import importlib
+from ...core.lazy import lazy_exports
 
 # The names below are imported on first use (PEP 562), so that a rule that needs only the
 # canonical primitives or the B-splines does not pay for scikit-learn, scipy.optimize or
@@ -62,20 +62,7 @@ _EXPORTS = {
     ".sfpca": ["SFPCA", "ObservationObjective", "TopEigenvectors"],
     ".evaluations.measures": ["feature_error", "knn_accuracy", "latent_separation", "observation_error"],
 }
-_WHERE = {name: module for module, names in _EXPORTS.items() for name in names}
-
-
-def __getattr__(name: str):
-    if name not in _WHERE:
-        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-    value = getattr(importlib.import_module(_WHERE[name], __name__), name)
-    globals()[name] = value
-    return value
-
-
-def __dir__() -> list[str]:
-    return sorted(set(globals()) | set(_WHERE))
-
+__getattr__, __dir__ = lazy_exports(__name__, _EXPORTS)
 
 __all__ = [
     "BSplineBasis", "BayesianGPLVM", "FPCA", "FunctionLayout", "FunctionalGPLVM", "FunctionalMotions",

@@ -11,7 +11,7 @@
   :func:`knn_accuracy`, :func:`latent_separation` (Sec. 3.3.5), shared by the above.
 """
 
-import importlib
+from ....core.lazy import lazy_exports
 
 # imported on first use (PEP 562): an evaluation's rule loads only its own module
 _EXPORTS = {
@@ -22,20 +22,7 @@ _EXPORTS = {
     ".measures": ["feature_error", "knn_accuracy", "latent_separation", "observation_error"],
     ".table3_1": ["evaluate_table3_1"],
 }
-_WHERE = {name: module for module, names in _EXPORTS.items() for name in names}
-
-
-def __getattr__(name: str):
-    if name not in _WHERE:
-        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-    value = getattr(importlib.import_module(_WHERE[name], __name__), name)
-    globals()[name] = value
-    return value
-
-
-def __dir__() -> list[str]:
-    return sorted(set(globals()) | set(_WHERE))
-
+__getattr__, __dir__ = lazy_exports(__name__, _EXPORTS)
 
 __all__ = [
     "curves_table", "evaluate_fig3_10", "evaluate_fig3_11", "evaluate_fig3_9", "evaluate_table3_1", "feature_error",
