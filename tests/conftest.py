@@ -39,3 +39,16 @@ def ci_run(tmp_path_factory):
     print(f"CI pipeline: wall {wall:.1f} s, CPU {cpu:.1f} s")
     assert result.returncode == 0, result.stdout[-4000:] + result.stderr[-8000:]
     return work, wall, cpu, result
+
+
+@pytest.fixture(scope="module")
+def one_torch_thread():
+    """Torch on one thread for a module of tiny networks: more threads oversubscribe a
+    shared machine (10x slower here). Modules opt in with
+    ``pytestmark = pytest.mark.usefixtures("one_torch_thread")``."""
+    import torch
+
+    n = torch.get_num_threads()
+    torch.set_num_threads(1)
+    yield
+    torch.set_num_threads(n)

@@ -9,7 +9,6 @@ import re
 import numpy as np
 import pandas as pd
 import pytest
-import torch
 from egges2004_toy import toy_dataset as idle_toy_dataset
 from graph_toy import toy_clips
 
@@ -32,12 +31,7 @@ JM = cmu_joint_map()
 MAX_GENERATED_SKATING_CM_S = 1.0
 
 
-@pytest.fixture(scope="module", autouse=True)
-def one_torch_thread():
-    n = torch.get_num_threads()
-    torch.set_num_threads(1)
-    yield
-    torch.set_num_threads(n)
+pytestmark = pytest.mark.usefixtures("one_torch_thread")  # tests/conftest.py
 
 
 @pytest.fixture(scope="module")

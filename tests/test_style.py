@@ -45,13 +45,7 @@ def toy_walk(n_frames=60, seed=0, turn=0.4, speed=2.0, swing=0.5, arm=0.3):
     return Motion(skeleton=sk, root_pos=root, rotations=rot, fps=120.0)
 
 
-@pytest.fixture(scope="module", autouse=True)
-def one_torch_thread():
-    """Tiny networks: one thread avoids oversubscribing a shared machine (10x faster here)."""
-    n = torch.get_num_threads()
-    torch.set_num_threads(1)
-    yield
-    torch.set_num_threads(n)
+pytestmark = pytest.mark.usefixtures("one_torch_thread")  # tests/conftest.py
 
 
 @pytest.fixture(scope="module")

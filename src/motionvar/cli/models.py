@@ -49,11 +49,10 @@ def _ma2010(rd: ResultsDir) -> list[str]:
         lo, hi = style_range(m)
         ex_lo, ex_hi = style_range(m, 0.0)
         for k, name in enumerate(saved.style_names):
+            rule = (f", widened by {STYLE_MARGIN:.0%} of it on each side; the strides must stay as close to each "
+                    "other as the examples'" if k == 0 else "")
             out.append(f"    style {range_text(lo[k:k + 1], hi[k:k + 1], [name], saved.style_unit)} (examples "
-                       f"{ex_lo[k]:.1f}-{ex_hi[k]:.1f}, widened by {STYLE_MARGIN:.0%} of it on each side; the strides "
-                       "must stay as close to each other as the examples')" if k == 0 else
-                       f"    style {range_text(lo[k:k + 1], hi[k:k + 1], [name], saved.style_unit)} (examples "
-                       f"{ex_lo[k]:.1f}-{ex_hi[k]:.1f})")
+                       f"{ex_lo[k]:.1f}-{ex_hi[k]:.1f}{rule})")
         letters = {g: k for k, g in GROUP_LETTERS.items()}
         out.append("    xi: " + "; ".join(f"{letters[g]} ({g}) {a:.3g}-{b:.3g}" for g, (a, b) in xi_range(m).items()))
         out.append(f"    {m.style_.shape[0]} example cycles of {len(set(saved.subjects))} subjects, {m.fps_:g} fps")

@@ -25,6 +25,17 @@ from __future__ import annotations
 import numpy as np
 
 
+def _feet_and_boundaries(foot_positions: np.ndarray, boundaries: np.ndarray, name: str) -> tuple[np.ndarray, np.ndarray]:
+    """(T, F, 3) float feet and (P + 1,) int boundaries, checked; ValueError naming ``name``."""
+    p = np.asarray(foot_positions, dtype=float)
+    b = np.asarray(boundaries, dtype=np.int64)
+    if p.ndim != 3 or p.shape[1] < 2 or p.shape[2] != 3:
+        raise ValueError(f"{name}: foot_positions must be (T, F>=2, 3); got {p.shape}")
+    if b.ndim != 1 or len(b) < 2 or np.any(np.diff(b) <= 0) or b[0] < 0 or b[-1] >= len(p):
+        raise ValueError(f"{name}: boundaries must increase within [0, {len(p) - 1}]; got {b.tolist()}")
+    return p, b
+
+
 def stride_lengths(
     foot_positions: np.ndarray, boundaries: np.ndarray, up_axis: int = 1, footprint_window: int = 0
 ) -> np.ndarray:
@@ -43,12 +54,7 @@ def stride_lengths(
     Returns:
         (P,) stride length of each phase.
     """
-    p = np.asarray(foot_positions, dtype=float)
-    b = np.asarray(boundaries, dtype=np.int64)
-    if p.ndim != 3 or p.shape[1] < 2 or p.shape[2] != 3:
-        raise ValueError(f"stride_lengths: foot_positions must be (T, F>=2, 3); got {p.shape}")
-    if b.ndim != 1 or len(b) < 2 or np.any(np.diff(b) <= 0) or b[0] < 0 or b[-1] >= len(p):
-        raise ValueError(f"stride_lengths: boundaries must increase within [0, {len(p) - 1}]; got {b.tolist()}")
+    p, b = _feet_and_boundaries(foot_positions, boundaries, "stride_lengths")
     horizontal = [a for a in range(3) if a != up_axis]
     h = p[:, :, horizontal]
     if footprint_window > 0:
@@ -112,12 +118,7 @@ def footfall_strides(
     Returns:
         (P,) stride length of each phase, in the input's units.
     """
-    p = np.asarray(foot_positions, dtype=float)
-    b = np.asarray(boundaries, dtype=np.int64)
-    if p.ndim != 3 or p.shape[1] < 2 or p.shape[2] != 3:
-        raise ValueError(f"footfall_strides: foot_positions must be (T, F>=2, 3); got {p.shape}")
-    if b.ndim != 1 or len(b) < 2 or np.any(np.diff(b) <= 0) or b[0] < 0 or b[-1] >= len(p):
-        raise ValueError(f"footfall_strides: boundaries must increase within [0, {len(p) - 1}]; got {b.tolist()}")
+    p, b = _feet_and_boundaries(foot_positions, boundaries, "footfall_strides")
     at = np.full((len(b), p.shape[1], 2), np.nan)
     for f, (runs, prints) in enumerate(footprints(p, contacts, up_axis)):  # loop over feet
         long = (runs[:, 1] - runs[:, 0]) >= min_contact
