@@ -379,12 +379,40 @@ def test_sfpca_finite_differences_and_joint_groups(data):
     assert np.allclose(w, w[:, :1])  # one weight per joint quaternion
 
 
+def test_stall_test_stops_only_after_a_flat_window():
+    from motionvar.du2022.fda.sfpca import StallTest
+
+    class Step:
+        def __init__(self, fun):
+            self.fun = fun
+
+    stall = StallTest(window=3, rtol=1e-2)
+    for f in (10.0, 9.0, 8.99, 8.98, 8.5, 8.49, 8.48):  # a pause, then a drop: not converged
+        stall(Step(f))
+    assert not stall.stopped
+    with pytest.raises(StopIteration):
+        stall(Step(8.47))  # 8.5 -> 8.47 over 3 iterations: 0.35 % <= 1 %
+    assert stall.stopped
+
+
+def test_sfpca_stall_window_stops_early_and_only_when_flat(data):
+    fd, _, _ = data
+    full = SFPCA(3, max_iter=30, tol=1e-12).fit(fd)
+    early = SFPCA(3, max_iter=30, tol=1e-12, stop_window=3, stop_rtol=1e-2).fit(fd)
+    assert early.stop_ == "window" and early.converged_ and early.n_iter_ < full.n_iter_
+    assert early.loss_ <= full.loss_ * 1.05  # stopped on a plateau, near the longer run's optimum
+    never = SFPCA(3, max_iter=30, tol=1e-12, stop_window=3, stop_rtol=0.0).fit(fd)
+    assert never.n_iter_ == full.n_iter_ and never.loss_ == full.loss_  # rtol 0: only a rise stops it
+
+
 def test_sfpca_bad_params(data):
     fd, _, _ = data
     with pytest.raises(ValueError, match="gradient must be one of"):
         SFPCA(2, gradient="adam").fit(fd)
     with pytest.raises(ValueError, match="bounds"):
         SFPCA(2, bounds=(2.0, 3.0)).fit(fd)
+    with pytest.raises(ValueError, match="stop_window"):
+        SFPCA(2, stop_window=-1).fit(fd)
 
 
 # ---- Bayesian GPLVM -------------------------------------------------------------------
@@ -409,6 +437,34 @@ def test_gplvm_bound_matches_exact_gp_marginal_likelihood():
     _, logdet = np.linalg.slogdet(C)
     exact = -0.5 * (D * N * math.log(2 * math.pi) + D * logdet + np.trace(Y.T @ np.linalg.solve(C, Y)))
     assert math.isclose(float(bound) + kl, exact, rel_tol=1e-5)
+
+
+def test_gplvm_pca_init_matches_sklearn_and_shares_one_svd(monkeypatch):
+    """The PCA initialisation is sklearn's PCA(Q, svd_solver="full") for every Q, and fits of
+    the same data at several latent dimensions (Fig. 3.10's d = 1..40) make one SVD; the fit
+    is the same whether the SVD was cached or not."""
+    from sklearn.decomposition import PCA
+
+    from motionvar.models import bayesian_gplvm as bg
+
+    rng = np.random.default_rng(5)
+    Y = rng.normal(size=(40, 6)) @ rng.normal(size=(6, 30)) + 0.1 * rng.normal(size=(40, 30))
+    for q in (1, 4, 30):
+        pca = PCA(q, svd_solver="full").fit(Y)
+        X, ratio = bg.pca_scores(Y, q)
+        np.testing.assert_allclose(X, pca.transform(Y), rtol=0, atol=1e-12)
+        np.testing.assert_allclose(ratio, pca.explained_variance_ratio_, rtol=1e-12)
+    fits = []
+    real_fit = PCA.fit
+    monkeypatch.setattr(PCA, "fit", lambda self, *a, **k: fits.append(1) or real_fit(self, *a, **k))
+    bg._PCA_CACHE.clear()
+    models = [BayesianGPLVM(q, n_inducing=6, max_iter=5).fit(Y) for q in (2, 3, 2)]
+    assert len(fits) == 1
+    assert np.array_equal(models[0].latent_mean_, models[2].latent_mean_)
+    bg._PCA_CACHE.clear()
+    fresh = BayesianGPLVM(3, n_inducing=6, max_iter=5).fit(Y)
+    assert len(fits) == 2 and fresh.bound_ == models[1].bound_
+    assert np.array_equal(fresh.latent_mean_, models[1].latent_mean_)
 
 
 def test_functional_gplvm_reconstructs(data):

@@ -200,6 +200,25 @@ class ObservationObjective:
         return float(loss.detach()), grad.numpy().astype(float)
 
 
+class StallTest:
+    """L-BFGS-B callback (scipy's ``intermediate_result`` form) that ends the run, by
+    raising StopIteration, once the objective fell by at most ``rtol`` (relative) over the
+    last ``window`` iterations."""
+
+    def __init__(self, window: int, rtol: float) -> None:
+        self.window, self.rtol = window, rtol
+        self.history: list[float] = []
+        self.stopped = False
+
+    def __call__(self, intermediate_result) -> None:
+        self.history.append(float(intermediate_result.fun))
+        if self.window and len(self.history) > self.window:
+            before, now = self.history[-1 - self.window], self.history[-1]
+            if before - now <= self.rtol * abs(before):
+                self.stopped = True
+                raise StopIteration
+
+
 @register_saved
 class SFPCA(FPCA):
     """Scaled FPCA (Eq. 3.8), sklearn-style.
@@ -216,15 +235,22 @@ class SFPCA(FPCA):
         bounds: (low, high) of the weights relative to the initial weights.
         n_eval_frames: canonical frames for f_k in the objective (default: all).
         init: ``"best"`` (thesis: the better of raw and z-scored), ``"raw"`` or ``"normalized"``.
+        stop_window, stop_rtol: besides L-BFGS-B's own tests, stop once the objective fell by
+            at most ``stop_rtol`` (relative) over the last ``stop_window`` iterations (0: off,
+            the thesis' setting: it states no stopping rule). L-BFGS-B's ``ftol`` compares one
+            iteration with the next, and the loss can creep for a few iterations before it
+            drops again; a window tests that it has converged, not paused.
 
     Fitted attributes (besides FPCA's): ``init_`` ("raw" or "normalized"), ``loss_raw_``,
     ``loss_normalized_``, ``loss_`` (objective at the optimum, cm^2), ``n_iter_``,
-    ``n_evals_``, ``fit_time_s_``, ``converged_``.
+    ``n_evals_``, ``fit_time_s_``, ``converged_``, ``stop_`` (what stopped it: ``"window"``
+    for the stall test above, else L-BFGS-B's message).
     """
 
     _EXTRA_SAVED = ("init_", "loss_raw_", "loss_normalized_", "loss_", "n_iter_")
-    _OPTIONAL_SAVED = ("n_evals_", "converged_", "fit_time_s_")
-    _SAVED_PARAMS = ("weight_groups", "gradient", "max_iter", "tol", "bounds", "n_eval_frames", "init")
+    _OPTIONAL_SAVED = ("n_evals_", "converged_", "fit_time_s_", "stop_")
+    _SAVED_PARAMS = ("weight_groups", "gradient", "max_iter", "tol", "bounds", "n_eval_frames", "init",
+                     "stop_window", "stop_rtol")
 
     def __init__(
         self,
@@ -236,6 +262,8 @@ class SFPCA(FPCA):
         bounds: tuple[float, float] = (1e-3, 1e3),
         n_eval_frames: int | None = None,
         init: str = "best",
+        stop_window: int = 0,
+        stop_rtol: float = 1e-4,
     ) -> None:
         super().__init__(n_components)
         self.weight_groups = weight_groups
@@ -245,9 +273,17 @@ class SFPCA(FPCA):
         self.bounds = bounds
         self.n_eval_frames = n_eval_frames
         self.init = init
+        self.stop_window = stop_window
+        self.stop_rtol = stop_rtol
 
     def _restore_params(self) -> None:
         SFPCA.__init__(self, self.n_components)
+
+    def fit_summary(self) -> str:
+        """One line on the fit: start weights, iterations (and whether the stall window
+        ended them), loss."""
+        stalled = " (flat window)" if getattr(self, "stop_", "") == "window" else ""
+        return f"init {self.init_}, {self.n_iter_} it{stalled}, loss {self.loss_:.4g} cm^2"
 
     def _check_params(self) -> None:
         choices = {"weight_groups": ("function", "joint"), "gradient": ("autograd", "finite_difference"),
@@ -260,6 +296,8 @@ class SFPCA(FPCA):
             raise ValueError(f"SFPCA: bounds must satisfy 0 < low <= 1 <= high; got {self.bounds}")
         if int(self.max_iter) < 0:
             raise ValueError(f"SFPCA: max_iter must be >= 0; got {self.max_iter}")
+        if int(self.stop_window) < 0 or not float(self.stop_rtol) >= 0:
+            raise ValueError(f"SFPCA: stop_window and stop_rtol must be >= 0; got {self.stop_window}, {self.stop_rtol}")
 
     def fit(self, X: FunctionalMotions, y=None) -> "SFPCA":
         self._check_fit_input(X)
@@ -300,16 +338,18 @@ class SFPCA(FPCA):
                 value, grad_w = objective.value_and_grad(weights(u))
                 return value, np.bincount(groups, weights=grad_w * w0, minlength=n_params)[free]
             jac = True
+        stall = StallTest(int(self.stop_window), float(self.stop_rtol))
         result = minimize(
             fun, np.ones(len(free)), jac=jac, method="L-BFGS-B",
-            bounds=[self.bounds] * len(free),
+            bounds=[self.bounds] * len(free), callback=stall if stall.window else None,
             options={"maxiter": int(self.max_iter), "ftol": float(self.tol)},
         )
         w = weights(result.x)
         self.loss_ = float(result.fun) if np.isfinite(result.fun) else objective.value(w)
         self.n_iter_ = int(result.nit)
         self.n_evals_ = int(result.nfev)
-        self.converged_ = bool(result.success)
+        self.converged_ = bool(result.success) or stall.stopped
+        self.stop_ = "window" if stall.stopped else str(result.message)
         self._fit_weighted(X, w / np.exp(np.mean(np.log(w))))  # scale-free: geometric mean 1
         self.fit_time_s_ = time.perf_counter() - start
         return self

@@ -91,10 +91,10 @@ def method_curves(
         start = time.perf_counter()
         if method == "sfpca" and d in fitted:
             model = fitted_sfpca(fitted[d], fd, sfpca, f"SFPCA model at d = {d}")
-            note = f"init {model.init_}, {model.n_iter_} it, loss {model.loss_:.4g} cm^2"
+            note = model.fit_summary()
         elif method == "sfpca":
             model = sfpca_for(fd, d, **sfpca).fit(fd)
-            note = f"init {model.init_}, {model.n_iter_} it, loss {model.loss_:.4g} cm^2"
+            note = model.fit_summary()
         else:
             model = FunctionalGPLVM(d, n_inducing=gplvm["n_inducing"], max_iter=gplvm["max_iter"],
                                     noise_init=gplvm["noise_init"],

@@ -94,8 +94,8 @@ def evaluate_table3_1(
             weighted = _given_model(sfpca_models[c["primitive"]], c["primitive"], fd, d_ref)
         else:
             weighted = fit_reference_sfpca(fd, sfpca, reference_components, max_components)
-        log.info("%s: SFPCA(%d) %.1f s, init %s", c["primitive"], d_ref, getattr(weighted, "fit_time_s_", np.nan),
-                 weighted.init_)
+        log.info("%s: SFPCA(%d) %.1f s, %s", c["primitive"], d_ref, getattr(weighted, "fit_time_s_", np.nan),
+                 weighted.fit_summary())
         reference = fd.positions()
         models = {"sfpca": WeightedFPCA(d_max, weighted.function_weights_).fit(fd), "fpca": FPCA(d_max).fit(fd)}
         row = {"primitive": c["primitive"], "behaviour": c["behaviour"], "clips": fd.n_clips,
