@@ -7,12 +7,14 @@ synthesis by Levenberg-Marquardt and graph-walk generation.
   at key frames), ``to_motions`` (back-projection), ``save``/``load`` (npz + json);
   :func:`primitive_clips` (the clips of one primitive in a dataset).
 - :mod:`.constraints`: :class:`Constraint` (position, orientation, heading),
-  :class:`Objective` (Eq. 4.2, counts evaluations), :func:`random_constraints` (Sec. 4.6.2).
+  :class:`Objective` (Eq. 4.2, counts evaluations), :class:`ConstraintStack` (Eq. 4.2 for
+  many queries at once), :func:`random_constraints` (Sec. 4.6.2).
 - :mod:`.trees`: :class:`SpacePartitioningTree` (k-means, GMM, median; beam search,
   Sec. 4.4.2/4.5.2), :class:`MedianKDTree` (the median tree as DFKI's kd-tree: median-sample
   nodes, greedy descent), :func:`select_beam` (beam from an evaluation budget),
   :func:`brute_force`, :func:`random_search`, :class:`KeyFramePositionIndex` (exact search
-  on precomputed key-frame poses).
+  and batch objectives on precomputed key-frame poses); ``search_many`` of the trees and
+  :func:`random_search_many` answer many queries in lockstep (Fig. 4.12).
 - :mod:`.synthesis`: :func:`optimize_map` (Eq. 4.9 by Levenberg-Marquardt);
   :class:`StepChain`, :class:`StepGoal` and :func:`optimize_chain` (several steps of a walk
   optimised together, Algorithm 1 line 9).
@@ -23,7 +25,7 @@ synthesis by Levenberg-Marquardt and graph-walk generation.
   returning an EvaluationResult; :mod:`.figures` draws them.
 """
 
-from .constraints import Constraint, Objective, random_constraints
+from .constraints import Constraint, ConstraintStack, Objective, random_constraints
 from .morphable_graph import (
     MorphableGraph, Path2D, StepResult, WalkSettings, concatenate_steps, follow_path, place_motion, synthesize_step,
 )
@@ -31,13 +33,14 @@ from .primitive import MotionPrimitive, PrimitiveOptions, primitive_clips, selec
 from .synthesis import ChainResult, MapResult, StepChain, StepGoal, optimize_chain, optimize_map
 from .trees import (
     TREE_KINDS, KeyFramePositionIndex, MedianKDTree, SearchResult, SpacePartitioningTree, brute_force, random_search,
-    select_beam, tree_search,
+    random_search_many, select_beam, tree_search,
 )
 
 __all__ = [
-    "TREE_KINDS", "ChainResult", "Constraint", "KeyFramePositionIndex", "MapResult", "MedianKDTree", "MorphableGraph",
-    "MotionPrimitive", "Objective", "Path2D", "PrimitiveOptions", "SearchResult", "SpacePartitioningTree", "StepChain",
-    "StepGoal", "StepResult", "WalkSettings", "brute_force", "concatenate_steps", "follow_path", "optimize_chain",
-    "optimize_map", "place_motion", "primitive_clips", "random_constraints", "random_search", "select_beam",
-    "select_gmm", "synthesize_step", "tree_search",
+    "TREE_KINDS", "ChainResult", "Constraint", "ConstraintStack", "KeyFramePositionIndex", "MapResult",
+    "MedianKDTree", "MorphableGraph", "MotionPrimitive", "Objective", "Path2D", "PrimitiveOptions", "SearchResult",
+    "SpacePartitioningTree", "StepChain", "StepGoal", "StepResult", "WalkSettings", "brute_force",
+    "concatenate_steps", "follow_path", "optimize_chain", "optimize_map", "place_motion", "primitive_clips",
+    "random_constraints", "random_search", "random_search_many", "select_beam", "select_gmm", "synthesize_step",
+    "tree_search",
 ]

@@ -17,6 +17,9 @@ to the constraints c_i at key frames of the canonical timeline. Constraint kinds
 
 :class:`Objective` evaluates Eq. 4.2 for a batch of latent vectors and counts how many
 latent vectors it has evaluated (the "number of evaluations" of Fig. 4.12).
+:class:`ConstraintStack` evaluates many queries of the same structure at once (each row
+of a batch under its own query): :func:`kind_error` is elementwise over rows, so the
+numbers are those of one query at a time.
 """
 
 from __future__ import annotations
@@ -71,25 +74,120 @@ class Constraint:
         object.__setattr__(self, "target", target)
         object.__setattr__(self, "mask", np.asarray(self.mask, dtype=float))
 
-    def error(self, pos: np.ndarray, rot: np.ndarray) -> np.ndarray:
+    @property
+    def active_mask(self) -> np.ndarray | None:
+        """The position mask, or None where it constrains all three axes (x * 1 is x: the
+        product is left out)."""
+        return None if self.kind != "position" or np.all(self.mask == 1.0) else self.mask
+
+    def error(self, pos: np.ndarray | None, rot: np.ndarray | None) -> np.ndarray:
         """(B,) error from the constrained joints' positions (B, len(joints), 3) and
-        global rotations (B, len(joints), 4) at the key frame."""
-        if self.kind == "position":
-            return np.linalg.norm((pos - self.target) * self.mask, axis=-1).mean(axis=-1)
-        if self.kind == "orientation":
-            a = qrot(rot[:, 0, None, :], _AXES)  # (B, 3, 3) rotated reference axes
-            b = qrot(self.target[None, :], _AXES)  # (3, 3)
-            cos = np.einsum("bij,ij->bi", a, b)
-            sin = np.linalg.norm(np.cross(a, b), axis=-1)  # atan2: accurate near 0 (arccos is not)
-            return np.degrees(np.arctan2(sin, cos)).mean(axis=-1)
-        facing = np.cross(_UP, pos[:, 1] - pos[:, 0])
-        return _angle_2d(facing, self.target)
+        global rotations (B, len(joints), 4) at the key frame (orientation reads only
+        ``rot``, the other kinds only ``pos``: the other may be None)."""
+        return kind_error(self.kind, pos, rot, self.target, self.active_mask)
+
+
+def reference_axes(rot: np.ndarray) -> np.ndarray:
+    """(B, 3, 3) the unit axes rotated by the global rotations (B, J', 4) of the constrained
+    joint (the first): the reference vectors of the orientation error."""
+    return qrot(rot[:, 0, None, :], _AXES)
+
+
+def kind_error(kind: str, pos: np.ndarray | None, rot: np.ndarray | None, target: np.ndarray,
+               mask: np.ndarray | None = None, axes: np.ndarray | None = None) -> np.ndarray:
+    """(B,) errors of one constraint ``kind`` (module docstring) from the constrained joints'
+    positions (B, J', 3) and rotations (B, J', 4) at the key frame (an orientation error
+    reads only the rotations, or their :func:`reference_axes` ``axes`` where given; the
+    others only the positions). ``target`` (and the position ``mask``, None: all axes) is
+    one constraint's (the shapes of :class:`Constraint`) or one per row (a leading B axis;
+    the mask then (B, 1, 3)): every operation is elementwise over rows, so many queries at
+    once give the numbers of one query at a time (:class:`ConstraintStack`)."""
+    if kind == "position":
+        diff = pos - target
+        return np.linalg.norm(diff if mask is None else diff * mask, axis=-1).mean(axis=-1)
+    if kind == "orientation":
+        a = reference_axes(rot) if axes is None else axes  # (B, 3, 3)
+        b = qrot(target[..., None, :], _AXES)  # (3, 3), or (B, 3, 3) per row
+        cos = np.einsum("bij,bij->bi" if b.ndim == 3 else "bij,ij->bi", a, b)
+        sin = np.linalg.norm(np.cross(a, b), axis=-1)  # atan2: accurate near 0 (arccos is not)
+        return np.degrees(np.arctan2(sin, cos)).mean(axis=-1)
+    facing = np.cross(_UP, pos[:, 1] - pos[:, 0])
+    return _angle_2d(facing, target)
 
 
 def _angle_2d(u: np.ndarray, v: np.ndarray) -> np.ndarray:
-    """Angles (degrees) between the floor projections (x, z) of u (B, 3) and v (3,)."""
-    a = np.arctan2(u[:, 2], u[:, 0]) - np.arctan2(v[2], v[0])
+    """Angles (degrees) between the floor projections (x, z) of u (B, 3) and v (3,) or (B, 3)."""
+    a = np.arctan2(u[:, 2], u[:, 0]) - np.arctan2(v[..., 2], v[..., 0])
     return np.degrees(np.abs((a + np.pi) % (2 * np.pi) - np.pi))
+
+
+def _slot_errors(slots: Sequence[Constraint], targets: Sequence[np.ndarray], masks: Sequence[np.ndarray | None],
+                 pos: np.ndarray, rot: np.ndarray, frames: Sequence[int], joints: Sequence[int]) -> np.ndarray:
+    """(B, n_c) errors of the constraints ``slots`` (kind, frame, joints) with ``targets`` and
+    ``masks`` (one constraint's or per row) from key-frame poses: positions (B, F, J', 3)
+    and rotations (B, F, J', 4) of ``joints`` at ``frames``. ValueError naming the
+    constraint when its frame or joints are not among ``frames`` and ``joints``."""
+    fi = {int(f): i for i, f in enumerate(frames)}
+    ji = {int(j): i for i, j in enumerate(joints)}
+    out = np.empty((len(pos), len(slots)))
+    for k, (c, target, mask) in enumerate(zip(slots, targets, masks)):  # the (few) constraints; rows batched
+        try:
+            f, idx = fi[c.frame], [ji[j] for j in c.joints]
+        except KeyError:
+            raise ValueError(f"constraint on frame {c.frame}, joints {c.joints} not precomputed (frames "
+                             f"{list(frames)}, joints {list(joints)})") from None
+        if c.kind == "orientation":
+            out[:, k] = kind_error(c.kind, None, rot[:, f, idx], target, mask)
+        else:
+            out[:, k] = kind_error(c.kind, pos[:, f, idx], None, target, mask)
+    return out
+
+
+def constraint_errors(constraints: Sequence[Constraint], pos: np.ndarray, rot: np.ndarray, frames: Sequence[int],
+                      joints: Sequence[int]) -> np.ndarray:
+    """(B, n_c) errors of ``constraints`` (the terms of Eq. 4.2) from key-frame poses: global
+    positions (B, F, J', 3) and rotations (B, F, J', 4) of ``joints`` at ``frames`` (as
+    :meth:`MotionPrimitive.key_frame_pose` gives them). ValueError naming the constraint when
+    its frame or joints are not among ``frames`` and ``joints``."""
+    return _slot_errors(constraints, [c.target for c in constraints], [c.active_mask for c in constraints],
+                        pos, rot, frames, joints)
+
+
+class ConstraintStack:
+    """Many queries of Eq. 4.2 at once: Q constraint lists of the same structure (constraint
+    k of every query has the same kind, frame and joints, e.g. the random queries of one
+    kind in Fig. 4.12), their targets and masks stacked.
+
+    ``errors(pos, rot, frames, joints, query)`` gives the (B, n_c) errors of row b's pose
+    under query ``query[b]``: the numbers :func:`constraint_errors` gives for that query
+    alone (:func:`kind_error`), for the candidates of all queries in one vectorised call.
+    """
+
+    def __init__(self, queries: Sequence[Sequence[Constraint]]) -> None:
+        queries = [list(q) for q in queries]
+        if not queries or not queries[0]:
+            raise ValueError("constraint stack: no queries, or a query without constraints")
+        self.slots = queries[0]
+        shape = [(c.kind, c.frame, c.joints) for c in self.slots]
+        for i, q in enumerate(queries):
+            got = [(c.kind, c.frame, c.joints) for c in q]
+            if got != shape:
+                raise ValueError(f"constraint stack: query {i} has constraints {got}, query 0 {shape}: stacked queries "
+                                 "need the same kinds, frames and joints")
+        self.n_queries = len(queries)
+        self.targets = [np.stack([q[k].target for q in queries]) for k in range(len(shape))]
+        masks = [[q[k].active_mask for q in queries] for k in range(len(shape))]
+        # (Q, 1, 3): broadcasts over the joints of a row; None where no query of a slot masks
+        self.masks = [None if all(m is None for m in ms) else
+                      np.stack([np.ones(3) if m is None else m for m in ms])[:, None] for ms in masks]
+
+    def errors(self, pos: np.ndarray, rot: np.ndarray, frames: Sequence[int], joints: Sequence[int],
+               query: np.ndarray) -> np.ndarray:
+        """(B, n_c) errors of the poses ``pos`` (B, F, J', 3), ``rot`` (B, F, J', 4) (of
+        ``joints`` at ``frames``) under the queries ``query`` (B,) (indices into the stack)."""
+        query = np.asarray(query, dtype=np.int64)
+        return _slot_errors(self.slots, [t[query] for t in self.targets],
+                            [None if m is None else m[query] for m in self.masks], pos, rot, frames, joints)
 
 
 class Objective:
@@ -108,20 +206,13 @@ class Objective:
         frames = sorted({c.frame for c in self.constraints})
         joints = sorted({j for c in self.constraints for j in c.joints})
         self._frames, self._joints = frames, joints
-        self._fi = {f: i for i, f in enumerate(frames)}
-        self._ji = {j: i for i, j in enumerate(joints)}
         primitive.frame_map(frames)  # validates the frames
 
     def errors(self, S: np.ndarray) -> np.ndarray:
         S = np.atleast_2d(S)
         self.n_evals += len(S)
         pos, rot = self.primitive.key_frame_pose(S, self._frames, self._joints)
-        out = np.empty((len(S), len(self.constraints)))
-        for k, c in enumerate(self.constraints):
-            f = self._fi[c.frame]
-            idx = [self._ji[j] for j in c.joints]
-            out[:, k] = c.error(pos[:, f, idx], rot[:, f, idx])
-        return out
+        return constraint_errors(self.constraints, pos, rot, self._frames, self._joints)
 
     def __call__(self, S: np.ndarray) -> np.ndarray:
         return self.errors(S).sum(axis=1)

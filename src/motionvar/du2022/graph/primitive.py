@@ -27,6 +27,7 @@ offsets): no motion data (Sec. 4.6.1, "Compactness"). Save/load is npz + json (n
 from __future__ import annotations
 
 import json
+import math
 from collections.abc import Sequence
 from dataclasses import asdict, dataclass
 from pathlib import Path
@@ -106,6 +107,32 @@ def select_gmm(X: np.ndarray, k_range: tuple[int, int], criterion: str = "bic", 
             if best is None or scores[k] < scores[best.n_components]:
                 best = gmm
     return best, scores
+
+
+def gmm_log_density(gmm: GaussianMixture, X: np.ndarray) -> np.ndarray:
+    """(N,) log p(x) of Eq. 4.1 for a fitted full-covariance GaussianMixture at X (N, d).
+
+    The operations of scikit-learn's ``score_samples`` (1.9: each component's log density
+    from its precision Cholesky factor, then its log-sum-exp), so the same numbers, without
+    its per-call input validation: that was two thirds of a call on the small batches of the
+    Levenberg-Marquardt objective (Eq. 4.9). X must be finite (not checked here)."""
+    n_components, d = gmm.means_.shape
+    prec_chol = gmm.precisions_cholesky_
+    log_det = np.sum(np.log(prec_chol.reshape(n_components, -1)[:, :: d + 1]), axis=1)
+    log_prob = np.empty((len(X), n_components), dtype=X.dtype)
+    for k in range(n_components):  # a loop over the (few) Gaussians; samples batched
+        y = (X @ prec_chol[k]) - (gmm.means_[k] @ prec_chol[k])
+        log_prob[:, k] = np.sum(np.square(y), axis=1)
+    weighted = -0.5 * (d * math.log(2 * math.pi) + log_prob) + log_det + np.log(gmm.weights_)
+    # log-sum-exp over the Gaussians as scikit-learn's: shifted by the maximum, whose terms are counted in m
+    top = np.max(weighted, axis=1, keepdims=True)
+    is_top = weighted == top
+    rest = weighted.copy()
+    rest[is_top] = -np.inf
+    m = np.sum(is_top.astype(rest.dtype), axis=1, keepdims=True, dtype=rest.dtype)
+    total = np.sum(np.exp(rest - np.where(np.isfinite(top), top, 0)), axis=1, keepdims=True, dtype=rest.dtype)
+    total = np.where(total == 0, total, total / m)
+    return np.squeeze(np.log1p(total) + np.log(m) + top, axis=1)
 
 
 def primitive_clips(dataset: MotionDataset, primitive: str,
@@ -249,8 +276,11 @@ class MotionPrimitive:
         return s[rng.permutation(len(s))]
 
     def log_prob(self, s: np.ndarray) -> np.ndarray:
-        """(N,) log p(s) under the GMM (Eq. 4.1)."""
-        return self.gmm_.score_samples(self._check_latent(s))
+        """(N,) log p(s) under the GMM (Eq. 4.1; :func:`gmm_log_density`)."""
+        s = self._check_latent(s)
+        if not np.all(np.isfinite(s)):
+            raise ValueError(f"primitive {self.name}: latent vectors contain NaN or infinity")
+        return gmm_log_density(self.gmm_, s)
 
     def nll_reference(self) -> float:
         """min over the component means of -log p(s): an offset that makes the negative

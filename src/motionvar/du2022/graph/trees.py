@@ -33,11 +33,19 @@ References (Fig. 4.12): :func:`random_search` (the best of 100 fresh GMM samples
 "better than the paper" option: the constrained joints' key-frame positions of all
 samples are computed once, so that an exact brute-force search costs one vectorised
 distance computation per query (no back-projection, no forward kinematics).
+
+Many queries at once (the thousands of random queries of Fig. 4.12): ``search_many`` of
+both trees runs the queries in lockstep, evaluating the candidates of all queries at a
+level in one call of a batch objective ``evaluate(query, rows)`` (e.g.
+:meth:`KeyFramePositionIndex.objective_many` over the precomputed key-frame poses of the
+tree's ``points``), and :func:`random_search_many` draws and evaluates the random
+references of all queries together. Every query gets exactly what its own search gives
+(the same candidates, sample, error and number of evaluations); ``search`` is
+``search_many`` with one query.
 """
 
 from __future__ import annotations
 
-import heapq
 import warnings
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
@@ -48,10 +56,12 @@ from sklearn.exceptions import ConvergenceWarning
 from sklearn.mixture import GaussianMixture
 from threadpoolctl import threadpool_limits
 
-from .constraints import Constraint, Objective
+from .constraints import Constraint, ConstraintStack, Objective, kind_error, reference_axes
 from .primitive import MotionPrimitive
 
 TREE_KINDS = ("kmeans", "gmm", "median")
+# the objective of many queries at once: (query (B,), rows (B,)) -> (B,) values of query[b] at rows[b]
+BatchObjective = Callable[[np.ndarray, np.ndarray], np.ndarray]
 KD_SPLITS = ("max_variance", "cyclic")
 
 
@@ -104,9 +114,10 @@ class SpacePartitioningTree:
         seed: random state of the clusterings.
 
     Attributes: ``means`` (M, d) node means, ``children`` (list of child index arrays),
-    ``leaves`` (node -> sample indices), ``depth``. Building runs the clusterings
-    single-threaded (threadpoolctl): on a loaded machine BLAS/OpenMP threads made the
-    many small clusterings 10-30x slower.
+    ``leaves`` (node -> sample indices), ``depth``, ``points`` (N + M, d): the latent
+    vectors a search evaluates, the samples then the node means (node k is row N + k).
+    Building runs the clusterings single-threaded (threadpoolctl): on a loaded machine
+    BLAS/OpenMP threads made the many small clusterings 10-30x slower.
     """
 
     def __init__(self, samples: np.ndarray, kind: str = "kmeans", n_children: int | None = None,
@@ -121,6 +132,7 @@ class SpacePartitioningTree:
         if k < 2 or int(leaf_size) < 1:
             raise ValueError(f"tree: n_children must be >= 2 and leaf_size >= 1; got {k}, {leaf_size}")
         self.kind, self.samples, self.n_children, self.leaf_size = kind, X, k, int(leaf_size)
+        self._padded: tuple[np.ndarray, np.ndarray, np.ndarray] | None = None  # see _tables
         with threadpool_limits(1):  # hundreds of small clusterings: threads only add overhead
             self._build(X, split, k, seed)
 
@@ -151,6 +163,7 @@ class SpacePartitioningTree:
             self.children[node] = np.array(kids, dtype=np.int64)
         self.means = np.stack(means)
         self.depth = max(depth.values())
+        self.points = np.concatenate([X, self.means])  # the rows of search_many: samples, then node means
 
     @property
     def n_nodes(self) -> int:
@@ -159,27 +172,55 @@ class SpacePartitioningTree:
     def search(self, objective: Callable[[np.ndarray], np.ndarray], beam: int = 2) -> SearchResult:
         """Beam descent (module docstring): keep the ``beam`` best children per level,
         evaluate the samples of the leaves reached. ``objective`` maps (B, d) -> (B,)."""
+        return self.search_many(lambda query, rows: objective(self.points[rows]), 1, beam)[0]
+
+    def search_many(self, evaluate: BatchObjective, n_queries: int, beam: int = 2) -> list[SearchResult]:
+        """:meth:`search` for ``n_queries`` queries in lockstep (Sec. 4.5.2): level by level,
+        the candidates of all queries (the samples of the leaves in their beams, then the
+        children of their inner nodes) are evaluated in one call ``evaluate(query, rows)``
+        -> (B,), the objective of query ``query[b]`` at row ``rows[b]`` of ``points``
+        (e.g. :meth:`KeyFramePositionIndex.objective_many`). Every query gets what
+        :meth:`search` gives it alone: the same candidates in the same order, the same
+        number of evaluations, ties broken alike (the first of equal values; NaN last)."""
         if int(beam) < 1:
             raise ValueError(f"tree search: beam must be >= 1; got {beam}")
-        frontier, n_evals = [0], 0
-        best = (np.inf, -1)
-        while frontier:
-            leaf_nodes = [n for n in frontier if n in self.leaves]
-            inner = [n for n in frontier if n not in self.leaves]
-            if leaf_nodes:
-                idx = np.concatenate([self.leaves[n] for n in leaf_nodes])
-                err = objective(self.samples[idx])
-                n_evals += len(idx)
-                i = int(np.argmin(err))
-                if err[i] < best[0]:
-                    best = (float(err[i]), int(idx[i]))
-            if not inner:
-                break
-            kids = np.concatenate([self.children[n] for n in inner])
-            err = objective(self.means[kids])
-            n_evals += len(kids)
-            frontier = [int(kids[i]) for i in heapq.nsmallest(int(beam), range(len(kids)), key=err.__getitem__)]
-        return SearchResult(best[1], self.samples[best[1]].copy(), best[0], n_evals)
+        kids_of, samples_of, is_leaf = self._tables()
+        q_all = np.arange(int(n_queries))
+        frontier = np.zeros((len(q_all), 1), dtype=np.int64)  # node ids of each query's beam, -1: none
+        best_err, best = np.full(len(q_all), np.inf), np.full(len(q_all), -1, dtype=np.int64)
+        n_evals = np.zeros(len(q_all), dtype=np.int64)
+        while (frontier >= 0).any():
+            live = frontier >= 0
+            node = np.where(live, frontier, 0)
+            leaf = live & is_leaf[node]
+            # the samples of the leaves reached, in beam order; then the children of the inner nodes
+            cand = np.where(leaf[..., None], samples_of[node], -1).reshape(len(q_all), -1)
+            err = _evaluate_padded(evaluate, cand)
+            n_evals += (cand >= 0).sum(axis=1)
+            i = np.argmin(err, axis=1)
+            better = err[q_all, i] < best_err
+            best_err[better], best[better] = err[better, i[better]], cand[better, i[better]]
+            kids = np.where((live & ~leaf)[..., None], kids_of[node], -1).reshape(len(q_all), -1)
+            err = _evaluate_padded(evaluate, kids, offset=len(self.samples))
+            n_evals += (kids >= 0).sum(axis=1)
+            order = np.lexsort((err, kids < 0), axis=-1)[:, :int(beam)]  # stable: as heapq.nsmallest
+            frontier = np.take_along_axis(kids, order, axis=1)
+        return _results(self.samples, best, best_err, n_evals)
+
+    def _tables(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Padded arrays of the tree (-1: none): children per node (M, max children), samples
+        per leaf (M, max leaf size), and whether a node is a leaf (M,); built once."""
+        if self._padded is None:
+            kids = np.full((self.n_nodes, max(len(c) for c in self.children)), -1, dtype=np.int64)
+            leaf_samples = np.full((self.n_nodes, max(len(v) for v in self.leaves.values())), -1, dtype=np.int64)
+            for n, c in enumerate(self.children):
+                kids[n, :len(c)] = c
+            for n, idx in self.leaves.items():
+                leaf_samples[n, :len(idx)] = idx
+            is_leaf = np.zeros(self.n_nodes, dtype=bool)
+            is_leaf[list(self.leaves)] = True
+            self._padded = (kids, leaf_samples, is_leaf)
+        return self._padded
 
 
 class MedianKDTree:
@@ -232,24 +273,40 @@ class MedianKDTree:
     def n_nodes(self) -> int:
         return len(self.point)
 
+    @property
+    def points(self) -> np.ndarray:
+        """The latent vectors a search evaluates (the rows of :meth:`search_many`): the samples."""
+        return self.samples
+
     def search(self, objective: Callable[[np.ndarray], np.ndarray]) -> SearchResult:
         """Greedy descent (DFKI's ``find_best_example``): evaluate the root's sample, then
         at every node the samples of its children, moving to the child with the lower
         objective (the right one on a tie, as DFKI); the best sample evaluated wins."""
-        node = 0
-        best_err = float(objective(self.samples[self.point[:1]])[0])
-        best, n_evals = int(self.point[0]), 1
-        while True:
-            kids = [int(c) for c in (self.left[node], self.right[node]) if c >= 0]
-            if not kids:
-                break
-            err = objective(self.samples[self.point[kids]])
-            n_evals += len(kids)
-            i = 0 if len(kids) == 1 or err[0] < err[1] else 1
-            node = kids[i]
-            if err[i] < best_err:
-                best_err, best = float(err[i]), int(self.point[node])
-        return SearchResult(best, self.samples[best].copy(), best_err, n_evals)
+        return self.search_many(lambda query, rows: objective(self.samples[rows]), 1)[0]
+
+    def search_many(self, evaluate: BatchObjective, n_queries: int) -> list[SearchResult]:
+        """:meth:`search` for ``n_queries`` queries in lockstep: at every level the children of
+        all queries' current nodes are evaluated in one call ``evaluate(query, rows)`` -> (B,)
+        (rows: sample indices; :meth:`SpacePartitioningTree.search_many`); every query gets
+        what :meth:`search` gives it alone."""
+        q_all = np.arange(int(n_queries))
+        node = np.zeros(len(q_all), dtype=np.int64)
+        best = np.full(len(q_all), self.point[0], dtype=np.int64)
+        best_err = np.array(evaluate(q_all, best), dtype=float)
+        n_evals = np.ones(len(q_all), dtype=np.int64)
+        active = np.ones(len(q_all), dtype=bool)
+        while active.any():
+            kids = np.where(active[:, None], np.stack([self.left[node], self.right[node]], axis=1), -1)
+            has = kids >= 0
+            err = _evaluate_padded(evaluate, np.where(has, self.point[np.maximum(kids, 0)], -1))
+            n_evals += has.sum(axis=1)
+            # one child: that one; two: the right one unless the left is lower
+            side = np.where(has[:, 1] & ~(has[:, 0] & (err[:, 0] < err[:, 1])), 1, 0)
+            active = has.any(axis=1)
+            node = np.where(active, kids[q_all, side], node)
+            better = active & (err[q_all, side] < best_err)
+            best_err[better], best[better] = err[better, side[better]], self.point[node[better]]
+        return _results(self.samples, best, best_err, n_evals)
 
 
 def select_beam(mean_evals: dict[int, float], budget: float) -> tuple[int, bool]:
@@ -260,6 +317,22 @@ def select_beam(mean_evals: dict[int, float], budget: float) -> tuple[int, bool]
         raise ValueError("select_beam: no beams measured")
     fits = [b for b, e in mean_evals.items() if e < budget]
     return (max(fits), True) if fits else (min(mean_evals), False)
+
+
+def _results(samples: np.ndarray, best: np.ndarray, errors: np.ndarray, n_evals: np.ndarray) -> list[SearchResult]:
+    """One SearchResult per query from the arrays of a lockstep search."""
+    return [SearchResult(int(b), samples[b].copy(), float(e), int(n)) for b, e, n in zip(best, errors, n_evals)]
+
+
+def _evaluate_padded(evaluate: BatchObjective, cand: np.ndarray, offset: int = 0) -> np.ndarray:
+    """(Q, C) objective values of the candidates ``cand`` (Q, C) of Q queries (rows, -1:
+    none, inf there) by one call ``evaluate(query, rows + offset)`` over the real ones,
+    query by query in column order."""
+    err = np.full(cand.shape, np.inf)
+    q, c = np.nonzero(cand >= 0)
+    if len(q):
+        err[q, c] = evaluate(q, cand[q, c] + offset)
+    return err
 
 
 def brute_force(samples: np.ndarray, objective: Callable[[np.ndarray], np.ndarray],
@@ -280,13 +353,36 @@ def random_search(primitive: MotionPrimitive, objective: Callable[[np.ndarray], 
     return SearchResult(-1, S[i].copy(), float(errs[i]), n)
 
 
-class KeyFramePositionIndex:
-    """Exact search over precomputed key-frame poses (our option, not in the paper).
+def random_search_many(primitive: MotionPrimitive, queries: Sequence[Sequence[Constraint]], n: int = 100,
+                       rng: np.random.Generator | int | None = None) -> list[SearchResult]:
+    """:func:`random_search` for many queries of the same structure (:class:`ConstraintStack`):
+    ``n`` fresh GMM samples per query, drawn from ``rng`` query by query as one
+    :func:`random_search` per query draws them, their key-frame poses computed in batches and
+    all queries' objectives in one call; each result is that query's :func:`random_search`."""
+    rng = np.random.default_rng(rng)
+    stack = ConstraintStack(queries)
+    fresh = np.concatenate([primitive.sample(n, rng) for _ in range(stack.n_queries)])  # (Q n, d), query-major
+    index = KeyFramePositionIndex(primitive, fresh, sorted({c.frame for c in stack.slots}),
+                                  sorted({j for c in stack.slots for j in c.joints}))
+    rows = np.arange(len(fresh))
+    err = index.objective_many(stack)(rows // n, rows).reshape(stack.n_queries, n)
+    best = np.argmin(err, axis=1)
+    return [SearchResult(-1, fresh[q * n + i].copy(), float(err[q, i]), n) for q, i in enumerate(best)]
 
-    The global positions and rotations of ``joints`` at canonical ``frames`` are computed
-    once for all samples; a query whose constraints use only those frames and joints is
-    then an exact brute force costing one vectorised error computation (no
-    back-projection, no FK). Gives the same answer as :func:`brute_force`.
+
+class KeyFramePositionIndex:
+    """Eq. 4.2 over precomputed key-frame poses (our option, not in the paper).
+
+    The global positions and rotations of ``joints`` at canonical ``frames`` (f_k(M(s)) of
+    Eq. 4.2) are computed once for all ``samples``, in batches; a query whose constraints
+    use only those frames and joints then costs no back-projection and no FK:
+
+    - :meth:`search`: exact brute force, one vectorised error computation; the same
+      answer as :func:`brute_force`;
+    - :meth:`objective_many`: the objectives of many queries at rows of ``samples``, the
+      values :class:`~.constraints.Objective` gives on those latent vectors (FK is
+      elementwise over a batch), for the lockstep tree searches over a tree's ``points``
+      (:meth:`SpacePartitioningTree.search_many`, :meth:`MedianKDTree.search_many`).
     """
 
     def __init__(self, primitive: MotionPrimitive, samples: np.ndarray, frames: Sequence[int],
@@ -297,17 +393,46 @@ class KeyFramePositionIndex:
                  for i in range(0, len(self.samples), batch)]
         self.positions = np.concatenate([p for p, _ in parts])  # (N, F, J', 3)
         self.rotations = np.concatenate([r for _, r in parts])
+        self._inputs: dict[tuple, tuple[np.ndarray | None, np.ndarray | None]] = {}
+
+    def _error_inputs(self, c: Constraint) -> tuple[np.ndarray | None, np.ndarray | None]:
+        """What the error of ``c`` reads for all samples, gathered once per kind, frame and
+        joints: positions (N, J', 3) or, for orientation, the reference axes (N, 3, 3)."""
+        key = (c.kind, c.frame, c.joints)
+        if key not in self._inputs:
+            try:
+                f, idx = self.frames.index(c.frame), [self.joints.index(j) for j in c.joints]
+            except ValueError:
+                raise ValueError(f"KeyFramePositionIndex: constraint on frame {c.frame}, joints {c.joints} not "
+                                 f"precomputed (frames {self.frames}, joints {self.joints})") from None
+            orient = c.kind == "orientation"
+            self._inputs[key] = (None, reference_axes(self.rotations[:, f, idx])) if orient else \
+                (self.positions[:, f, idx], None)
+        return self._inputs[key]
+
+    def errors(self, constraints: Sequence[Constraint]) -> np.ndarray:
+        """(N, n_c) per-constraint errors of all samples (Eq. 4.2's terms)."""
+        out = np.empty((len(self.samples), len(constraints)))
+        for k, c in enumerate(constraints):  # the (few) constraints; all samples at once
+            pos, axes = self._error_inputs(c)
+            out[:, k] = kind_error(c.kind, pos, None, c.target, c.active_mask, axes=axes)
+        return out
+
+    def objective_many(self, stack: ConstraintStack) -> BatchObjective:
+        """O(s, c) of Eq. 4.2 for the queries of ``stack``: ``f(query, rows)`` -> (B,), query
+        ``query[b]`` at sample ``rows[b]``."""
+        def f(query: np.ndarray, rows: np.ndarray) -> np.ndarray:
+            return stack.errors(self.positions[rows], self.rotations[rows], self.frames, self.joints, query).sum(axis=1)
+
+        try:
+            f(np.zeros(0, dtype=np.int64), np.zeros(0, dtype=np.int64))  # checks the frames and joints once
+        except ValueError as exc:
+            raise ValueError(f"KeyFramePositionIndex: {exc}") from None
+        return f
 
     def search(self, constraints: Sequence[Constraint]) -> SearchResult:
-        total = np.zeros(len(self.samples))
-        for c in constraints:
-            try:
-                f = self.frames.index(c.frame)
-                idx = [self.joints.index(j) for j in c.joints]
-            except ValueError:
-                raise ValueError(f"KeyFramePositionIndex: constraint on frame {c.frame}, joints {c.joints} "
-                                 f"not precomputed (frames {self.frames}, joints {self.joints})") from None
-            total += c.error(self.positions[:, f, idx], self.rotations[:, f, idx])
+        """The exact best sample for ``constraints`` (brute force on the precomputed poses)."""
+        total = self.errors(constraints).sum(axis=1)
         i = int(np.argmin(total))
         return SearchResult(i, self.samples[i].copy(), float(total[i]), 0)
 
