@@ -73,6 +73,34 @@ def test_fk_numpy_matches_torch_to_1e5_cm():
     assert np.max(np.abs(ref - got)) < 1e-5
 
 
+def fk_per_joint(rotations, root, local, parents):
+    """The textbook loop on (..., J, 4) arrays: R_j = R_parent * q_j, p_j = p_parent + R_parent o_j."""
+    grot, gpos = [rotations[..., 0, :]], [root]
+    for j in range(1, rotations.shape[-2]):
+        grot.append(Q.qmul(grot[parents[j]], rotations[..., j, :]))
+        gpos.append(gpos[parents[j]] + Q.qrot(grot[parents[j]], local[..., j, :]))
+    return np.stack(gpos, axis=-2), np.stack(grot, axis=-2)
+
+
+@pytest.mark.parametrize("dtype", [np.float64, np.float32])
+def test_fk_joint_major_equals_the_per_joint_loop_bit_for_bit(dtype):
+    rng = np.random.default_rng(5)
+    sk = cmu_skeleton()
+    J = sk.n_joints
+    rot = random_quats(rng, (3, 7, J)).astype(dtype)
+    root = rng.normal(scale=50, size=(3, 7, 3)).astype(dtype)
+    shared = np.broadcast_to(sk.offsets, (3, 7, J, 3))
+    pos, grot = fk(rot, root, sk.offsets, sk.parents, return_rotations=True)
+    ref_pos, ref_rot = fk_per_joint(rot, root, shared, sk.parents)
+    assert pos.dtype == ref_pos.dtype and np.array_equal(pos, ref_pos) and np.array_equal(grot, ref_rot)
+    per_clip = sk.offsets * rng.uniform(0.9, 1.1, size=(3, 1, 1, 1))  # one skeleton per clip
+    translations = np.full((3, 7, J, 3), np.nan)
+    translations[:, :, 1] = rng.normal(size=(3, 7, 3))  # a joint with position channels
+    got = fk(rot, root, per_clip, sk.parents, translations=translations)
+    local = np.where(np.isnan(translations), np.broadcast_to(per_clip, (3, 7, J, 3)), translations)
+    assert np.array_equal(got, fk_per_joint(rot, root, local, sk.parents)[0])
+
+
 def test_fk_torch_is_differentiable():
     sk = cmu_skeleton()
     rot = torch.tensor(Q.qidentity((2, sk.n_joints)), requires_grad=True)
