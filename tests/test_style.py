@@ -16,7 +16,7 @@ from motionvar.core import quaternions as Q
 from motionvar.du2022.style import (
     ConvAutoencoder, FeatureScaler, FeatureSpace, MotionVAE, TrainConfig, content_loss, diagonal_minima,
     diversity, features_to_positions, gram, gram_distance, gram_distance_maps, heading_angles, kl_loss, load_vae, motion_features,
-    motions_features, positions_to_features, sample_features, save_vae, sliding_windows, step_lengths,
+    motions_features, positions_to_features, sample_features, sample_maps, save_vae, sliding_windows, step_lengths,
     style_distance, style_distance_matrix, style_joints, style_loss, train_autoencoder, train_vae,
 )
 
@@ -137,6 +137,12 @@ def test_scaler_pools_positions_and_inverts(layout):
     sc = FeatureScaler.fit(f, 21)
     assert len(np.unique(sc.std[:63])) == 1 and sc.std[63] == sc.std[64]
     assert np.allclose(sc.inverse(sc.transform(f)), f, atol=1e-4)
+    # float64 scaled * std + mean, into a given array too (strided input as a decoder's transpose)
+    scaled = sc.transform(f).transpose(1, 0, 2).copy().transpose(1, 0, 2)
+    expected = np.asarray(scaled, dtype=float) * sc.std + sc.mean
+    out = np.empty(f.shape)
+    assert sc.inverse(scaled).tobytes() == expected.tobytes()
+    assert sc.inverse(scaled, out=out) is out and out.tobytes() == expected.tobytes()
 
 
 # ---------------------------------------------------------------- networks (Eq. 5.1-5.2, Fig. 5.3)
@@ -275,11 +281,55 @@ def test_autoencoder_keeps_the_best_epoch(tiny, layout):
         kept = hist.loc[hist["kept"]]
         assert len(kept) == 1 and loss == pytest.approx(float(kept["end_loss"].iloc[0]), rel=1e-4)
         if keep == "best":
-            assert kept["end_loss"].iloc[0] == hist["end_loss"].min()
-        else:
+            assert kept["end_loss"].iloc[0] == hist["end_loss"].min() and hist["end_loss"].notna().all()
+        else:  # the loss over all windows is computed for the last epoch only
             assert kept["epoch"].iloc[0] == cfg.epochs
+            assert hist["end_loss"].iloc[:-1].isna().all() and np.isfinite(hist["end_loss"].iloc[-1])
     with pytest.raises(ValueError, match="keep must be one of"):
         train_autoencoder(windows, cfg, n_kernels=8, keep="first")
+
+
+def test_sliced_adam_is_torch_adam_bit_for_bit():
+    """SlicedAdam (slices of 7 elements here: across rows and with ragged tails) gives the
+    weights of torch.optim.Adam exactly, over steps where a parameter has no gradient."""
+    from motionvar.du2022.style.training import SlicedAdam
+
+    def run(make):
+        torch.manual_seed(0)
+        vae = MotionVAE(40, hidden=(12, 6), latent=3)
+        opt = make(vae.parameters())
+        gen = torch.Generator().manual_seed(1)
+        for step in range(6):
+            mu, logvar = vae.encode(torch.randn(5, 40, generator=gen))
+            recon = vae.decode(vae.reparameterize(mu, logvar, torch.randn(2, 5, 3, generator=gen)))
+            loss = recon.pow(2).mean() + kl_loss(mu, logvar) * (step != 2)  # step 2: logvar gets no gradient
+            opt.zero_grad()
+            loss.backward()
+            if step == 2:
+                vae.logvar.weight.grad = vae.logvar.bias.grad = None
+            opt.step()
+        return [p.detach().clone() for p in vae.parameters()]
+
+    reference = run(lambda params: torch.optim.Adam(params, lr=1e-2))
+    for size in (7, 1 << 18):
+        sliced = run(lambda params: SlicedAdam(params, 1e-2, slice_size=size))
+        assert all(torch.equal(a, b) for a, b in zip(reference, sliced))
+    assert isinstance(TrainConfig(1, 1e-3, 4).make_optimizer(MotionVAE(8, hidden=(4,), latent=2).parameters()), SlicedAdam)
+    with pytest.raises(ValueError, match="slice_size"):
+        SlicedAdam([torch.nn.Parameter(torch.zeros(3))], 1e-3, slice_size=0)
+
+
+def test_average_pool_is_avg_pool1d_bit_for_bit():
+    from torch.nn import functional as F
+
+    from motionvar.du2022.style.networks import average_pool
+
+    for pool in (2, 3):
+        h = torch.randn(4, 16, 30, requires_grad=True)
+        a, b = average_pool(h, pool), F.avg_pool1d(h, pool)
+        g = torch.randn_like(a)
+        assert torch.equal(a, b)
+        assert torch.equal(*(torch.autograd.grad(out, h, g)[0] for out in (a, b)))
 
 
 def test_vae_and_cvae_training(tiny):
@@ -361,6 +411,9 @@ def test_save_load_sample_and_distance_matrix(tiny, tmp_path, layout):
     a = sample_features(vae, shape, space, 5, seed=3)
     b = sample_features(vae2, shape, space2, 5, seed=3)
     assert a.shape == (5, 60, 66) and np.array_equal(a, b)
+    maps5 = sample_maps(vae, shape, 5, seed=3)  # decoded in chunks into one array: as concatenating the chunks
+    chunks = np.concatenate([space.decode(maps5[i:i + 2]) for i in range(0, 5, 2)])
+    assert sample_features(vae, shape, space, 5, seed=3, chunk=2).tobytes() == chunks.tobytes()
     assert space2.reconstruction_rmse(prims) == pytest.approx(space.reconstruction_rmse(prims))
     table = style_distance_matrix({"neutral": (vae, shape), "other": (vae2, shape)},
                                   {"neutral": prims.mean(axis=0), "other": prims[0]}, space, 10, seed=0)
@@ -426,6 +479,23 @@ def test_primitive_features_and_style_example(prim_dataset, layout):
     # the straightest forward clip of the style (not the straighter left-turning one)
     assert select_style_example(prim_dataset.metadata, "walk_leftStance", "proud") == "c4"
     assert training_windows(prim_dataset, layout, 60, 30).shape == (4, 60, 66)  # 4 clips of 60..75 frames
+
+
+def test_training_windows_subset_is_the_windows_bit_for_bit(prim_dataset, layout):
+    """A subset of the windows is computed from its own frames (and the next one) only:
+    the same bytes as the subset of all windows, windows inside clips and at their ends."""
+    from motionvar.du2022.style.data import training_windows, window_counts
+
+    for size, stride in ((60, 5), (55, 7), (50, 50)):
+        every = training_windows(prim_dataset, layout, size, stride)
+        assert window_counts(prim_dataset, size, stride).sum() == len(every)
+        for subset in (np.arange(len(every)), np.array([0, 2, 3, len(every) - 1]), np.array([len(every) - 2])):
+            part = training_windows(prim_dataset, layout, size, stride, subset)
+            assert part.dtype == np.float32 and part.tobytes() == every[subset].tobytes()
+    with pytest.raises(ValueError, match="increasing indices below the"):
+        training_windows(prim_dataset, layout, 60, 30, np.array([2, 1]))
+    with pytest.raises(ValueError, match="increasing indices below the 4 windows"):
+        training_windows(prim_dataset, layout, 60, 30, np.array([4]))
 
 
 def test_primitive_selection_errors_name_what_is_missing(prim_dataset):

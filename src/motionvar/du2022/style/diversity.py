@@ -24,7 +24,9 @@ def _sd(x: np.ndarray) -> float:
     x = x.reshape(len(x), -1)
     if len(x) < 2:
         raise ValueError("diversity: need at least 2 values for a standard deviation")
-    return float(np.sqrt(((x - x.mean(axis=0)) ** 2).sum() / (len(x) - 1)))
+    dev = x - x.mean(axis=0)
+    np.square(dev, out=dev)  # in place: one temporary the size of x, not two
+    return float(np.sqrt(dev.sum() / (len(x) - 1)))
 
 
 def pose_sd(features: np.ndarray, n_joints: int) -> float:

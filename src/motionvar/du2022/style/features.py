@@ -245,5 +245,8 @@ class FeatureScaler:
     def transform(self, features: np.ndarray) -> np.ndarray:
         return ((features - self.mean) / self.std).astype(np.float32)
 
-    def inverse(self, scaled: np.ndarray) -> np.ndarray:
-        return np.asarray(scaled, dtype=float) * self.std + self.mean
+    def inverse(self, scaled: np.ndarray, out: np.ndarray | None = None) -> np.ndarray:
+        """Features in the data's units (float64) of scaled ones: scaled * std + mean,
+        written into ``out`` (float64, scaled's shape) when given, without temporaries."""
+        out = np.multiply(scaled, self.std, out=out, dtype=np.float64)
+        return np.add(out, self.mean, out=out)

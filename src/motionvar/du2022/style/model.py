@@ -40,10 +40,11 @@ class FeatureSpace:
         return self.ae.encode(x.transpose(-1, -2))
 
     @torch.no_grad()
-    def decode(self, maps: torch.Tensor) -> np.ndarray:
-        """Feature maps (N, 256, T') -> features (N, T, C) in the data's units."""
+    def decode(self, maps: torch.Tensor, out: np.ndarray | None = None) -> np.ndarray:
+        """Feature maps (N, 256, T') -> features (N, T, C) in the data's units (float64;
+        written into ``out`` when given)."""
         x = self.ae.decode(torch.as_tensor(maps, dtype=torch.float32)).transpose(-1, -2)
-        return self.scaler.inverse(x.numpy())
+        return self.scaler.inverse(x.numpy(), out=out)
 
     @torch.no_grad()
     def reencode(self, maps: torch.Tensor) -> torch.Tensor:
@@ -107,9 +108,13 @@ def sample_features(
     vae: MotionVAE, map_shape: tuple[int, int], space: FeatureSpace, n: int, seed: int, chunk: int = 1000,
 ) -> np.ndarray:
     """n random clips of a model as features (n, T, C) (VAE decoder, then motion decoder),
-    decoded ``chunk`` clips at a time (the draws do not depend on ``chunk``)."""
+    decoded ``chunk`` clips at a time into one array (the draws do not depend on ``chunk``)."""
     maps = sample_maps(vae, map_shape, n, seed)
-    return np.concatenate([space.decode(maps[i:i + chunk]) for i in range(0, n, chunk)])
+    ae = space.ae
+    out = np.empty((n, maps.shape[-1] * ae.pool, ae.hparams["n_channels"]))
+    for i in range(0, n, chunk):
+        space.decode(maps[i:i + chunk], out=out[i:i + chunk])
+    return out
 
 
 @torch.no_grad()

@@ -17,6 +17,16 @@ from torch.nn import functional as F
 DECODER_ORDERS = ("conv_depool", "depool_conv")
 
 
+def average_pool(h: torch.Tensor, pool: int) -> torch.Tensor:
+    """Psi of Eq. 5.1: the mean of each ``pool`` consecutive frames of h (..., T), T a
+    multiple of ``pool``. For the thesis' pool of 2 the mean of the frame pairs,
+    (a + b) / 2 in the same rounding as ``F.avg_pool1d`` (forward and gradient), in about
+    half its CPU time; other pools go through ``F.avg_pool1d``."""
+    if pool == 2:
+        return h.unflatten(-1, (h.shape[-1] // 2, 2)).mean(-1)
+    return F.avg_pool1d(h, pool)
+
+
 class ConvAutoencoder(nn.Module):
     """Single-layer convolutional autoencoder (Sec. 5.3.1).
 
@@ -52,7 +62,7 @@ class ConvAutoencoder(nn.Module):
         """Eq. 5.1: (B, C, T) -> (B, 256, T / pool); T must be a multiple of ``pool``."""
         if x.shape[-1] % self.pool:
             raise ValueError(f"ConvAutoencoder: clip length {x.shape[-1]} is not a multiple of the pooling {self.pool}")
-        return F.avg_pool1d(F.relu(self.conv(x)), self.pool)
+        return average_pool(F.relu(self.conv(x)), self.pool)
 
     def decode(self, y: torch.Tensor) -> torch.Tensor:
         """Eq. 5.2: (B, 256, T / pool) -> (B, C, T)."""
