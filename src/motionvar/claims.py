@@ -19,9 +19,10 @@ import numbers
 from collections.abc import Iterable, Sequence
 from dataclasses import asdict, dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-import pandas as pd
+if TYPE_CHECKING:  # pandas is imported where a table is built: every rule imports this module, not all need it
+    import pandas as pd
 
 CHECKED_VERDICTS = ("reproduced", "partial", "not reproduced")
 UNDECIDED_VERDICTS = ("not testable", "not applicable")
@@ -114,6 +115,8 @@ def not_applicable_result(evaluation: str, reason: str, checks: str = "", source
     """The outputs of an evaluation that a dataset cannot support: one claim
     ``<paper>.<evaluation>.not_applicable`` with verdict ``not applicable`` and ``reason``
     in its note, a one-row table saying so, and the reason for the figure."""
+    import pandas as pd
+
     paper, _, rest = evaluation.partition("_")
     source = source or evaluation_source(evaluation)
     statement = checks or f"The checks of {source}."
@@ -180,6 +183,8 @@ def read_claims(path: str | Path) -> list[Claim]:
 
 def merge_claims(paths: Iterable[str | Path]) -> pd.DataFrame:
     """All claims of the given files as one table (empty with the right columns if none)."""
+    import pandas as pd
+
     rows = [asdict(c) for p in sorted(map(str, paths)) for c in read_claims(p)]
     table = pd.DataFrame(rows, columns=list(CLAIM_COLUMNS))
     dup = table["claim_id"][table["claim_id"].duplicated()]

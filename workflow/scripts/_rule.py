@@ -40,9 +40,7 @@ BAD_INPUT = (ValueError, OSError, KeyError)
 
 
 def run(snakemake, main) -> None:
-    import matplotlib
-
-    matplotlib.use("Agg")  # figures are files; the library never chooses a backend
+    _file_backend()
     with open(snakemake.log[0], "w") as log:
         logging.basicConfig(
             level=logging.INFO, format="%(asctime)s %(levelname)s %(message)s",
@@ -61,6 +59,15 @@ def run(snakemake, main) -> None:
         except BAD_INPUT as exc:
             _fail(snakemake, log, str(exc))
         logging.info("done")
+
+
+def _file_backend() -> None:
+    """Figures are files; the library never chooses a backend. Agg through the environment
+    when matplotlib is not imported yet, so that a job without figures does not import it."""
+    if "matplotlib" in sys.modules:
+        sys.modules["matplotlib"].use("Agg")
+    else:
+        os.environ["MPLBACKEND"] = "Agg"
 
 
 PROFILE_ENV = "MOTIONVAR_PROFILE"

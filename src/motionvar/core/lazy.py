@@ -11,8 +11,15 @@ from typing import Any
 def lazy_exports(package: str, exports: Mapping[str, Sequence[str]]) -> tuple[Callable[[str], Any], Callable[[], list[str]]]:
     """``__getattr__`` and ``__dir__`` for ``package`` (its ``__name__``): ``exports`` maps a
     relative module (".sfpca") to the names it provides; a name is imported from its module
-    the first time it is asked for and then kept in the package's namespace."""
+    the first time it is asked for and then kept in the package's namespace.
+
+    A name may not be that of its own module (``".diversity": ["diversity"]``): once the
+    submodule is imported, the package's attribute is the module and ``__getattr__`` is no
+    longer asked; import such a name eagerly instead."""
     where = {name: module for module, names in exports.items() for name in names}
+    shadowed = sorted(name for name, module in where.items() if name == module.rsplit(".", 1)[-1])
+    if shadowed:
+        raise ValueError(f"{package}: lazy names {shadowed} are also their modules' names; import them eagerly")
 
     def __getattr__(name: str) -> Any:
         if name not in where:

@@ -15,15 +15,22 @@
 - :mod:`.evaluations`: the paper's evaluations, one module each; :mod:`.figures` draws them
 """
 
-from .balance import Event, synthesize_balance, time_scale
-from .categories import CategoryModel, find_categories, posture_speed, static_segments, support_ratio
-from .database import IdleDatabase, IdleSettings, Recording, analyse_recording, build_database
-from .engine import generate_idle, generate_idle_pcs
-from .fitting import best_fitting_animation, fit_anim, fit_anim_part, posture_distance
-from .category_graph import CategoryGraph
-from .integration import add_variations, blend_motions, idle_between, joint_mask
-from .pca import PosturePCA, posture_vectors
-from .variations import VariationModel, extrema_pairs, find_extrema, fit_variation_model
+from ..core.lazy import lazy_exports
+
+# The names below are imported on first use (PEP 562), so that a rule that needs one module
+# (the applicability table's .requirements, an evaluation) does not load all the others.
+_EXPORTS = {
+    ".balance": ["Event", "synthesize_balance", "time_scale"],
+    ".categories": ["CategoryModel", "find_categories", "posture_speed", "static_segments", "support_ratio"],
+    ".database": ["IdleDatabase", "IdleSettings", "Recording", "analyse_recording", "build_database"],
+    ".engine": ["generate_idle", "generate_idle_pcs"],
+    ".fitting": ["best_fitting_animation", "fit_anim", "fit_anim_part", "posture_distance"],
+    ".category_graph": ["CategoryGraph"],
+    ".integration": ["add_variations", "blend_motions", "idle_between", "joint_mask"],
+    ".pca": ["PosturePCA", "posture_vectors"],
+    ".variations": ["VariationModel", "extrema_pairs", "find_extrema", "fit_variation_model"],
+}
+__getattr__, __dir__ = lazy_exports(__name__, _EXPORTS)
 
 __all__ = [
     "CategoryGraph", "CategoryModel", "Event", "IdleDatabase", "IdleSettings", "PosturePCA", "Recording",

@@ -25,9 +25,7 @@ from dataclasses import dataclass
 
 import numpy as np
 from scipy.ndimage import gaussian_filter1d
-from sklearn.cluster import KMeans
 from threadpoolctl import threadpool_limits
-from sklearn.metrics import adjusted_rand_score
 
 from ..core.joint_map import JointMap
 from ..core.motion import Motion
@@ -106,6 +104,8 @@ def find_categories(
     name are merged, so a category split by k-means is joined again. Returns the model
     and each segment's category index.
     """
+    from sklearn.cluster import KMeans  # only fitting needs scikit-learn (a slow import)
+
     postures = np.asarray(postures, dtype=float)
     support = np.asarray(support, dtype=float)
     if len(postures) == 0:
@@ -178,6 +178,8 @@ def segment_agreement(
     """Agreement of named static segments with per-frame ground-truth names:
     (share of segments whose name is the majority true name over the segment, adjusted
     Rand index between predicted names and those majority names)."""
+    from sklearn.metrics import adjusted_rand_score  # scikit-learn is a slow import
+
     majority = []
     for start, stop in segments:
         vals, counts = np.unique(truth[start:stop].astype(str), return_counts=True)

@@ -13,7 +13,6 @@ from collections.abc import Sequence
 from dataclasses import dataclass, field
 
 import numpy as np
-from sklearn.mixture import GaussianMixture
 
 from ..core.joint_map import JointMap
 from ..core.motion import Motion
@@ -76,6 +75,8 @@ def analyse_recording(motion: Motion, pca: PosturePCA, joint_map: JointMap, name
 def rest_speed_threshold(speeds: np.ndarray, seed: int = 0) -> float:
     """Boundary between the rest and the shift components of a two-component Gaussian
     mixture of log posture speeds (the speed where both are equally likely)."""
+    from sklearn.mixture import GaussianMixture  # only fitting needs scikit-learn (a slow import)
+
     x = np.log(np.maximum(np.asarray(speeds, dtype=float), 1e-12))[:, None]
     gmm = GaussianMixture(2, random_state=seed).fit(x)
     lo, hi = np.sort(gmm.means_.ravel())

@@ -17,7 +17,6 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
-from sklearn.decomposition import PCA
 
 from ..core.motion import Motion
 from ..core.quaternions import qfix, qnormalize, quat_to_rotvec, rotvec_to_quat
@@ -75,6 +74,8 @@ class PosturePCA:
         translation_scale: float = 0.01,
     ) -> "PosturePCA":
         """Fit on all frames of ``motions`` (one rig); ``joints=None`` takes every joint."""
+        from sklearn.decomposition import PCA  # only fitting needs scikit-learn (a slow import)
+
         if len(motions) == 0:
             raise ValueError("PosturePCA.fit: no motions")
         n_joints = motions[0].skeleton.n_joints

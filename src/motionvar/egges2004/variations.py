@@ -21,7 +21,6 @@ from dataclasses import dataclass
 
 import numpy as np
 from scipy.interpolate import PchipInterpolator
-from sklearn.cluster import KMeans
 from threadpoolctl import threadpool_limits
 
 
@@ -141,6 +140,8 @@ def fit_variation_model(
     ``eps_sd``: extremum error as a multiple of the PC's standard deviation after mean
     removal; ``n_clusters``: k of k-means per PC (fewer when a PC has fewer pairs).
     """
+    from sklearn.cluster import KMeans  # only fitting needs scikit-learn (a slow import)
+
     pcs = np.asarray(pcs, dtype=np.int64)
     if n_clusters < 1:
         raise ValueError(f"n_clusters must be >= 1, got {n_clusters}")

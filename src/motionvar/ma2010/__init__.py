@@ -17,16 +17,23 @@
 - :mod:`.evaluations` — one module per figure or section (Fig. 3, 6, 7b, 8, Sec. 7.4, 8).
 - :mod:`.figures` — the evaluations' figures.
 
-Only the model's modules are imported here (not baselines, comparison, evaluations or
-figures), so that the baselines can import the model's modules without a cycle.
+Only the model's names are exported here (not baselines, comparison, evaluations or
+figures), so that the baselines can import the model's modules without a cycle; they are
+imported on first use (PEP 562), so that a rule that needs one module (the applicability
+table's .requirements) does not load the model's scikit-learn and scipy.signal.
 """
 
-from .examples import build_clipset, cut, extract_cycles, normalized_strides, root_solver, support_strides
-from .kriging import UniversalKriging, Variogram, fit_variogram
-from .network import PropagationNetwork, choose_structure
-from .representation import ClipCodec, ClipSet
-from .svi import ClipPrediction, StyleVariationModel, resolve_structure, structure_evidence
-from .synthesis import RootSolver, sequence_motion
+from ..core.lazy import lazy_exports
+
+_EXPORTS = {
+    ".examples": ["build_clipset", "cut", "extract_cycles", "normalized_strides", "root_solver", "support_strides"],
+    ".kriging": ["UniversalKriging", "Variogram", "fit_variogram"],
+    ".network": ["PropagationNetwork", "choose_structure"],
+    ".representation": ["ClipCodec", "ClipSet"],
+    ".svi": ["ClipPrediction", "StyleVariationModel", "resolve_structure", "structure_evidence"],
+    ".synthesis": ["RootSolver", "sequence_motion"],
+}
+__getattr__, __dir__ = lazy_exports(__name__, _EXPORTS)
 
 __all__ = [
     "ClipCodec", "ClipPrediction", "ClipSet", "PropagationNetwork", "RootSolver", "StyleVariationModel",

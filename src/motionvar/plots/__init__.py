@@ -5,13 +5,22 @@
   :func:`key_frame_grid` (a figure, one clip per row, shared scale).
 - :mod:`.animation`: :func:`animate_motions` (GIF of clips side by side),
   :func:`render_frames` and :func:`write_gif` for positions that are not Motions
-  (e.g. a model's output), :func:`gif_page` (an HTML page playing a GIF, for the report).
+  (e.g. a model's output).
+- :mod:`.page`: :func:`gif_page` (an HTML page playing a GIF, for the report).
 - :mod:`.overview`: :func:`dataset_overview`, key frames per behaviour and per walk style.
 """
 
-from .animation import animate_motions, gif_page, render_frames, write_gif
-from .overview import dataset_overview, overview_clips
-from .stick import KeyFrameRow, draw_pose, evenly_spaced_frames, key_frame_grid, plot_key_frames, project, view_axis
+from ..core.lazy import lazy_exports
+
+# imported on first use (PEP 562): a GIF page's rule does not load matplotlib
+_EXPORTS = {
+    ".animation": ["animate_motions", "render_frames", "write_gif"],
+    ".page": ["gif_page"],
+    ".overview": ["dataset_overview", "overview_clips"],
+    ".stick": ["KeyFrameRow", "draw_pose", "evenly_spaced_frames", "key_frame_grid", "plot_key_frames", "project",
+               "view_axis"],
+}
+__getattr__, __dir__ = lazy_exports(__name__, _EXPORTS)
 
 __all__ = [
     "KeyFrameRow", "animate_motions", "dataset_overview", "gif_page", "draw_pose", "evenly_spaced_frames",

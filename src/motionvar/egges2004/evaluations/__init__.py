@@ -13,13 +13,20 @@ analysed recordings where it needs them) and returns a
 - :mod:`.common`: the claims' paper key, per-subject random streams, the Perlin baseline
 """
 
-from .fig3_categories import category_check
-from .fig7_8_extrema import pc_extrema
-from .fig10_animation import idle_animation
-from .sec5_4_fitting import FittingParams, fitting
-from .sec6_repetition import RepetitionParams, repetition
-from .sec8_identification import IdentificationParams, identification
-from .sec8_speed import SpeedParams, speed
+from ...core.lazy import lazy_exports
+
+# imported on first use (PEP 562): an evaluation's rule loads only its own module (the
+# identification's scikit-learn and scipy.stats only for that rule)
+_EXPORTS = {
+    ".fig3_categories": ["category_check"],
+    ".fig7_8_extrema": ["pc_extrema"],
+    ".fig10_animation": ["idle_animation"],
+    ".sec5_4_fitting": ["FittingParams", "fitting"],
+    ".sec6_repetition": ["RepetitionParams", "repetition"],
+    ".sec8_identification": ["IdentificationParams", "identification"],
+    ".sec8_speed": ["SpeedParams", "speed"],
+}
+__getattr__, __dir__ = lazy_exports(__name__, _EXPORTS)
 
 __all__ = [
     "FittingParams", "IdentificationParams", "RepetitionParams", "SpeedParams", "category_check", "fitting",
