@@ -238,8 +238,9 @@ class SFPCA(FPCA):
         stop_window, stop_rtol: besides L-BFGS-B's own tests, stop once the objective fell by
             at most ``stop_rtol`` (relative) over the last ``stop_window`` iterations (0: off,
             the thesis' setting: it states no stopping rule). L-BFGS-B's ``ftol`` compares one
-            iteration with the next, and the loss can creep for a few iterations before it
-            drops again; a window tests that it has converged, not paused.
+            iteration with the next; a window is less easily fooled by a slow creep, but a
+            long plateau before a drop still passes for convergence (measured at full size:
+            d = 5 fell 8 % after 10 flat iterations), hence off in the shipped config.
 
     Fitted attributes (besides FPCA's): ``init_`` ("raw" or "normalized"), ``loss_raw_``,
     ``loss_normalized_``, ``loss_`` (objective at the optimum, cm^2), ``n_iter_``,
@@ -263,7 +264,7 @@ class SFPCA(FPCA):
         n_eval_frames: int | None = None,
         init: str = "best",
         stop_window: int = 0,
-        stop_rtol: float = 1e-4,
+        stop_rtol: float = 1e-3,
     ) -> None:
         super().__init__(n_components)
         self.weight_groups = weight_groups
