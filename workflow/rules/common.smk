@@ -27,6 +27,27 @@ STABILITY = "results/stability"
 STABILITY_CSV = f"{STABILITY}/claims_stability.csv"
 STABILITY_OUTPUTS = [STABILITY_CSV, f"{STABILITY}/claims_stability.png", f"{STABILITY}/claims_stability.html"]
 
+# Scheduling (`priority:` of the rules on the run's long chains; every other rule has 0). On a
+# few cores the wall time is set by when the long chains start: left to input sizes, the
+# scheduler started the style chain 1,675 s into a 2,106 s full run, and the CI run ended
+# with 56 s of one job at a time. Among the jobs that are ready, Snakemake starts the highest
+# priority first. Order: the length of the chain of jobs that follows, in the CPU seconds of
+# a full run's benchmark files (Du ch. 3: canonical primitives -> basis -> reference SFPCA ->
+# SFPCA curve, ~400 s; Du ch. 5: autoencoder -> VAE -> CVAE -> Table 5.2, ~240 s), except the
+# autoencoder, which comes first: it takes both cores, and a two-core job is only started
+# while no one-core job holds one (right after the applicability checkpoint, when nothing runs).
+PRIORITY = {
+    "style_autoencoder": 100,
+    "du2022_fda_canonical": 90,
+    "du2022_fda_basis": 80,
+    "du2022_fda_sfpca": 70,
+    "du2022_fda_curves": 60,
+    "style_vae": 50,
+    "du2022_table3_1": 40,
+    "style_cvae": 30,
+    "du2022_graph_primitive": 20,
+}
+
 # name -> {"paper": ..., "extra": [path patterns with {dataset}]}
 EVALUATIONS = {}
 

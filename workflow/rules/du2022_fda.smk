@@ -20,6 +20,7 @@ rule du2022_fda_canonical:
         ev_log("du2022_fda_canonical"),
     benchmark:
         ev_benchmark("du2022_fda_canonical")
+    priority: PRIORITY["du2022_fda_canonical"]
     threads: 1
     resources:
         mem_mb=3000,
@@ -43,6 +44,7 @@ checkpoint du2022_fda_basis:
         ev_log("du2022_fda_basis"),
     benchmark:
         ev_benchmark("du2022_fda_basis")
+    priority: PRIORITY["du2022_fda_basis"]
     threads: 1
     resources:
         mem_mb=3000,
@@ -68,6 +70,7 @@ rule du2022_fda_sfpca:
         ev_log("du2022_fda_sfpca", "{primitive}"),
     benchmark:
         ev_benchmark("du2022_fda_sfpca", "{primitive}")
+    priority: PRIORITY["du2022_fda_sfpca"]
     threads: 1
     resources:
         mem_mb=4000,
@@ -94,6 +97,7 @@ rule du2022_fda_curves:
         ev_log("du2022_fda_curves", "{primitive}_{part}"),
     benchmark:
         ev_benchmark("du2022_fda_curves", "{primitive}_{part}")
+    priority: PRIORITY["du2022_fda_curves"]
     threads: 1
     resources:
         mem_mb=4000,
@@ -168,6 +172,7 @@ for _fda_ev, (_figure, _input, _params, _mem_mb) in FDA_EVALUATIONS.items():
             ev_log(_fda_ev),
         benchmark:
             ev_benchmark(_fda_ev)
+        priority: PRIORITY.get(_fda_ev, 0)
         threads: 1
         resources:
             mem_mb=_mem_mb,

@@ -47,6 +47,7 @@ rule du2022_graph_primitive:
         ev_log("du2022_graph_primitive", "{primitive}"),
     benchmark:
         ev_benchmark("du2022_graph_primitive", "{primitive}")
+    priority: PRIORITY["du2022_graph_primitive"]
     threads: 1
     resources:
         mem_mb=4000,

@@ -23,6 +23,7 @@ rule style_autoencoder:
         ev_log("style_autoencoder"),
     benchmark:
         ev_benchmark("style_autoencoder")
+    priority: PRIORITY["style_autoencoder"]
     threads: 2
     resources:
         mem_mb=4000,
@@ -52,6 +53,7 @@ rule style_vae:
         ev_log("style_vae", "{primitive}"),
     benchmark:
         ev_benchmark("style_vae", "{primitive}")
+    priority: PRIORITY["style_vae"]
     # one thread: the same weights bit for bit as with two (measured), and two such jobs side by
     # side take ~20 % less CPU than one on two threads (OpenMP's waiting threads)
     threads: 1
@@ -88,6 +90,7 @@ rule style_cvae:
         ev_log("style_cvae", "{primitive}_{style}"),
     benchmark:
         ev_benchmark("style_cvae", "{primitive}_{style}")
+    priority: PRIORITY["style_cvae"]
     # one thread: the same weights bit for bit as with two (measured), and two such jobs side by
     # side take ~20 % less CPU than one on two threads (OpenMP's waiting threads)
     threads: 1

@@ -19,7 +19,6 @@ from __future__ import annotations
 from pathlib import Path
 
 import numpy as np
-from sklearn.decomposition import PCA
 
 from ...core.motion import Motion
 from ...core.skeleton import Skeleton
@@ -105,6 +104,8 @@ class FPCA:
 
     def _fit_weighted(self, X: FunctionalMotions, weights: np.ndarray) -> None:
         """PCA of the Gram-weighted, function-scaled coefficients (Eq. 3.3 on diag(w) Y)."""
+        from sklearn.decomposition import PCA  # only fitting needs scikit-learn (a slow import)
+
         self.basis_ = X.basis
         self.layout_ = X.layout
         self.n_frames_ = int(X.n_frames)

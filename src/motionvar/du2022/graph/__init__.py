@@ -25,16 +25,18 @@ synthesis by Levenberg-Marquardt and graph-walk generation.
   returning an EvaluationResult; :mod:`.figures` draws them.
 """
 
-from .constraints import Constraint, ConstraintStack, Objective, random_constraints
-from .morphable_graph import (
-    MorphableGraph, Path2D, StepResult, WalkSettings, concatenate_steps, follow_path, place_motion, synthesize_step,
-)
-from .primitive import MotionPrimitive, PrimitiveOptions, primitive_clips, select_gmm
-from .synthesis import ChainResult, MapResult, StepChain, StepGoal, optimize_chain, optimize_map
-from .trees import (
-    TREE_KINDS, KeyFramePositionIndex, MedianKDTree, SearchResult, SpacePartitioningTree, brute_force, random_search,
-    random_search_many, select_beam, tree_search,
-)
+from ...core.lazy import lazy_exports
+
+_EXPORTS = {
+    ".constraints": ["Constraint", "ConstraintStack", "Objective", "random_constraints"],
+    ".morphable_graph": ["MorphableGraph", "Path2D", "StepResult", "WalkSettings", "concatenate_steps",
+                         "follow_path", "place_motion", "synthesize_step"],
+    ".primitive": ["MotionPrimitive", "PrimitiveOptions", "primitive_clips", "select_gmm"],
+    ".synthesis": ["ChainResult", "MapResult", "StepChain", "StepGoal", "optimize_chain", "optimize_map"],
+    ".trees": ["TREE_KINDS", "KeyFramePositionIndex", "MedianKDTree", "SearchResult", "SpacePartitioningTree",
+               "brute_force", "random_search", "random_search_many", "select_beam", "tree_search"],
+}
+__getattr__, __dir__ = lazy_exports(__name__, _EXPORTS)
 
 __all__ = [
     "TREE_KINDS", "ChainResult", "Constraint", "ConstraintStack", "KeyFramePositionIndex", "MapResult",

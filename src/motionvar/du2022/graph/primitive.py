@@ -26,6 +26,11 @@ offsets): no motion data (Sec. 4.6.1, "Compactness"). Save/load is npz + json (n
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from sklearn.mixture import GaussianMixture
+
 import json
 import math
 from collections.abc import Sequence
@@ -34,7 +39,6 @@ from pathlib import Path
 
 import numpy as np
 import pandas as pd
-from sklearn.mixture import GaussianMixture
 from threadpoolctl import threadpool_limits
 
 from ...core.motion import Motion
@@ -96,6 +100,8 @@ def select_gmm(X: np.ndarray, k_range: tuple[int, int], criterion: str = "bic", 
                seed: int = 0) -> tuple[GaussianMixture, dict[int, float]]:
     """Full-covariance GMMs for K = min..max (capped at the number of points) fitted by
     EM; returns the one with the lowest BIC (or AIC) and every K's score (Eq. 4.1)."""
+    from sklearn.mixture import GaussianMixture
+
     lo, hi = int(k_range[0]), min(int(k_range[1]), len(X))
     if lo > hi:
         raise ValueError(f"GMM: {len(X)} latent points cannot fit {k_range[0]} components")
@@ -155,6 +161,8 @@ def primitive_clips(dataset: MotionDataset, primitive: str,
 
 def _gmm_from_arrays(weights: np.ndarray, means: np.ndarray, covariances: np.ndarray) -> GaussianMixture:
     """A fitted GaussianMixture from its parameters (for :meth:`MotionPrimitive.load`)."""
+    from sklearn.mixture import GaussianMixture
+
     gmm = GaussianMixture(len(weights), covariance_type="full")
     gmm.weights_, gmm.means_, gmm.covariances_ = weights, means, covariances
     prec = np.linalg.inv(covariances)

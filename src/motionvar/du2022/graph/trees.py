@@ -51,9 +51,6 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
 import numpy as np
-from sklearn.cluster import KMeans
-from sklearn.exceptions import ConvergenceWarning
-from sklearn.mixture import GaussianMixture
 from threadpoolctl import threadpool_limits
 
 from .constraints import Constraint, ConstraintStack, Objective, kind_error, reference_axes
@@ -77,10 +74,15 @@ class SearchResult:
 
 
 def _split_kmeans(X: np.ndarray, k: int, seed: int) -> np.ndarray:
+    from sklearn.cluster import KMeans
+
     return KMeans(n_clusters=k, n_init=1, random_state=seed).fit_predict(X)
 
 
 def _split_gmm(X: np.ndarray, k: int, seed: int) -> np.ndarray:
+    from sklearn.exceptions import ConvergenceWarning
+    from sklearn.mixture import GaussianMixture
+
     reg = 1e-3 * float(np.mean(np.var(X, axis=0))) + 1e-9
     gmm = GaussianMixture(k, covariance_type="full", reg_covar=reg, random_state=seed, max_iter=50)
     with warnings.catch_warnings():  # small nodes: EM may stop before its tolerance; the split is still used

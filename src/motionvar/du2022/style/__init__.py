@@ -28,15 +28,21 @@ Tables 5.1-5.3), :mod:`.evaluations` (Table 5.1, Tables 5.2-5.3, Fig. 5.4-5.5) a
 """
 
 from .diversity import diversity, pose_sd, step_lengths, step_sd, velocity_sd
-from .features import (
-    FeatureLayout, FeatureScaler, features_to_positions, heading_angles, motion_features, motions_features,
-    positions_to_features, sliding_windows, split_features, style_joints,
-)
-from .losses import content_loss, gram, gram_distance, gram_distance_maps, kl_loss, style_distance, style_loss, vae_loss
-from .evaluations import diagonal_minima, evaluate_fig5_4, evaluate_table5_1, evaluate_table5_2, style_distance_matrix
-from .model import FeatureSpace, SavedVAE, active_units, load_vae, sample_features, sample_maps, save_vae
-from .networks import ConvAutoencoder, MotionVAE
-from .training import TrainConfig, fit_feature_space, fit_primitive_vae, fit_style_cvae, train_autoencoder, train_vae
+from ...core.lazy import lazy_exports
+
+_EXPORTS = {
+    ".features": ["FeatureLayout", "FeatureScaler", "features_to_positions", "heading_angles", "motion_features",
+                  "motions_features", "positions_to_features", "sliding_windows", "split_features", "style_joints"],
+    ".losses": ["content_loss", "gram", "gram_distance", "gram_distance_maps", "kl_loss", "style_distance",
+                "style_loss", "vae_loss"],
+    ".evaluations": ["diagonal_minima", "evaluate_fig5_4", "evaluate_table5_1", "evaluate_table5_2",
+                     "style_distance_matrix"],
+    ".model": ["FeatureSpace", "SavedVAE", "active_units", "load_vae", "sample_features", "sample_maps", "save_vae"],
+    ".networks": ["ConvAutoencoder", "MotionVAE"],
+    ".training": ["TrainConfig", "fit_feature_space", "fit_primitive_vae", "fit_style_cvae", "train_autoencoder",
+                  "train_vae"],
+}
+__getattr__, __dir__ = lazy_exports(__name__, _EXPORTS)
 
 __all__ = [
     "ConvAutoencoder", "FeatureLayout", "active_units", "FeatureScaler", "FeatureSpace", "MotionVAE", "SavedVAE",

@@ -17,17 +17,14 @@ from __future__ import annotations
 import logging
 import time
 from collections.abc import Mapping, Sequence
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 import pandas as pd
 
-from ..fpca import FPCA, NormalizedFPCA
-from ..functional_gplvm import FunctionalGPLVM
-from ..functions import FunctionalMotions
-from ..primitives import sfpca_for
-from ..sfpca import SFPCA
-from .measures import feature_error, observation_error
+if TYPE_CHECKING:
+    from ..functions import FunctionalMotions
+    from ..sfpca import SFPCA
 
 log = logging.getLogger(__name__)
 
@@ -47,6 +44,9 @@ def fitted_sfpca(model: SFPCA, fd: FunctionalMotions, sfpca: Mapping[str, Any], 
     """``model`` (an SFPCA fitted elsewhere, e.g. read from a file) checked to be the fit
     that :func:`sfpca_for` with options ``sfpca`` would make on ``fd`` at its dimension:
     same clips, same options. ValueError naming ``source`` otherwise."""
+    from ..primitives import sfpca_for
+    from ..sfpca import SFPCA
+
     model.check_fitted_on(fd, source)
     wanted = sfpca_for(fd, int(model.n_components), **sfpca)
     differ = {n: (getattr(model, n), getattr(wanted, n)) for n in SFPCA._SAVED_PARAMS
@@ -68,6 +68,13 @@ def method_curves(
     ``fitted``: SFPCA fits already made with these options, by dimension (e.g. Table 3.1's
     reference fit, :func:`.table3_1.fit_reference_sfpca`), used instead of fitting again;
     their fit seconds are those of the original fit."""
+    # the fitting classes (scikit-learn, scipy.optimize) are imported here: Fig. 3.10's
+    # rule needs only curves_table
+    from ..fpca import FPCA, NormalizedFPCA
+    from ..functional_gplvm import FunctionalGPLVM
+    from ..primitives import sfpca_for
+    from .measures import feature_error, observation_error
+
     fitted = fitted or {}
 
     def errors(coefs):

@@ -10,12 +10,16 @@ numbers its figure in :mod:`motionvar.du2022.graph.figures` draws).
 - :mod:`.common`: semantic joints of a primitive's skeleton.
 """
 
-from .fig4_9 import binned_kde, coverage, evaluate_fig4_9
-from .fig4_10 import evaluate_fig4_10
-from .fig4_12 import (
-    CONSTRAINT_KINDS, METHODS, SearchSettings, evaluate_fig4_12, search_comparison, search_primitive, summarize_search,
-)
-from .sec4_6_1 import evaluate_sec4_6_1, motion_bytes
+from ....core.lazy import lazy_exports
+
+_EXPORTS = {
+    ".fig4_9": ["binned_kde", "coverage", "evaluate_fig4_9"],
+    ".fig4_10": ["evaluate_fig4_10"],
+    ".fig4_12": ["CONSTRAINT_KINDS", "METHODS", "SearchSettings", "evaluate_fig4_12", "search_comparison",
+                 "search_primitive", "summarize_search"],
+    ".sec4_6_1": ["evaluate_sec4_6_1", "motion_bytes"],
+}
+__getattr__, __dir__ = lazy_exports(__name__, _EXPORTS)
 
 __all__ = [
     "CONSTRAINT_KINDS", "METHODS", "SearchSettings", "binned_kde", "coverage", "evaluate_fig4_10", "evaluate_fig4_12",
