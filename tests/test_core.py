@@ -158,3 +158,17 @@ def test_dataset_rejects_bad_input_and_leaves_nothing(tmp_path):
     assert list(tmp_path.iterdir()) == []
     with pytest.raises(DatasetError, match="missing"):
         load_dataset(tmp_path)
+
+
+def test_fixed_threads_sets_torch_and_blas_threads_and_restores_them():
+    from threadpoolctl import threadpool_info
+
+    from motionvar.core.threads import fixed_threads
+
+    before_torch = torch.get_num_threads()
+    before_blas = [i["num_threads"] for i in threadpool_info()]
+    with fixed_threads(3):
+        assert torch.get_num_threads() == 3
+        assert all(i["num_threads"] == 3 for i in threadpool_info())
+    assert torch.get_num_threads() == before_torch
+    assert [i["num_threads"] for i in threadpool_info()] == before_blas
