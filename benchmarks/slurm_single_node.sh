@@ -11,7 +11,10 @@
 #   --local-claims CSV    claims.csv of a local run of config/ci.yaml to compare with (default:
 #                         run the CI config locally first, into DIR/local)
 #   --keep                leave the Slurm daemons running at the end (default: stop them, and
-#                         munged if this script started it)
+#                         munged if this script started it, and uninstall the Slurm plugin if
+#                         this script installed it: plugin 2.8.0 runs `scontrol show config`
+#                         whenever Snakemake loads its plugins, so with slurm-wlm installed and
+#                         no controller running, every later `snakemake` waited ~9 s to start)
 #
 # Not part of CI (it installs system packages and runs daemons as root); it needs a Debian
 # or Ubuntu machine with apt, the repository installed (`pip install -e .`) and about twice
@@ -46,9 +49,11 @@ if ! command -v slurmctld >/dev/null || ! command -v munged >/dev/null; then
     apt-get update -qq
     DEBIAN_FRONTEND=noninteractive apt-get install -y -qq slurm-wlm munge >/dev/null
 fi
+INSTALLED_PLUGIN=0
 "$PY" -c "import snakemake_executor_plugin_slurm" 2>/dev/null || {
     say "installing snakemake-executor-plugin-slurm"
     "$PY" -m pip install -q "snakemake-executor-plugin-slurm==2.8.0"
+    INSTALLED_PLUGIN=1
 }
 say "$(slurmctld -V), $(munged --version 2>&1 | head -1 | awk '{print $1}'), plugin $("$PY" -c 'import importlib.metadata as m; print(m.version("snakemake-executor-plugin-slurm"))')"
 
@@ -113,6 +118,10 @@ stop_daemons() {
     done
     if [[ $STARTED_MUNGED == 1 && -f /run/munge/munged.pid ]]; then
         kill "$(cat /run/munge/munged.pid)" 2>/dev/null || true
+    fi
+    if [[ $INSTALLED_PLUGIN == 1 ]]; then
+        say "uninstalling snakemake-executor-plugin-slurm (it would slow every later snakemake start)"
+        "$PY" -m pip uninstall -q -y snakemake-executor-plugin-slurm || true
     fi
 }
 trap stop_daemons EXIT
