@@ -11,6 +11,13 @@ read/written; ``mean_load``: mean CPU use in percent of one core; ``cpu_time``: 
 system CPU seconds of the process tree). A value Snakemake could not measure (a job that
 ended before the first sample) is ``NA``; it counts as missing, not as zero.
 
+Snakemake samples a job's CPU time every 0.5 s for its first 15 s and then every 30 s, and
+``cpu_time`` is the last sample: a job of 30 s shows about 15 CPU-s. So every rule script
+also logs its own total at its end (``workflow/scripts/_rule.log_job_cpu``: a line
+``job cpu <s> s ...`` in ``results/<dataset>/logs/<rule>[/<wildcards>].log``), read here as
+``job_cpu_s`` (missing for a run older than that line, or a job without the line); use it,
+not ``cpu_s``, to compare runs that have it.
+
 This script sums them per rule (jobs, CPU seconds, wall seconds, the largest peak
 resident memory), sorted by CPU time, with a total row; with ``--compare`` it puts a
 second run beside it (columns ``*_before`` from the other run, ``*_after`` from this one,
@@ -31,6 +38,7 @@ are several).
 from __future__ import annotations
 
 import argparse
+import re
 import sys
 from pathlib import Path
 
@@ -66,9 +74,22 @@ def read_benchmark(path: Path) -> dict[str, float]:
             for col, name in COLUMNS.items()}
 
 
+JOB_CPU_LINE = re.compile(r"job cpu ([0-9.]+) s")
+
+
+def read_job_cpu(log: Path) -> float:
+    """The CPU seconds a job logged at its end (module docstring); NaN without the line."""
+    try:
+        found = JOB_CPU_LINE.findall(log.read_text(errors="replace"))
+    except OSError:
+        return np.nan
+    return float(found[-1]) if found else np.nan
+
+
 def read_jobs(results_dir: str | Path) -> pd.DataFrame:
-    """One row per job: ``rule``, ``job`` (the wildcards part of the path, "" for none) and
-    the measures of :func:`read_benchmark`."""
+    """One row per job: ``rule``, ``job`` (the wildcards part of the path, "" for none), the
+    measures of :func:`read_benchmark` and ``job_cpu_s`` (:func:`read_job_cpu` of the job's
+    log, ``logs/`` beside ``benchmarks/`` with the same relative path)."""
     folders = benchmark_folders(results_dir)
     rows = []
     for dataset, folder in folders.items():
@@ -76,7 +97,8 @@ def read_jobs(results_dir: str | Path) -> pd.DataFrame:
         for path in sorted(folder.rglob("*.tsv")):
             rel = path.relative_to(folder).with_suffix("")
             rule = prefix + rel.parts[0]
-            rows.append({"rule": rule, "job": "/".join(rel.parts[1:]), **read_benchmark(path)})
+            job_cpu = read_job_cpu(folder.parent / "logs" / rel.with_suffix(".log"))
+            rows.append({"rule": rule, "job": "/".join(rel.parts[1:]), **read_benchmark(path), "job_cpu_s": job_cpu})
     if not rows:
         raise FileNotFoundError(f"{results_dir}: no benchmark files (*.tsv)")
     return pd.DataFrame(rows)
@@ -87,9 +109,11 @@ def per_rule(jobs: pd.DataFrame) -> pd.DataFrame:
     first), without the total row."""
     table = jobs.groupby("rule").agg(
         jobs=("job", "size"), cpu_s=("cpu_s", lambda x: x.sum(min_count=1)),
+        job_cpu_s=("job_cpu_s", lambda x: x.sum(min_count=1)),
         wall_s=("wall_s", lambda x: x.sum(min_count=1)), max_rss_mb=("max_rss_mb", "max"),
     )
-    return table.sort_values(["cpu_s", "wall_s"], ascending=False, na_position="last").reset_index()
+    first = "job_cpu_s" if table["job_cpu_s"].notna().any() else "cpu_s"
+    return table.sort_values([first, "wall_s"], ascending=False, na_position="last").reset_index()
 
 
 def with_total(table: pd.DataFrame) -> pd.DataFrame:
@@ -101,12 +125,15 @@ def with_total(table: pd.DataFrame) -> pd.DataFrame:
             continue
         if col.startswith("max_rss_mb"):
             total[col] = table[col].max()
-        elif col.startswith(("jobs", "cpu_s", "wall_s")):
+        elif col.startswith(("jobs", "cpu_s", "job_cpu_s", "wall_s")):
             total[col] = table[col].sum(min_count=1)
-    for measure in ("cpu_s", "wall_s", "max_rss_mb"):
+    for measure in MEASURES:
         if f"{measure}_ratio" in table.columns:
             total[f"{measure}_ratio"] = _ratio(total[f"{measure}_after"], total[f"{measure}_before"])
     return pd.concat([table, pd.DataFrame([total])], ignore_index=True)
+
+
+MEASURES = ("cpu_s", "job_cpu_s", "wall_s", "max_rss_mb")
 
 
 def _ratio(after, before):
@@ -135,11 +162,12 @@ def compare(after: pd.DataFrame, before: pd.DataFrame) -> pd.DataFrame:
     merged = before.merge(after, on="rule", how="outer", suffixes=("_before", "_after"))
     for col in ("jobs_before", "jobs_after"):
         merged[col] = merged[col].astype("Int64")
-    for measure in ("cpu_s", "wall_s", "max_rss_mb"):
+    for measure in MEASURES:
         merged[f"{measure}_ratio"] = _ratio(merged[f"{measure}_after"], merged[f"{measure}_before"])
-    order = ["rule", "jobs_before", "jobs_after", "cpu_s_before", "cpu_s_after", "cpu_s_ratio", "wall_s_before",
-             "wall_s_after", "wall_s_ratio", "max_rss_mb_before", "max_rss_mb_after", "max_rss_mb_ratio"]
-    merged = merged[order].sort_values(["cpu_s_after", "cpu_s_before"], ascending=False, na_position="last")
+    order = ["rule", "jobs_before", "jobs_after"] + [
+        f"{measure}_{part}" for measure in MEASURES for part in ("before", "after", "ratio")]
+    first = "job_cpu_s" if merged["job_cpu_s_after"].notna().any() else "cpu_s"
+    merged = merged[order].sort_values([f"{first}_after", f"{first}_before"], ascending=False, na_position="last")
     return merged.reset_index(drop=True)
 
 
@@ -155,9 +183,12 @@ def main(argv=None) -> int:
     try:
         jobs = read_jobs(args.results_dir)
         if args.jobs:
-            table = jobs.sort_values("cpu_s", ascending=False, na_position="last").reset_index(drop=True)
+            first = "job_cpu_s" if jobs["job_cpu_s"].notna().any() else "cpu_s"
+            table = jobs.sort_values(first, ascending=False, na_position="last").reset_index(drop=True)
             table = pd.concat([table, pd.DataFrame([{"rule": "TOTAL", "job": f"{len(jobs)} jobs",
-                                                     "cpu_s": jobs["cpu_s"].sum(), "wall_s": jobs["wall_s"].sum(),
+                                                     "cpu_s": jobs["cpu_s"].sum(),
+                                                     "job_cpu_s": jobs["job_cpu_s"].sum(min_count=1),
+                                                     "wall_s": jobs["wall_s"].sum(),
                                                      "max_rss_mb": jobs["max_rss_mb"].max()}])],
                               ignore_index=True)
         elif args.compare:

@@ -83,6 +83,36 @@ def test_compare_gives_before_after_and_ratios(two_runs, tmp_path, capsys):
     assert list(table.index[:3]) == ["fit", "data", "plot"]  # by CPU time after
 
 
+def test_job_cpu_comes_from_the_jobs_log_line(two_runs, tmp_path):
+    """Snakemake's cpu_time is its last 0.5 s / 30 s sample; the job's own end-of-job line
+    (``job cpu ...``, written by _rule.run) is read as job_cpu_s, beside it."""
+    pr = _profile_rules()
+    after, before = two_runs
+    (after / "logs" / "fit").mkdir(parents=True)
+    (after / "logs" / "data.log").write_text("x INFO rule data\nx INFO job cpu 9.500 s (user 9, system 0.5), "
+                                            "peak rss 500 MB\nx INFO done\n")
+    (after / "logs" / "fit" / "a.log").write_text("x INFO job cpu 1.0 s\nx INFO job cpu 31.250 s (user 30)\n")
+    (after / "logs" / "fit" / "b.log").write_text("x INFO an older run: no line\n")
+    jobs = pr.read_jobs(after).set_index(["rule", "job"])
+    assert jobs.loc[("data", ""), "job_cpu_s"] == pytest.approx(9.5)
+    assert jobs.loc[("fit", "a"), "job_cpu_s"] == pytest.approx(31.25)  # the last line
+    assert pd.isna(jobs.loc[("fit", "b"), "job_cpu_s"]) and pd.isna(jobs.loc[("plot", ""), "job_cpu_s"])
+    table = pr.with_total(pr.per_rule(jobs.reset_index())).set_index("rule")
+    assert table.loc["fit", "job_cpu_s"] == pytest.approx(31.25) and pd.isna(table.loc["plot", "job_cpu_s"])
+    assert table.loc["TOTAL", "job_cpu_s"] == pytest.approx(40.75)
+    assert list(table.index[:2]) == ["fit", "data"]  # sorted by the jobs' own CPU time
+    cmp = pr.with_total(pr.compare(pr.per_rule(jobs.reset_index()), pr.per_rule(pr.read_jobs(before))))
+    assert cmp.set_index("rule").loc["data", "job_cpu_s_after"] == pytest.approx(9.5)
+    assert pd.isna(cmp.set_index("rule").loc["data", "job_cpu_s_before"])
+
+
+def test_rule_run_logs_the_jobs_cpu_time(tmp_path, monkeypatch):
+    monkeypatch.delenv("MOTIONVAR_PROFILE", raising=False)
+    rule_module().run(_job(tmp_path), _main)
+    logged = _profile_rules().read_job_cpu(tmp_path / "some_rule.log")
+    assert 0 < logged < 600  # this test process's CPU time so far
+
+
 def test_bad_input_is_one_line(tmp_path, capsys):
     pr = _profile_rules()
     assert pr.main([str(tmp_path / "nowhere")]) == 1

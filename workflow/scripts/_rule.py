@@ -58,7 +58,26 @@ def run(snakemake, main) -> None:
             write_not_applicable(snakemake, exc.reason)
         except BAD_INPUT as exc:
             _fail(snakemake, log, str(exc))
+        log_job_cpu()
         logging.info("done")
+
+
+JOB_CPU = "job cpu"
+
+
+def log_job_cpu() -> None:
+    """Log the job's CPU time so far (user + system of this process, all its threads, and of
+    its waited-for children) and its peak resident memory: ``job cpu <s> s (user <s>, system
+    <s>), peak rss <MB> MB``. Snakemake's benchmark files sample the CPU time every 0.5 s for
+    the first 15 s and then every 30 s, so a job's ``cpu_time`` there misses what it used
+    after its last sample (up to 30 s); ``benchmarks/profile_rules.py`` reads this line
+    instead where a job wrote it."""
+    import resource
+
+    own, kids = resource.getrusage(resource.RUSAGE_SELF), resource.getrusage(resource.RUSAGE_CHILDREN)
+    user, system = own.ru_utime + kids.ru_utime, own.ru_stime + kids.ru_stime
+    logging.info("%s %.3f s (user %.3f, system %.3f), peak rss %.0f MB", JOB_CPU, user + system, user, system,
+                 max(own.ru_maxrss, kids.ru_maxrss) / 1024)
 
 
 def _file_backend() -> None:
