@@ -673,3 +673,20 @@ def test_draw_training():
     assert titles[3:] == ["", "neutral VAEs (Eq. 5.6): active units", "CVAEs walk_leftStance (Eq. 5.11): active units"]
     assert list(fig.axes[5].lines[0].get_ydata()) == [3, 2]
     plt.close(fig)
+
+
+def test_autoencoder_trains_on_a_fixed_thread_count(monkeypatch):
+    """Its weights depend on torch's thread count, so fit_feature_space pins it (two, as the
+    published runs) whatever the caller set: measured byte-identical weights under --cores 1
+    and 2 at CI and full size; restored afterwards."""
+    from motionvar.du2022.style import training
+
+    seen = []
+    monkeypatch.setattr(training, "_fit_feature_space", lambda *a: seen.append(torch.get_num_threads()) or ("s", "h"))
+    before = torch.get_num_threads()
+    try:
+        torch.set_num_threads(1)
+        assert training.fit_feature_space(None, None, None) == ("s", "h")
+        assert seen == [training.AUTOENCODER_THREADS] and torch.get_num_threads() == 1
+    finally:
+        torch.set_num_threads(before)

@@ -34,9 +34,10 @@ STABILITY_OUTPUTS = [STABILITY_CSV, f"{STABILITY}/claims_stability.png", f"{STAB
 # priority first. Order: the length of the chain of jobs that follows, in the CPU seconds of
 # a full run's benchmark files (Du ch. 3: canonical primitives -> basis -> reference SFPCA ->
 # SFPCA curve, ~400 s; Du ch. 5: autoencoder -> VAE -> CVAE -> Table 5.2, ~240 s), except the
-# autoencoder, which comes first: it takes both cores (its weights change with the thread
-# count), and a two-core job starts only while no one-core job holds a core: right after the
-# applicability checkpoint, when nothing runs, rather than last. The default profile's greedy
+# autoencoder, which comes first: it takes both cores (it trains on two threads, pinned:
+# style.training.AUTOENCODER_THREADS), and a two-core job starts only while no one-core job
+# holds a core: right after the applicability checkpoint, when nothing runs, rather than
+# last. The default profile's greedy
 # scheduler starts jobs in this order; the ILP scheduler would weigh two lower priorities
 # together against one higher (measured: it started two one-core jobs before the autoencoder).
 PRIORITY = {

@@ -46,6 +46,7 @@ import pandas as pd
 import torch
 from torch.optim.adam import adam as adam_update
 
+from ...core.threads import fixed_threads
 from ...io.dataset import MotionDataset
 from .data import example_features, primitive_features, select_style_example, training_windows, window_counts
 from .features import FeatureLayout, FeatureScaler
@@ -54,6 +55,12 @@ from .model import FeatureSpace, active_units
 from .networks import ConvAutoencoder, MotionVAE
 
 log = logging.getLogger(__name__)
+
+# The autoencoder's weights depend on how many threads torch splits its products over (its
+# convolutions' backward passes sum in another order); trained on a fixed count, the one of the
+# published runs, so that `--cores 1` gives the same feature space, and every Du ch. 5 number
+# after it, as two cores.
+AUTOENCODER_THREADS = 2
 
 OPTIMIZERS = ("adam", "sgd")
 AUTOENCODER_KEEP = ("best", "last")  # which epoch's weights train_autoencoder returns
@@ -278,12 +285,21 @@ def fit_feature_space(
     n_kernels: int = 256,
     kernel_width: int = 15,
     keep: str = "last",
+    threads: int = AUTOENCODER_THREADS,
 ) -> tuple[FeatureSpace, pd.DataFrame]:
     """The conv autoencoder (Eq. 5.1-5.2) with its :class:`~.features.FeatureScaler`,
     trained on the windows of ``window`` frames every ``stride`` frames of all clips
     (Sec. 5.4.1); ``max_windows`` > 0 keeps a random subset of that many (drawn with
     ``cfg.seed``); ``keep`` as :func:`train_autoencoder`. History columns: those of
-    :func:`train_autoencoder` and windows."""
+    :func:`train_autoencoder` and windows. Trained on ``threads`` torch and BLAS threads
+    (:data:`AUTOENCODER_THREADS`), whatever cores the caller has."""
+    with fixed_threads(threads):
+        return _fit_feature_space(dataset, layout, cfg, window, stride, max_windows, decoder_order, n_kernels,
+                                  kernel_width, keep)
+
+
+def _fit_feature_space(dataset, layout, cfg, window, stride, max_windows, decoder_order, n_kernels, kernel_width,
+                       keep) -> tuple[FeatureSpace, pd.DataFrame]:
     n_all = int(window_counts(dataset, window, stride).sum())
     subset = None
     if 0 < max_windows < n_all:  # only the drawn windows' frames are computed
