@@ -682,11 +682,17 @@ def test_autoencoder_trains_on_a_fixed_thread_count(monkeypatch):
     from motionvar.du2022.style import training
 
     seen = []
-    monkeypatch.setattr(training, "_fit_feature_space", lambda *a: seen.append(torch.get_num_threads()) or ("s", "h"))
+
+    def first_step(*args):  # the first thing fit_feature_space does, inside the pin
+        seen.append(torch.get_num_threads())
+        raise RuntimeError("stop here")
+
+    monkeypatch.setattr(training, "window_counts", first_step)
     before = torch.get_num_threads()
     try:
         torch.set_num_threads(1)
-        assert training.fit_feature_space(None, None, None) == ("s", "h")
-        assert seen == [training.AUTOENCODER_THREADS] and torch.get_num_threads() == 1
+        with pytest.raises(RuntimeError, match="stop here"):
+            training.fit_feature_space(None, None, None)
+        assert seen == [training.AUTOENCODER_THREADS] and torch.get_num_threads() == 1  # restored on the way out
     finally:
         torch.set_num_threads(before)

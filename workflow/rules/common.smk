@@ -37,9 +37,9 @@ STABILITY_OUTPUTS = [STABILITY_CSV, f"{STABILITY}/claims_stability.png", f"{STAB
 # autoencoder, which comes first: it takes both cores (it trains on two threads, pinned:
 # style.training.AUTOENCODER_THREADS), and a two-core job starts only while no one-core job
 # holds a core: right after the applicability checkpoint, when nothing runs, rather than
-# last. The default profile's greedy
-# scheduler starts jobs in this order; the ILP scheduler would weigh two lower priorities
-# together against one higher (measured: it started two one-core jobs before the autoencoder).
+# last. The default profile's greedy scheduler starts jobs in this order; the ILP scheduler
+# would weigh two lower priorities together against one higher (measured: it started two
+# one-core jobs before the autoencoder).
 PRIORITY = {
     "style_autoencoder": 100,
     "du2022_fda_canonical": 90,

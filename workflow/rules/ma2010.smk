@@ -80,7 +80,7 @@ for _ev, _spec in MA2010_EVALUATIONS.items():
             ev_log(_ev),
         benchmark:
             ev_benchmark(_ev)
-        threads: _spec.get("threads", 1)
+        threads: 1
         resources:
             mem_mb=_spec["mem_mb"],
         conda:

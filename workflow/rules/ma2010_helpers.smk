@@ -19,8 +19,8 @@ _MODEL = ["structure", "variogram_model", "root_group"]
 # built with ma2010_fig6 (same needs: walking cycles)
 MA2010_MODEL = [f"{MA2010}/style_variation.npz", f"{MA2010}/style_variation.json"]
 
-# evaluation -> inputs, figure label, config.ma2010 keys its script reads, threads,
-# memory, and further outputs / params
+# evaluation -> inputs, figure label, config.ma2010 keys its script reads, memory, and
+# further outputs / params (every evaluation runs on one core)
 MA2010_EVALUATIONS = {
     "ma2010_fig3": {
         "input": "data", "figure": "Fig. 3", "mem_mb": 3000,

@@ -294,31 +294,25 @@ def fit_feature_space(
     :func:`train_autoencoder` and windows. Trained on ``threads`` torch and BLAS threads
     (:data:`AUTOENCODER_THREADS`), whatever cores the caller has."""
     with fixed_threads(threads):
-        return _fit_feature_space(dataset, layout, cfg, window, stride, max_windows, decoder_order, n_kernels,
-                                  kernel_width, keep)
-
-
-def _fit_feature_space(dataset, layout, cfg, window, stride, max_windows, decoder_order, n_kernels, kernel_width,
-                       keep) -> tuple[FeatureSpace, pd.DataFrame]:
-    n_all = int(window_counts(dataset, window, stride).sum())
-    subset = None
-    if 0 < max_windows < n_all:  # only the drawn windows' frames are computed
-        subset = np.sort(np.random.default_rng(cfg.seed).choice(n_all, max_windows, replace=False))
-    windows = training_windows(dataset, layout, window, stride, subset)
-    log.info("%d windows of %d frames (%d in all) from %d clips; joints %s", len(windows),
-             windows.shape[1], n_all, len(dataset), ", ".join(layout.names))
-    scaler = FeatureScaler.fit(windows, layout.n_joints)
-    ae, history = train_autoencoder(
-        scaler.transform(windows), cfg, decoder_order=decoder_order, n_kernels=n_kernels, kernel_width=kernel_width,
-        keep=keep,
-    )
-    space = FeatureSpace(ae, scaler)
-    history["windows"] = len(windows)
-    kept = history.loc[history["kept"]].iloc[0]
-    log.info("trained in %.1f s; kept epoch %d of %d (end-of-epoch loss %.4g; last %.4g); reconstruction RMSE %.3f",
-             history["seconds"].iloc[-1], kept["epoch"], len(history), kept["end_loss"],
-             history["end_loss"].iloc[-1], space.reconstruction_rmse(windows[:512]))
-    return space, history
+        n_all = int(window_counts(dataset, window, stride).sum())
+        subset = None
+        if 0 < max_windows < n_all:  # only the drawn windows' frames are computed
+            subset = np.sort(np.random.default_rng(cfg.seed).choice(n_all, max_windows, replace=False))
+        windows = training_windows(dataset, layout, window, stride, subset)
+        log.info("%d windows of %d frames (%d in all) from %d clips; joints %s", len(windows),
+                 windows.shape[1], n_all, len(dataset), ", ".join(layout.names))
+        scaler = FeatureScaler.fit(windows, layout.n_joints)
+        ae, history = train_autoencoder(
+            scaler.transform(windows), cfg, decoder_order=decoder_order, n_kernels=n_kernels, kernel_width=kernel_width,
+            keep=keep,
+        )
+        space = FeatureSpace(ae, scaler)
+        history["windows"] = len(windows)
+        kept = history.loc[history["kept"]].iloc[0]
+        log.info("trained in %.1f s; kept epoch %d of %d (end-of-epoch loss %.4g; last %.4g); reconstruction RMSE %.3f",
+                 history["seconds"].iloc[-1], kept["epoch"], len(history), kept["end_loss"],
+                 history["end_loss"].iloc[-1], space.reconstruction_rmse(windows[:512]))
+        return space, history
 
 
 def fit_primitive_vae(

@@ -26,9 +26,9 @@ log = logging.getLogger(__name__)
 
 # The rivals' fits (the Bayesian GPLVM's 200 L-BFGS-B iterations in torch, the DBN's regressions)
 # follow paths whose last bits depend on how many threads torch and BLAS split a product over,
-# and the paths amplify them: at full size one thread instead of two moved GPLVM rows of the table by up to
-# 13 % (the verdict held). So the sequences are made with a fixed thread count, the one of the
-# published runs, whatever cores the job was given.
+# and the paths amplify them: at full size one thread instead of two moved GPLVM rows of the
+# table by up to 13 % (the verdict held). So the sequences are made with a fixed thread count,
+# the one of the published runs, whatever cores the job was given.
 RIVAL_THREADS = 2
 
 
