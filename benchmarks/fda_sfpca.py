@@ -97,8 +97,10 @@ def main() -> None:
 
     clips = random_clips(args.clips)
     fd, t_fit = timed(lambda: FunctionalMotions.from_motions(clips, args.basis))
-    print(f"data: {fd.n_clips} clips x {args.basis} basis functions x {fd.layout.n_joints} joints "
-          f"({fd.layout.n_functions} functions, {fd.n_frames} canonical frames); B-spline fit {t_fit:.2f} s")
+    print(
+        f"data: {fd.n_clips} clips x {args.basis} basis functions x {fd.layout.n_joints} joints "
+        f"({fd.layout.n_functions} functions, {fd.n_frames} canonical frames); B-spline fit {t_fit:.2f} s"
+    )
 
     # 1. autograd vs finite differences, same start, same number of iterations
     small = fd.subset(np.arange(min(args.fd_clips, fd.n_clips)))
@@ -107,37 +109,49 @@ def main() -> None:
     fdm, t_fd = timed(lambda: SFPCA(args.components, gradient="finite_difference", max_iter=args.fd_iter).fit(small))
     per_ag, per_fd = t_ag / max(ag.n_iter_, 1), t_fd / max(fdm.n_iter_, 1)
     print(f"\n[1] SFPCA gradient, {small.n_clips} clips, {args.fd_iter} L-BFGS-B iterations")
-    print(f"  autograd (float32 FK)          : {t_ag:7.2f} s, {ag.n_iter_} it, {ag.n_evals_} evals, "
-          f"{per_ag:.2f} s/it, loss {ag.loss_raw_ if ag.init_ == 'raw' else ag.loss_normalized_:.3f} -> {ag.loss_:.3f} cm^2")
-    print(f"  finite differences (float64 FK): {t_fd:7.2f} s, {fdm.n_iter_} it, {fdm.n_evals_} evals, "
-          f"{per_fd:.2f} s/it, loss -> {fdm.loss_:.3f} cm^2")
+    print(
+        f"  autograd (float32 FK)          : {t_ag:7.2f} s, {ag.n_iter_} it, {ag.n_evals_} evals, "
+        f"{per_ag:.2f} s/it, loss {ag.loss_raw_ if ag.init_ == 'raw' else ag.loss_normalized_:.3f} -> {ag.loss_:.3f} cm^2"
+    )
+    print(
+        f"  finite differences (float64 FK): {t_fd:7.2f} s, {fdm.n_iter_} it, {fdm.n_evals_} evals, "
+        f"{per_fd:.2f} s/it, loss -> {fdm.loss_:.3f} cm^2"
+    )
     print(f"  ratio finite differences / autograd per iteration: {per_fd / per_ag:.1f}x")
 
     # 2. full fit at the target size: the pipeline's settings (FK at 2 frames per basis
     # function, 50 iterations, config/config.yaml) and the thesis-like ones (every frame)
     print(f"\n[2] SFPCA fit, {fd.n_clips} clips, {args.components} components")
-    settings = [("pipeline: FK at 2 frames/basis, max_iter 50", dict(max_iter=50, n_eval_frames=2 * args.basis)),
-                (f"every canonical frame, max_iter {args.max_iter}", dict(max_iter=args.max_iter))]
+    settings = [
+        ("pipeline: FK at 2 frames/basis, max_iter 50", dict(max_iter=50, n_eval_frames=2 * args.basis)),
+        (f"every canonical frame, max_iter {args.max_iter}", dict(max_iter=args.max_iter)),
+    ]
     for label, kwargs in settings:
         model, t_full = timed(lambda: SFPCA(args.components, **kwargs).fit(fd))
-        print(f"  {label}: {t_full:.1f} s ({model.n_iter_} it, {model.n_evals_} evals); target 60 s -> "
-              f"{'met' if t_full < 60 else 'MISSED'} (ratio {t_full / 60:.2f}); init {model.init_}, "
-              f"loss raw {model.loss_raw_:.3f} / normalized {model.loss_normalized_:.3f} -> {model.loss_:.3f} cm^2")
+        print(
+            f"  {label}: {t_full:.1f} s ({model.n_iter_} it, {model.n_evals_} evals); target 60 s -> "
+            f"{'met' if t_full < 60 else 'MISSED'} (ratio {t_full / 60:.2f}); init {model.init_}, "
+            f"loss raw {model.loss_raw_:.3f} / normalized {model.loss_normalized_:.3f} -> {model.loss_:.3f} cm^2"
+        )
 
     # 3. FPCA vs references
     ours, t_ours = timed(lambda: FPCA(args.components).fit(fd).explained_variance_ratio_)
     ref, t_ref = timed(lambda: dense_reference_fpca(fd, args.components))
     print(f"\n[3] FPCA, {args.components} components")
     print(f"  ours (Gram-weighted coefficients): {t_ours:.3f} s")
-    print(f"  dense quadrature reference      : {t_ref:.3f} s  ratio {t_ref / t_ours:.1f}x, "
-          f"max |EVR difference| {np.max(np.abs(ours - ref)):.1e}")
+    print(
+        f"  dense quadrature reference      : {t_ref:.3f} s  ratio {t_ref / t_ours:.1f}x, "
+        f"max |EVR difference| {np.max(np.abs(ours - ref)):.1e}"
+    )
     sk = skfda_fpca(fd, args.components)
     if sk is None:
         print("  scikit-fda: not installed (not a dependency); skipped")
     else:
         out, t_sk = timed(lambda: skfda_fpca(fd, args.components))
-        print(f"  scikit-fda {out[1]}             : {t_sk:.3f} s  ratio {t_sk / t_ours:.1f}x, "
-              f"max |EVR difference| {np.max(np.abs(ours - out[0])):.1e}")
+        print(
+            f"  scikit-fda {out[1]}             : {t_sk:.3f} s  ratio {t_sk / t_ours:.1f}x, "
+            f"max |EVR difference| {np.max(np.abs(ours - out[0])):.1e}"
+        )
 
 
 if __name__ == "__main__":

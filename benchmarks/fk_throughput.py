@@ -54,8 +54,10 @@ def main() -> None:
 
     ref = fk(rotations, root, offsets, sk.parents)
     t_np = best_time(lambda: fk(rotations, root, offsets, sk.parents), args.repeats)
-    print(f"FK, {args.clips} clips x {args.frames} frames x {sk.n_joints} joints, "
-          f"torch {torch.__version__} with {torch.get_num_threads()} threads")
+    print(
+        f"FK, {args.clips} clips x {args.frames} frames x {sk.n_joints} joints, "
+        f"torch {torch.__version__} with {torch.get_num_threads()} threads"
+    )
     print(f"numpy   float64: {n_frames / t_np:12,.0f} frames/s ({t_np:.3f} s)")
 
     for dtype in (torch.float64, torch.float32):
@@ -65,8 +67,10 @@ def main() -> None:
             t = best_time(lambda: fk_torch(r, p, o, sk.parents), args.repeats)
         name = str(dtype).replace("torch.", "")
         diff = np.abs(out - ref).max()
-        print(f"torch   {name}: {n_frames / t:12,.0f} frames/s ({t:.3f} s), "
-              f"torch/numpy = {t_np / t:.2f}x, max |difference| {diff:.1e} cm")
+        print(
+            f"torch   {name}: {n_frames / t:12,.0f} frames/s ({t:.3f} s), "
+            f"torch/numpy = {t_np / t:.2f}x, max |difference| {diff:.1e} cm"
+        )
 
 
 if __name__ == "__main__":

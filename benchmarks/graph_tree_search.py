@@ -32,8 +32,17 @@ import numpy as np
 
 from motionvar.core import cmu_joint_map
 from motionvar.du2022.graph import (
-    Constraint, KeyFramePositionIndex, MedianKDTree, MotionPrimitive, Objective, PrimitiveOptions, SearchResult,
-    SpacePartitioningTree, brute_force, random_constraints, random_search,
+    Constraint,
+    KeyFramePositionIndex,
+    MedianKDTree,
+    MotionPrimitive,
+    Objective,
+    PrimitiveOptions,
+    SearchResult,
+    SpacePartitioningTree,
+    brute_force,
+    random_constraints,
+    random_search,
 )
 from motionvar.du2022.graph.constraints import ConstraintStack
 from motionvar.du2022.graph.trees import random_search_many
@@ -44,8 +53,10 @@ Searches = Callable[[Sequence[Constraint]], list[SearchResult]]
 
 
 def _same(a: list[SearchResult], b: list[SearchResult]) -> bool:
-    return all((x.index, x.error, x.n_evals) == (y.index, y.error, y.n_evals) and np.array_equal(x.latent, y.latent)
-               for x, y in zip(a, b))
+    return all(
+        (x.index, x.error, x.n_evals) == (y.index, y.error, y.n_evals) and np.array_equal(x.latent, y.latent)
+        for x, y in zip(a, b)
+    )
 
 
 def main() -> None:
@@ -59,14 +70,17 @@ def main() -> None:
 
     jm = cmu_joint_map()
     clips = align_motions(dense_pick_segments(args.subjects, 0, 5)[0], jm)
-    prim = MotionPrimitive.fit(clips, "pick_reach", PrimitiveOptions(n_components=20, sfpca_max_iter=0,
-                                                                     gmm_components=(1, 4)))
+    prim = MotionPrimitive.fit(
+        clips, "pick_reach", PrimitiveOptions(n_components=20, sfpca_max_iter=0, gmm_components=(1, 4))
+    )
     S = prim.sample(args.samples, 0)
     hand = jm.index(prim.skeleton, "right_hand")
     last = prim.n_frames - 1
     queries = random_constraints(prim, "position", args.queries, [hand], last, 1)
-    print(f"primitive: {len(clips)} clips, latent d = {prim.n_latent}, {prim.gmm_.n_components} Gaussians; "
-          f"{args.samples} samples, {args.queries} position queries")
+    print(
+        f"primitive: {len(clips)} clips, latent d = {prim.n_latent}, {prim.gmm_.n_components} Gaussians; "
+        f"{args.samples} samples, {args.queries} position queries"
+    )
 
     t0 = time.process_time()
     tree = SpacePartitioningTree(S, "kmeans", leaf_size=args.leaf_size)
@@ -96,17 +110,28 @@ def main() -> None:
     n_brute = max(10, args.queries // 10)  # the naive brute force is slow: a subset of the queries
     # (name, one query at a time, all queries at once or None)
     methods: list[tuple[str, Searches, Searches | None]] = [
-        ("brute force (back-projection + FK)", each(lambda c: brute_force(S, Objective(prim, [c]))), None)]
-    methods += [(f"k-means tree, beam {b}", each(lambda c, b=b: tree.search(Objective(prim, [c]), b)),
-                 lockstep(tree, b)) for b in args.beams]
+        ("brute force (back-projection + FK)", each(lambda c: brute_force(S, Objective(prim, [c]))), None)
+    ]
     methods += [
-        ("median tree (DFKI kd-tree, greedy)", each(lambda c: kd.search(Objective(prim, [c]))),
-         lambda qs: kd.search_many(index.objective_many(stack), len(qs))),
-        (f"median split, node means, beam {args.beams[0]}",
-         each(lambda c: median_means.search(Objective(prim, [c]), args.beams[0])),
-         lockstep(median_means, args.beams[0])),
-        ("random, 100 fresh samples", random_each,
-         lambda qs: random_search_many(prim, [[c] for c in qs], 100, np.random.default_rng(2))),
+        (f"k-means tree, beam {b}", each(lambda c, b=b: tree.search(Objective(prim, [c]), b)), lockstep(tree, b))
+        for b in args.beams
+    ]
+    methods += [
+        (
+            "median tree (DFKI kd-tree, greedy)",
+            each(lambda c: kd.search(Objective(prim, [c]))),
+            lambda qs: kd.search_many(index.objective_many(stack), len(qs)),
+        ),
+        (
+            f"median split, node means, beam {args.beams[0]}",
+            each(lambda c: median_means.search(Objective(prim, [c]), args.beams[0])),
+            lockstep(median_means, args.beams[0]),
+        ),
+        (
+            "random, 100 fresh samples",
+            random_each,
+            lambda qs: random_search_many(prim, [[c] for c in qs], 100, np.random.default_rng(2)),
+        ),
         ("exact, precomputed key-frame poses", each(lambda c: index.search([c])), None),
     ]
     results = {}
@@ -123,17 +148,26 @@ def main() -> None:
         results[name] = row
     base = results["brute force (back-projection + FK)"]
     print(f"(the naive brute force runs the first {n_brute} queries only; its error equals the exact search's there)")
-    print(f"build (CPU s): k-means tree {build_tree:.2f} ({tree.n_nodes} nodes, depth {tree.depth}); kd-tree "
-          f"{build_kd:.2f} (depth {kd.depth}); key-frame index {build_index:.2f}; poses of the trees' node means and "
-          f"samples (lockstep) {build_poses:.2f}")
-    print(f"{'method':40s} {'queries/s':>10s} {'x brute':>8s} {'evals':>8s} {'evals/brute':>11s} {'median err cm':>14s}"
-          f" {'lockstep q/s':>13s} {'x one-at-a-time':>16s} {'identical':>10s}")
+    print(
+        f"build (CPU s): k-means tree {build_tree:.2f} ({tree.n_nodes} nodes, depth {tree.depth}); kd-tree "
+        f"{build_kd:.2f} (depth {kd.depth}); key-frame index {build_index:.2f}; poses of the trees' node means and "
+        f"samples (lockstep) {build_poses:.2f}"
+    )
+    print(
+        f"{'method':40s} {'queries/s':>10s} {'x brute':>8s} {'evals':>8s} {'evals/brute':>11s} {'median err cm':>14s}"
+        f" {'lockstep q/s':>13s} {'x one-at-a-time':>16s} {'identical':>10s}"
+    )
     for name, r in results.items():
         ratio_e = r["evals"] / base["evals"] if base["evals"] else float("nan")
-        many = (f" {r['qps_many']:13.1f} {r['qps_many'] / r['qps']:16.1f} {str(r['identical']):>10s}"
-                if "qps_many" in r else "")
-        print(f"{name:40s} {r['qps']:10.1f} {r['qps'] / base['qps']:8.1f} {r['evals']:8.1f} {ratio_e:11.4f} "
-              f"{r['err']:14.3f}{many}")
+        many = (
+            f" {r['qps_many']:13.1f} {r['qps_many'] / r['qps']:16.1f} {str(r['identical']):>10s}"
+            if "qps_many" in r
+            else ""
+        )
+        print(
+            f"{name:40s} {r['qps']:10.1f} {r['qps'] / base['qps']:8.1f} {r['evals']:8.1f} {ratio_e:11.4f} "
+            f"{r['err']:14.3f}{many}"
+        )
     exact = np.array([index.search([c]).error for c in queries])
     for b in args.beams:
         treeq = np.array([r.error for r in tree.search_many(poses[tree].objective_many(stack), len(queries), b)])

@@ -61,10 +61,14 @@ def main() -> None:
     t0 = time.perf_counter()
     db = build_database(
         [analyse_recording(m, pca, cmu_joint_map(), f"clip{i}") for i, m in enumerate(clips)],
-        pca, IdleSettings(), subject.subject_id,
+        pca,
+        IdleSettings(),
+        subject.subject_id,
     )
-    print(f"database: {len(db.animations)} balance shifts, categories {db.categories.names}, "
-          f"built in {time.perf_counter() - t0:.2f} s")
+    print(
+        f"database: {len(db.animations)} balance shifts, categories {db.categories.names}, "
+        f"built in {time.perf_counter() - t0:.2f} s"
+    )
 
     n = int(round(args.seconds * fps)) + 1
     stages = generation_seconds(db, pca, n, seed=1, repeats=args.repeats)
@@ -102,11 +106,15 @@ def main() -> None:
             t1 = time.perf_counter()
             write_bvh(Path(tmp) / "idle.bvh", motion)
             gen, write = min(gen, t1 - t0), min(write, time.perf_counter() - t1)
-    print(f"`motionvar egges2004` path ({where}, subject {who}): {args.seconds:.0f} s of idle motion "
-          f"({motion.n_frames} frames at {motion.fps:g} fps), best of {args.repeats}")
+    print(
+        f"`motionvar egges2004` path ({where}, subject {who}): {args.seconds:.0f} s of idle motion "
+        f"({motion.n_frames} frames at {motion.fps:g} fps), best of {args.repeats}"
+    )
     print(f"  generate (idle_motion)   {gen:8.3f} s = {args.seconds / gen:8.0f} x faster than real time")
-    print(f"  + write the BVH file     {write:8.3f} s = {args.seconds / (gen + write):8.0f} x faster than real time "
-          f"(issue #15: >= 100 x)")
+    print(
+        f"  + write the BVH file     {write:8.3f} s = {args.seconds / (gen + write):8.0f} x faster than real time "
+        f"(issue #15: >= 100 x)"
+    )
 
 
 if __name__ == "__main__":

@@ -58,8 +58,13 @@ def staged_synthesis(model, style, n_clips, solver, rng) -> tuple[dict[str, floa
     t4 = time.perf_counter()
     motion = solver.motion(rot, model.fps_, height)
     t5 = time.perf_counter()
-    t = {"sample xi (Eq. 10)": t1 - t0, "SVI, 4 groups (Eq. 11)": t2 - t1, "inverse time warp": t3 - t2,
-         "transitions (Eq. 14-15)": t4 - t3, "footskate cleanup": t5 - t4}
+    t = {
+        "sample xi (Eq. 10)": t1 - t0,
+        "SVI, 4 groups (Eq. 11)": t2 - t1,
+        "inverse time warp": t3 - t2,
+        "transitions (Eq. 14-15)": t4 - t3,
+        "footskate cleanup": t5 - t4,
+    }
     return t, motion.duration
 
 
@@ -86,8 +91,10 @@ def main() -> None:
     model, clips, solver, n_subjects = fit_model(args.data, args.frames)
     style = np.median(clips.style, axis=0)
     n_clips = int(np.ceil(args.seconds / np.mean(model.key_times_span_)))
-    print(f"model: {clips.n_clips} walking cycles of {n_subjects} subjects, {clips.n_frames} frames each; "
-          f"synthesizing {n_clips} cycles")
+    print(
+        f"model: {clips.n_clips} walking cycles of {n_subjects} subjects, {clips.n_frames} frames each; "
+        f"synthesizing {n_clips} cycles"
+    )
     best: dict[str, float] = {}
     length = 0.0
     for r in range(args.repeats):
@@ -98,9 +105,11 @@ def main() -> None:
     for k, v in best.items():
         print(f"  {k:28s} {v / length * 1000:8.3f} ms per s of motion")
     sps = total / length
-    print(f"total: {sps:.4f} s per s = {1 / sps:.0f}x faster than real time; "
-          f"ratio to the paper's {PAPER_SECONDS_PER_SECOND} s per s: {sps / PAPER_SECONDS_PER_SECOND:.3f} "
-          f"(target: >= 100x real time -> {'met' if 1 / sps >= 100 else 'NOT met'})")
+    print(
+        f"total: {sps:.4f} s per s = {1 / sps:.0f}x faster than real time; "
+        f"ratio to the paper's {PAPER_SECONDS_PER_SECOND} s per s: {sps / PAPER_SECONDS_PER_SECOND:.3f} "
+        f"(target: >= 100x real time -> {'met' if 1 / sps >= 100 else 'NOT met'})"
+    )
 
     codec, krig = model.interpolators_["legs"]
     xi = model.sample_variation(np.tile(style, (n_clips, 1)), rng=np.random.default_rng(0))
@@ -113,9 +122,11 @@ def main() -> None:
         lam_slow = weights_by_solving(krig, x)
         t2 = time.perf_counter()
         fast, slow = min(fast, t1 - t0), min(slow, t2 - t1)
-    print(f"Kriging weights of {n_clips} queries, one group: precomputed inverse {fast * 1000:.2f} ms, solved per "
-          f"query {slow * 1000:.2f} ms (ratio {slow / fast:.1f}); largest weight difference "
-          f"{np.abs(lam_fast - lam_slow).max():.1e}")
+    print(
+        f"Kriging weights of {n_clips} queries, one group: precomputed inverse {fast * 1000:.2f} ms, solved per "
+        f"query {slow * 1000:.2f} ms (ratio {slow / fast:.1f}); largest weight difference "
+        f"{np.abs(lam_fast - lam_slow).max():.1e}"
+    )
 
 
 if __name__ == "__main__":

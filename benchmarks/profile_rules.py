@@ -70,8 +70,10 @@ def read_benchmark(path: Path) -> dict[str, float]:
     missing = [c for c in COLUMNS if c not in table.columns]
     if missing:
         raise ValueError(f"{path}: not a Snakemake benchmark file (no column {', '.join(missing)})")
-    return {name: float(pd.to_numeric(table[col], errors="coerce").mean()) if len(table) else np.nan
-            for col, name in COLUMNS.items()}
+    return {
+        name: float(pd.to_numeric(table[col], errors="coerce").mean()) if len(table) else np.nan
+        for col, name in COLUMNS.items()
+    }
 
 
 JOB_CPU_LINE = re.compile(r"job cpu ([0-9.]+) s")
@@ -108,9 +110,11 @@ def per_rule(jobs: pd.DataFrame) -> pd.DataFrame:
     """Sum per rule (jobs, CPU s, wall s; largest peak RSS), sorted by CPU time (largest
     first), without the total row."""
     table = jobs.groupby("rule").agg(
-        jobs=("job", "size"), cpu_s=("cpu_s", lambda x: x.sum(min_count=1)),
+        jobs=("job", "size"),
+        cpu_s=("cpu_s", lambda x: x.sum(min_count=1)),
         job_cpu_s=("job_cpu_s", lambda x: x.sum(min_count=1)),
-        wall_s=("wall_s", lambda x: x.sum(min_count=1)), max_rss_mb=("max_rss_mb", "max"),
+        wall_s=("wall_s", lambda x: x.sum(min_count=1)),
+        max_rss_mb=("max_rss_mb", "max"),
     )
     first = "job_cpu_s" if table["job_cpu_s"].notna().any() else "cpu_s"
     return table.sort_values([first, "wall_s"], ascending=False, na_position="last").reset_index()
@@ -165,7 +169,8 @@ def compare(after: pd.DataFrame, before: pd.DataFrame) -> pd.DataFrame:
     for measure in MEASURES:
         merged[f"{measure}_ratio"] = _ratio(merged[f"{measure}_after"], merged[f"{measure}_before"])
     order = ["rule", "jobs_before", "jobs_after"] + [
-        f"{measure}_{part}" for measure in MEASURES for part in ("before", "after", "ratio")]
+        f"{measure}_{part}" for measure in MEASURES for part in ("before", "after", "ratio")
+    ]
     first = "job_cpu_s" if merged["job_cpu_s_after"].notna().any() else "cpu_s"
     merged = merged[order].sort_values([f"{first}_after", f"{first}_before"], ascending=False, na_position="last")
     return merged.reset_index(drop=True)
@@ -177,20 +182,37 @@ def main(argv=None) -> int:
     parser.add_argument("--compare", metavar="OTHER_RESULTS_DIR", help="the run to compare with (the 'before')")
     parser.add_argument("--out", metavar="CSV", help="also write the table to this CSV file")
     parser.add_argument("--jobs", action="store_true", help="one row per job instead of per rule")
-    parser.add_argument("--rename", action="append", default=[], metavar="OLD=NEW",
-                        help="a rule of the --compare run named NEW in this run (repeatable)")
+    parser.add_argument(
+        "--rename",
+        action="append",
+        default=[],
+        metavar="OLD=NEW",
+        help="a rule of the --compare run named NEW in this run (repeatable)",
+    )
     args = parser.parse_args(argv)
     try:
         jobs = read_jobs(args.results_dir)
         if args.jobs:
             first = "job_cpu_s" if jobs["job_cpu_s"].notna().any() else "cpu_s"
             table = jobs.sort_values(first, ascending=False, na_position="last").reset_index(drop=True)
-            table = pd.concat([table, pd.DataFrame([{"rule": "TOTAL", "job": f"{len(jobs)} jobs",
-                                                     "cpu_s": jobs["cpu_s"].sum(),
-                                                     "job_cpu_s": jobs["job_cpu_s"].sum(min_count=1),
-                                                     "wall_s": jobs["wall_s"].sum(),
-                                                     "max_rss_mb": jobs["max_rss_mb"].max()}])],
-                              ignore_index=True)
+            table = pd.concat(
+                [
+                    table,
+                    pd.DataFrame(
+                        [
+                            {
+                                "rule": "TOTAL",
+                                "job": f"{len(jobs)} jobs",
+                                "cpu_s": jobs["cpu_s"].sum(),
+                                "job_cpu_s": jobs["job_cpu_s"].sum(min_count=1),
+                                "wall_s": jobs["wall_s"].sum(),
+                                "max_rss_mb": jobs["max_rss_mb"].max(),
+                            }
+                        ]
+                    ),
+                ],
+                ignore_index=True,
+            )
         elif args.compare:
             before = renamed(read_jobs(args.compare), args.rename)
             table = with_total(compare(per_rule(jobs), per_rule(before)))

@@ -189,11 +189,17 @@ def _idle_prepare(n: int):
 
         subject = make_subjects(1, seed=0)[0]
         rng = np.random.default_rng(0)
-        recs = [generate_idle(subject, IdleParams(duration_s=40.0, heading_deg=90.0, start_xz=(0.0, 0.0)), rng)[0]
-                for _ in range(2)]
+        recs = [
+            generate_idle(subject, IdleParams(duration_s=40.0, heading_deg=90.0, start_xz=(0.0, 0.0)), rng)[0]
+            for _ in range(2)
+        ]
         pca = PosturePCA.fit(recs)
-        db = build_database([analyse_recording(m, pca, cmu_joint_map(), f"clip{i}") for i, m in enumerate(recs)],
-                            pca, IdleSettings(), subject.subject_id)
+        db = build_database(
+            [analyse_recording(m, pca, cmu_joint_map(), f"clip{i}") for i, m in enumerate(recs)],
+            pca,
+            IdleSettings(),
+            subject.subject_id,
+        )
         _IDLE.update(db=db, pca=pca)
     return n
 
@@ -205,27 +211,85 @@ def _idle_query(n, _):
 
 
 CASES = [
-    Case("fpca", "clips", (100, 200, 400, 800, 1600), (20, 40, 80), functional, _fpca_fit, _fpca_query,
-         "linear in N: covariance of the P = K*D coefficients O(N P^2) + its eigendecomposition O(P^3); "
-         "the SVD used (scikit-learn PCA, svd_solver='full') costs O(N P min(N, P)): quadratic below N = P",
-         "O(1) in N: a projection per clip"),
-    Case("sfpca", "clips", (100, 200, 400, 800, 1600), (20, 40, 80), functional, _sfpca_fit, _fpca_query,
-         "per L-BFGS-B iteration O(N T J) forward kinematics + O(min(N, K Da)^3) eigendecomposition: "
-         "linear in N once N > K Da, up to cubic below",
-         "O(1) in N (as FPCA)"),
-    Case("gmm", "samples", (1000, 2000, 4000, 8000, 16000), (200, 400, 800), _gmm_prepare, _gmm_fit, _gmm_query,
-         "O(N K d^2) per EM iteration: linear", "O(1) in N (K d^2 per sample)"),
-    Case("kriging", "examples", (50, 100, 200, 400, 800), (10, 20, 40), _kriging_prepare, _kriging_fit,
-         _kriging_query,
-         "O(N^3) once (inverse of the bordered N+1 system) + O(N^2) variogram pairs",
-         "O(N) per query with the dual weights R^-1 r; O(N^2) as implemented (query row times the N+1 inverse)"),
-    Case("egges_pca", "clips", (25, 50, 100, 200, 400), (5, 10, 20), clips, _pca_fit, _pca_query,
-         "O(F D^2) for F = ~60 N frames: linear", "O(1) in N: one clip's frames"),
-    Case("kmeans_tree", "samples", (1000, 2000, 4000, 8000, 16000), (200, 400, 800), _gmm_prepare, _tree_fit,
-         _tree_query, "O(N log N): k-means over all samples at each of log4(N) levels",
-         "O(log N): beam x children evaluations per level"),
-    Case("idle_synthesis", "frames", (1000, 2000, 4000, 8000, 16000), (250, 500, 1000), _idle_prepare, None,
-         _idle_query, "-", "O(N): a constant cost per frame"),
+    Case(
+        "fpca",
+        "clips",
+        (100, 200, 400, 800, 1600),
+        (20, 40, 80),
+        functional,
+        _fpca_fit,
+        _fpca_query,
+        "linear in N: covariance of the P = K*D coefficients O(N P^2) + its eigendecomposition O(P^3); "
+        "the SVD used (scikit-learn PCA, svd_solver='full') costs O(N P min(N, P)): quadratic below N = P",
+        "O(1) in N: a projection per clip",
+    ),
+    Case(
+        "sfpca",
+        "clips",
+        (100, 200, 400, 800, 1600),
+        (20, 40, 80),
+        functional,
+        _sfpca_fit,
+        _fpca_query,
+        "per L-BFGS-B iteration O(N T J) forward kinematics + O(min(N, K Da)^3) eigendecomposition: "
+        "linear in N once N > K Da, up to cubic below",
+        "O(1) in N (as FPCA)",
+    ),
+    Case(
+        "gmm",
+        "samples",
+        (1000, 2000, 4000, 8000, 16000),
+        (200, 400, 800),
+        _gmm_prepare,
+        _gmm_fit,
+        _gmm_query,
+        "O(N K d^2) per EM iteration: linear",
+        "O(1) in N (K d^2 per sample)",
+    ),
+    Case(
+        "kriging",
+        "examples",
+        (50, 100, 200, 400, 800),
+        (10, 20, 40),
+        _kriging_prepare,
+        _kriging_fit,
+        _kriging_query,
+        "O(N^3) once (inverse of the bordered N+1 system) + O(N^2) variogram pairs",
+        "O(N) per query with the dual weights R^-1 r; O(N^2) as implemented (query row times the N+1 inverse)",
+    ),
+    Case(
+        "egges_pca",
+        "clips",
+        (25, 50, 100, 200, 400),
+        (5, 10, 20),
+        clips,
+        _pca_fit,
+        _pca_query,
+        "O(F D^2) for F = ~60 N frames: linear",
+        "O(1) in N: one clip's frames",
+    ),
+    Case(
+        "kmeans_tree",
+        "samples",
+        (1000, 2000, 4000, 8000, 16000),
+        (200, 400, 800),
+        _gmm_prepare,
+        _tree_fit,
+        _tree_query,
+        "O(N log N): k-means over all samples at each of log4(N) levels",
+        "O(log N): beam x children evaluations per level",
+    ),
+    Case(
+        "idle_synthesis",
+        "frames",
+        (1000, 2000, 4000, 8000, 16000),
+        (250, 500, 1000),
+        _idle_prepare,
+        None,
+        _idle_query,
+        "-",
+        "O(N): a constant cost per frame",
+    ),
 ]
 
 
@@ -264,18 +328,30 @@ def measure(cases, quick: bool, repeats: int, log=print) -> tuple[pd.DataFrame, 
             if case.query is not None:
                 t, _ = timed(case.query, state, fitted, repeats=repeats)
                 rows.append({"method": case.name, "stage": "query", "unit": case.unit, "n": n, "cpu_s": t})
-            log(f"  {case.name:15s} N = {n:6d}: " + ", ".join(
-                f"{r['stage']} {r['cpu_s']:.4f} s" for r in rows if r["method"] == case.name and r["n"] == n))
+            log(
+                f"  {case.name:15s} N = {n:6d}: "
+                + ", ".join(
+                    f"{r['stage']} {r['cpu_s']:.4f} s" for r in rows if r["method"] == case.name and r["n"] == n
+                )
+            )
     timings = pd.DataFrame(rows)
     out = []
     for case in cases:
         for stage, required in (("fit", case.required_fit), ("query", case.required_query)):
             t = timings[(timings["method"] == case.name) & (timings["stage"] == stage)]
             if len(t):
-                out.append({"method": case.name, "stage": stage, "unit": case.unit,
-                            "sizes": f"{t['n'].min()}-{t['n'].max()}", "k": exponent(t["n"], t["cpu_s"]),
-                            "k_last": exponent(t["n"].iloc[-2:], t["cpu_s"].iloc[-2:]),
-                            "cpu_s_largest": float(t["cpu_s"].iloc[-1]), "required": required})
+                out.append(
+                    {
+                        "method": case.name,
+                        "stage": stage,
+                        "unit": case.unit,
+                        "sizes": f"{t['n'].min()}-{t['n'].max()}",
+                        "k": exponent(t["n"], t["cpu_s"]),
+                        "k_last": exponent(t["n"].iloc[-2:], t["cpu_s"].iloc[-2:]),
+                        "cpu_s_largest": float(t["cpu_s"].iloc[-1]),
+                        "required": required,
+                    }
+                )
     return timings, pd.DataFrame(out)
 
 
@@ -305,8 +381,9 @@ def main(argv=None) -> int:
     ap.add_argument("--out", type=Path, default=OUT, help="folder for scaling.csv, scaling_exponents.csv, scaling.png")
     ap.add_argument("--repeats", type=int, default=None, help="best of this many (default 3, 1 with --quick)")
     ap.add_argument("--quick", action="store_true", help="tiny sizes: seconds, for the test")
-    ap.add_argument("--only", default="", help="comma-separated methods (default all: "
-                    + ", ".join(c.name for c in CASES) + ")")
+    ap.add_argument(
+        "--only", default="", help="comma-separated methods (default all: " + ", ".join(c.name for c in CASES) + ")"
+    )
     args = ap.parse_args(argv)
     wanted = [s for s in args.only.split(",") if s]
     unknown = sorted(set(wanted) - {c.name for c in CASES})

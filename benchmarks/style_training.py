@@ -32,8 +32,17 @@ import torch
 
 from motionvar.core import cmu_joint_map, cmu_skeleton
 from motionvar.du2022.style import (
-    FeatureScaler, FeatureSpace, TrainConfig, features_to_positions, gram, gram_distance, gram_distance_maps,
-    sample_features, style_joints, train_autoencoder, train_vae,
+    FeatureScaler,
+    FeatureSpace,
+    TrainConfig,
+    features_to_positions,
+    gram,
+    gram_distance,
+    gram_distance_maps,
+    sample_features,
+    style_joints,
+    train_autoencoder,
+    train_vae,
 )
 
 
@@ -50,8 +59,12 @@ def timed(fn, repeats: int) -> float:
 
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    ap.add_argument("--windows", type=int, default=4000, help="autoencoder windows (config style.autoencoder.max_windows)")
-    ap.add_argument("--clips", type=int, default=450, help="clips of a primitive (neutral walk_leftStance, 25 subjects)")
+    ap.add_argument(
+        "--windows", type=int, default=4000, help="autoencoder windows (config style.autoencoder.max_windows)"
+    )
+    ap.add_argument(
+        "--clips", type=int, default=450, help="clips of a primitive (neutral walk_leftStance, 25 subjects)"
+    )
     ap.add_argument("--ae-epochs", type=int, default=15)
     ap.add_argument("--vae-epochs", type=int, default=40)
     ap.add_argument("--cvae-epochs", type=int, default=20)
@@ -68,8 +81,10 @@ def main() -> None:
     one = TrainConfig(epochs=1, lr=1e-3, batch_size=64)
     ae_faithful = timed(lambda: train_autoencoder(windows, one), args.repeats)
     ae_holden = timed(lambda: train_autoencoder(windows, one, decoder_order="depool_conv"), args.repeats)
-    print(f"\n1. autoencoder: {ae_faithful:.2f} s per epoch over {args.windows} windows "
-          f"-> {args.ae_epochs} epochs ~ {ae_faithful * args.ae_epochs:.0f} s")
+    print(
+        f"\n1. autoencoder: {ae_faithful:.2f} s per epoch over {args.windows} windows "
+        f"-> {args.ae_epochs} epochs ~ {ae_faithful * args.ae_epochs:.0f} s"
+    )
 
     ae, _ = train_autoencoder(windows[:64], one)
     space = FeatureSpace(ae, FeatureScaler.fit(windows[:256].astype(float), layout.n_joints))
@@ -78,14 +93,19 @@ def main() -> None:
     vae_l10 = timed(lambda: train_vae(maps, cfg, n_samples=10), args.repeats)
     vae_l1 = timed(lambda: train_vae(maps, cfg, n_samples=1), args.repeats)
     cvae = timed(lambda: train_vae(maps, cfg, n_samples=10, style_maps=maps[0], alpha=200.0), args.repeats)
-    cvae_mean = timed(lambda: train_vae(maps, cfg, n_samples=10, style_maps=maps[0], alpha=200.0, gram_reduce="mean"),
-                      args.repeats)
+    cvae_mean = timed(
+        lambda: train_vae(maps, cfg, n_samples=10, style_maps=maps[0], alpha=200.0, gram_reduce="mean"), args.repeats
+    )
     sgd = TrainConfig(epochs=1, lr=1e-5, batch_size=32, optimizer="sgd")
     cvae_sgd = timed(lambda: train_vae(maps, sgd, n_samples=10, style_maps=maps[0], alpha=200.0), args.repeats)
-    print(f"   VAE (L = 10): {vae_l10:.2f} s per epoch over {args.clips} clips -> {args.vae_epochs} epochs "
-          f"~ {vae_l10 * args.vae_epochs:.0f} s")
-    print(f"   CVAE (L = 10, alpha = 200): {cvae:.2f} s per epoch -> {args.cvae_epochs} epochs "
-          f"~ {cvae * args.cvae_epochs:.0f} s; CVAE / VAE epoch = {cvae / vae_l10:.2f}")
+    print(
+        f"   VAE (L = 10): {vae_l10:.2f} s per epoch over {args.clips} clips -> {args.vae_epochs} epochs "
+        f"~ {vae_l10 * args.vae_epochs:.0f} s"
+    )
+    print(
+        f"   CVAE (L = 10, alpha = 200): {cvae:.2f} s per epoch -> {args.cvae_epochs} epochs "
+        f"~ {cvae * args.cvae_epochs:.0f} s; CVAE / VAE epoch = {cvae / vae_l10:.2f}"
+    )
 
     recon = torch.rand(10, 32, 256, T // 2, generator=gen, requires_grad=True)
     style = torch.rand(256, T // 2, generator=gen)
@@ -100,11 +120,15 @@ def main() -> None:
     with torch.no_grad():
         a = gram_distance(gram(recon.double()), gram(style.double()))
         b = gram_distance_maps(recon, style).double()
-    print(f"\n2. Gram style loss, 320 decoded maps: explicit {1e3 * t_exp:.1f} ms, factored {1e3 * t_fac:.1f} ms "
-          f"(explicit / factored = {t_exp / t_fac:.1f}x); largest relative difference {float(((a - b).abs() / a).max()):.1e}")
+    print(
+        f"\n2. Gram style loss, 320 decoded maps: explicit {1e3 * t_exp:.1f} ms, factored {1e3 * t_fac:.1f} ms "
+        f"(explicit / factored = {t_exp / t_fac:.1f}x); largest relative difference {float(((a - b).abs() / a).max()):.1e}"
+    )
     print(f"\n3. VAE epoch L = 10 / L = 1: {vae_l10 / vae_l1:.1f}x ({vae_l10:.2f} s vs {vae_l1:.2f} s)")
-    print(f"\n4. autoencoder epoch, depool-then-conv (Holden) / conv-then-depool (Eq. 5.2): "
-          f"{ae_holden / ae_faithful:.2f}x ({ae_holden:.2f} s vs {ae_faithful:.2f} s)")
+    print(
+        f"\n4. autoencoder epoch, depool-then-conv (Holden) / conv-then-depool (Eq. 5.2): "
+        f"{ae_holden / ae_faithful:.2f}x ({ae_holden:.2f} s vs {ae_faithful:.2f} s)"
+    )
 
     from motionvar.du2022.style import MotionVAE
 
@@ -113,10 +137,14 @@ def main() -> None:
     t_feat = timed(lambda: sample_features(vae, (256, T // 2), space, n, seed=0), args.repeats)
     feats = sample_features(vae, (256, T // 2), space, n, seed=0)
     t_pos = timed(lambda: features_to_positions(feats, layout), args.repeats)
-    print(f"\n5. sampling: {n / t_feat:,.0f} clips/s to features, {n / (t_feat + t_pos):,.0f} clips/s to joint "
-          f"positions ({n} clips of {T} frames; 10,000 samples of Table 5.2 ~ {10000 * t_feat / n:.1f} s a model)")
-    print(f"\n6. CVAE epoch, summed / averaged Gram: {cvae / cvae_mean:.2f}x; SGD / Adam: {cvae_sgd / cvae:.2f}x "
-          f"({cvae:.2f} s, {cvae_mean:.2f} s, {cvae_sgd:.2f} s)")
+    print(
+        f"\n5. sampling: {n / t_feat:,.0f} clips/s to features, {n / (t_feat + t_pos):,.0f} clips/s to joint "
+        f"positions ({n} clips of {T} frames; 10,000 samples of Table 5.2 ~ {10000 * t_feat / n:.1f} s a model)"
+    )
+    print(
+        f"\n6. CVAE epoch, summed / averaged Gram: {cvae / cvae_mean:.2f}x; SGD / Adam: {cvae_sgd / cvae:.2f}x "
+        f"({cvae:.2f} s, {cvae_mean:.2f} s, {cvae_sgd:.2f} s)"
+    )
 
 
 if __name__ == "__main__":

@@ -37,8 +37,13 @@ def provenance() -> dict[str, tuple[float, int, int]]:
 # cm per file unit, by folder. PyMO's unit is not documented: its hips stand ~33 units
 # high and its joints span ~52 units, which fits inches (84 and 132 cm).
 UNITS_CM = {
-    "cmu": CMU_UNIT_CM, "xia": CMU_UNIT_CM, "pymo": 2.54, "bandai": 1.0, "aalto": 1.0,
-    "dfki": 1.0, "dfki/markerless_steps": 0.1,
+    "cmu": CMU_UNIT_CM,
+    "xia": CMU_UNIT_CM,
+    "pymo": 2.54,
+    "bandai": 1.0,
+    "aalto": 1.0,
+    "dfki": 1.0,
+    "dfki/markerless_steps": 0.1,
 }
 
 

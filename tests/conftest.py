@@ -20,7 +20,11 @@ def run_snakemake(*args, cwd, timeout=900, env=None):
     """``python -m snakemake -s Snakefile ARGS`` in ``cwd`` (output captured)."""
     return subprocess.run(
         [sys.executable, "-m", "snakemake", "-s", SNAKEFILE, *args],
-        cwd=cwd, capture_output=True, text=True, timeout=timeout, env=env,
+        cwd=cwd,
+        capture_output=True,
+        text=True,
+        timeout=timeout,
+        env=env,
     )
 
 

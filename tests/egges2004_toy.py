@@ -17,7 +17,11 @@ SHIFT_CM = {"left": 4.0, "both": 0.0, "right": -4.0}  # the pelvis moves over th
 
 
 def toy_recording(
-    sequence: list[str], rest_s: list[float], seed: int = 0, fps: float = 30.0, shift_s: float = 1.0,
+    sequence: list[str],
+    rest_s: list[float],
+    seed: int = 0,
+    fps: float = 30.0,
+    shift_s: float = 1.0,
     lean: float = 0.0,
 ) -> tuple[Motion, list[tuple[str, int, int]]]:
     """A clip resting in each category of ``sequence`` for the given times, joined by
@@ -39,7 +43,9 @@ def toy_recording(
     x = np.concatenate(xs)
     T = len(x)
     t = np.arange(T) / fps
-    breath = 0.01 * np.sin(2 * np.pi * 0.25 * t + rng.uniform(0, 6)) + 0.003 * rng.standard_normal(T).cumsum() / np.sqrt(T)
+    breath = 0.01 * np.sin(2 * np.pi * 0.25 * t + rng.uniform(0, 6)) + 0.003 * rng.standard_normal(
+        T
+    ).cumsum() / np.sqrt(T)
     sway = 0.3 * np.sin(2 * np.pi * 0.4 * t + rng.uniform(0, 6))
     x = x + sway
     rot = qidentity((T, sk.n_joints))
@@ -70,7 +76,8 @@ def toy_dataset(folder: Path, subjects: int = 3, clips: int = 3) -> Path:
             m, truth = toy_recording(SEQUENCES[(s + c) % 3], rest, seed=10 * s + c, lean=0.05 * s)
             motions.append(m)
             postures = ";".join(f"{n}:{a}:{b}" for n, a, b in truth)
-            rows.append({"clip_id": f"idle_{s}_{c}", "subject": f"{s + 1:02d}", "behaviour": "idle",
-                         "idle_postures": postures})
+            rows.append(
+                {"clip_id": f"idle_{s}_{c}", "subject": f"{s + 1:02d}", "behaviour": "idle", "idle_postures": postures}
+            )
     save_dataset(folder, motions, pd.DataFrame(rows))
     return folder

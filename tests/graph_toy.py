@@ -21,9 +21,14 @@ def toy_clips(n: int = 16, seed: int = 0) -> list[Motion]:
         a, b = rng.uniform(0.3, 0.8), rng.uniform(-0.3, 0.3)
         rot = qidentity((T, J))
         rot[:, 0] = quat_about_axis(np.array([0.0, 1.0, 0.0]), np.pi / 2)  # face +x (aligned)
-        for name, amp, ax in (("LeftUpLeg", a, (1, 0, 0)), ("RightUpLeg", -a, (1, 0, 0)), ("LeftArm", b, (0, 0, 1)),
-                              ("RightForeArm", a * b, (0, 1, 0)), ("Spine", 0.2 * b, (1, 0, 0))):
-            rot[:, sk.index(name)] = quat_about_axis(np.array(ax, float), amp * np.sin(np.pi * t ** 1.3))
+        for name, amp, ax in (
+            ("LeftUpLeg", a, (1, 0, 0)),
+            ("RightUpLeg", -a, (1, 0, 0)),
+            ("LeftArm", b, (0, 0, 1)),
+            ("RightForeArm", a * b, (0, 1, 0)),
+            ("Spine", 0.2 * b, (1, 0, 0)),
+        ):
+            rot[:, sk.index(name)] = quat_about_axis(np.array(ax, float), amp * np.sin(np.pi * t**1.3))
         root = np.stack([100 * a * t, 90 + 2 * np.sin(2 * np.pi * t), np.zeros(T)], -1)
         out.append(Motion(skeleton=sk, root_pos=root, rotations=rot, fps=120.0))
     return out

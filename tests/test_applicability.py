@@ -10,7 +10,7 @@ import pandas as pd
 import pytest
 from rule_scripts import FakeSnakemake, Named, run
 
-from motionvar.applicability import Need, Requirement, applicability_table, unmet
+from motionvar.applicability import Need, applicability_table, unmet
 from motionvar.claims import Claim, NotApplicable, evaluation_source, not_applicable_result
 from motionvar.du2022.requirements import fda_requirements, graph_requirements, style_requirements
 from motionvar.egges2004.requirements import requirements as egges2004_requirements
@@ -23,22 +23,29 @@ def _meta(rows):
     return meta.assign(n_frames="360", fps="120")  # 3-s clips
 
 
-DATA = _meta([
-    ("w1", "s1", "walk", "neutral", "forward", ""), ("w2", "s2", "walk", "neutral", "forward", ""),
-    ("w3", "s1", "walk", "proud", "forward", ""), ("r1", "s1", "run", "neutral", "", ""),
-])
-PREP = _meta([
-    ("w1_0", "s1", "walk", "neutral", "forward", "walk_leftStance"),
-    ("w1_1", "s1", "walk", "neutral", "forward", "walk_rightStance"),
-    ("w2_0", "s2", "walk", "neutral", "forward", "walk_leftStance"),
-    ("w3_0", "s1", "walk", "proud", "forward", "walk_leftStance"),
-])
+DATA = _meta(
+    [
+        ("w1", "s1", "walk", "neutral", "forward", ""),
+        ("w2", "s2", "walk", "neutral", "forward", ""),
+        ("w3", "s1", "walk", "proud", "forward", ""),
+        ("r1", "s1", "run", "neutral", "", ""),
+    ]
+)
+PREP = _meta(
+    [
+        ("w1_0", "s1", "walk", "neutral", "forward", "walk_leftStance"),
+        ("w1_1", "s1", "walk", "neutral", "forward", "walk_rightStance"),
+        ("w2_0", "s2", "walk", "neutral", "forward", "walk_leftStance"),
+        ("w3_0", "s1", "walk", "proud", "forward", "walk_leftStance"),
+    ]
+)
 
 
 def test_unmet_names_what_is_missing_and_why():
     need = Need(what="idle recordings", why="Egges 2004 models standing", where={"behaviour": ("idle",)}, min_count=2)
-    assert unmet(need, DATA) == ("needs at least 2 idle recordings (clips with behaviour idle), the dataset has none: "
-                                 "Egges 2004 models standing")
+    assert unmet(need, DATA) == (
+        "needs at least 2 idle recordings (clips with behaviour idle), the dataset has none: Egges 2004 models standing"
+    )
     walks = Need(what="walks", why="w", where={"behaviour": ("walk",)}, min_count=2, min_subjects=3)
     assert "from at least 3 subjects, the dataset has 2" in unmet(walks, DATA)
     variants = Need(what="walks", why="w", where={"behaviour": ("walk",)}, min_distinct={"variant": 2})
@@ -49,11 +56,13 @@ def test_unmet_names_what_is_missing_and_why():
 
 
 def test_every_paper_declares_its_evaluations_and_decides_from_the_data():
-    reqs = [*ma2010_requirements(["neutral"], ["forward"]),
-            *fda_requirements(["walk"], 1, ["walk_leftStance"], "pick_reach"),
-            *graph_requirements(["walk_leftStance"], ["walk_leftStance"], ["walk_leftStance"], "pick_reach", 1),
-            *style_requirements(["proud"], ["walk_leftStance"], ["walk_leftStance"], "walk_leftStance", 1),
-            *egges2004_requirements(1)]
+    reqs = [
+        *ma2010_requirements(["neutral"], ["forward"]),
+        *fda_requirements(["walk"], 1, ["walk_leftStance"], "pick_reach"),
+        *graph_requirements(["walk_leftStance"], ["walk_leftStance"], ["walk_leftStance"], "pick_reach", 1),
+        *style_requirements(["proud"], ["walk_leftStance"], ["walk_leftStance"], "walk_leftStance", 1),
+        *egges2004_requirements(1),
+    ]
     table = applicability_table(reqs, {"data": DATA, "prep": PREP}).set_index("evaluation")
     assert table.loc["ma2010_fig6", "applicable"] and table.loc["du2022_fig3_10", "applicable"]
     assert table.loc["du2022_table5_1", "applicable"] and table.loc["du2022_fig4_12", "applicable"]
@@ -73,15 +82,24 @@ def test_not_applicable_result_is_one_claim_with_the_reason():
         Claim("ma2010.x", "ma2010", "Fig. 6", "s", "p", "m", "not applicable", note="")
 
 
-@pytest.mark.parametrize("ev, source", [("ma2010_fig6", "Fig. 6"), ("du2022_sec4_6_1", "Sec. 4.6.1"),
-                                        ("du2022_table5_1", "Table 5.1"), ("egges2004_speed", "egges2004_speed")])
+@pytest.mark.parametrize(
+    "ev, source",
+    [
+        ("ma2010_fig6", "Fig. 6"),
+        ("du2022_sec4_6_1", "Sec. 4.6.1"),
+        ("du2022_table5_1", "Table 5.1"),
+        ("egges2004_speed", "egges2004_speed"),
+    ],
+)
 def test_evaluation_source(ev, source):
     assert evaluation_source(ev) == source
 
 
 def test_summary_counts_undecided_verdicts_apart():
-    claims = [Claim("ma2010.a", "ma2010", "Fig. 6", "s", "p", "m", "reproduced"),
-              not_applicable_result("ma2010_fig8", "one subject").claims[0]]
+    claims = [
+        Claim("ma2010.a", "ma2010", "Fig. 6", "s", "p", "m", "reproduced"),
+        not_applicable_result("ma2010_fig8", "one subject").claims[0],
+    ]
     table = pd.DataFrame([c.__dict__ for c in claims])
     html = claims_html(table, {"ma2010": "Ma et al. 2010"})
     assert "not decided:" in html and "1 not applicable" in html and "1 reproduced" in html
@@ -91,8 +109,12 @@ def test_an_evaluation_that_raises_not_applicable_writes_its_outputs(tmp_path):
     def main(snakemake):
         raise NotApplicable("only 1 gait cycle; leave-one-out needs 3")
 
-    out = Named(table=str(tmp_path / "t.csv"), figure=str(tmp_path / "f.png"), claims=str(tmp_path / "c.json"),
-                gif=str(tmp_path / "a.gif"))
+    out = Named(
+        table=str(tmp_path / "t.csv"),
+        figure=str(tmp_path / "f.png"),
+        claims=str(tmp_path / "c.json"),
+        gif=str(tmp_path / "a.gif"),
+    )
     run(FakeSnakemake(tmp_path, "ma2010_fig6", output=out, wildcards=Named(dataset="xia")), main)
     (claim,) = json.loads((tmp_path / "c.json").read_text())
     assert claim["verdict"] == "not applicable" and "leave-one-out needs 3" in claim["note"] and "xia" in claim["note"]

@@ -3,9 +3,9 @@
 import numpy as np
 import pytest
 
+from motionvar.core.noise import perlin_noise
 from motionvar.ma2010.baselines.dbn import LauDBN
 from motionvar.ma2010.baselines.gplvm import helix_trajectory
-from motionvar.core.noise import perlin_noise
 from motionvar.ma2010.baselines.perlin import add_rotation_noise
 from motionvar.ma2010.baselines.rbf import RBFInterpolation, cubic_bspline
 

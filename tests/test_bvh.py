@@ -49,11 +49,14 @@ Frames: 3
 Frame Time: 0.02
 """
 # 18 channels: Hips 6, Chest 3, Arm 6 (positions x, z, y), Leg 3. Angles include wrapped ones.
-FRAMES = np.array([
-    [1, 90, 2, 10, 20, 30, 350, 5, 15, 5.5, 0.25, -0.5, 30, 40, 50, 0, 0, 359],
-    [2, 91, 3, 11, 21, 31, 359, 6, 16, 5.6, 0.25, -0.4, 31, 41, 51, 1, 2, 1],
-    [3, 92, 4, 12, 22, 32, 3, 7, 17, 5.7, 0.25, -0.3, 32, 42, 52, 2, 4, 3],
-], dtype=float)
+FRAMES = np.array(
+    [
+        [1, 90, 2, 10, 20, 30, 350, 5, 15, 5.5, 0.25, -0.5, 30, 40, 50, 0, 0, 359],
+        [2, 91, 3, 11, 21, 31, 359, 6, 16, 5.6, 0.25, -0.4, 31, 41, 51, 1, 2, 1],
+        [3, 92, 4, 12, 22, 32, 3, 7, 17, 5.7, 0.25, -0.3, 32, 42, 52, 2, 4, 3],
+    ],
+    dtype=float,
+)
 
 
 def small_bvh(tmp_path: Path, header: str = HEADER, frames: np.ndarray | str = FRAMES, name: str = "s.bvh") -> Path:
@@ -101,8 +104,10 @@ def test_read_small_file_values(tmp_path):
 
 
 def test_root_without_position_channels(tmp_path):
-    header = HEADER.replace("OFFSET 0 0 0\n  CHANNELS 6 Xposition Yposition Zposition Zrotation Yrotation Xrotation",
-                            "OFFSET 1 2 3\n  CHANNELS 3 Zrotation Yrotation Xrotation")
+    header = HEADER.replace(
+        "OFFSET 0 0 0\n  CHANNELS 6 Xposition Yposition Zposition Zrotation Yrotation Xrotation",
+        "OFFSET 1 2 3\n  CHANNELS 3 Zrotation Yrotation Xrotation",
+    )
     path = small_bvh(tmp_path, header, FRAMES[:, 3:])
     m = read_bvh(path)
     assert m.skeleton.position_channels[0] is False
@@ -132,12 +137,23 @@ def test_round_trip_small_file_reproduces_layout(tmp_path):
     assert m2.skeleton.names == m.skeleton.names
     assert m2.skeleton.rotation_orders == m.skeleton.rotation_orders
     assert m2.skeleton.position_channels == m.skeleton.position_channels
-    assert {j: o.tolist() for j, o in m2.skeleton.end_sites.items()} == {j: o.tolist() for j, o in m.skeleton.end_sites.items()}
+    assert {j: o.tolist() for j, o in m2.skeleton.end_sites.items()} == {
+        j: o.tolist() for j, o in m.skeleton.end_sites.items()
+    }
     assert np.allclose(m2.positions(), m.positions(), atol=1e-5)
     assert same_rotations(m2.rotations, m.rotations, 1e-6)
     assert np.allclose(m2.translations, m.translations, atol=1e-6, equal_nan=True)
     channels = [line.split() for line in out.read_text().splitlines() if "CHANNELS" in line]
-    assert channels[2] == ["CHANNELS", "6", "Xposition", "Yposition", "Zposition", "Xrotation", "Yrotation", "Zrotation"]
+    assert channels[2] == [
+        "CHANNELS",
+        "6",
+        "Xposition",
+        "Yposition",
+        "Zposition",
+        "Xrotation",
+        "Yrotation",
+        "Zrotation",
+    ]
     assert channels[3] == ["CHANNELS", "3", "Yrotation", "Xrotation", "Zrotation"]
 
 
@@ -164,9 +180,12 @@ def test_round_trip_random_cmu_motion(tmp_path):
 
 def test_non_depth_first_joint_order_writes_correct_channels(tmp_path):
     # breadth-first order: A(root), B, C children of A, D child of B
-    sk = Skeleton(names=("A", "B", "C", "D"), parents=np.array([-1, 0, 0, 1]),
-                  offsets=np.array([[0, 0, 0], [0, 1, 0], [1, 0, 0], [0, 2, 0]], dtype=float),
-                  rotation_orders=("ZYX", "XYZ", "ZXY", "YZX"))
+    sk = Skeleton(
+        names=("A", "B", "C", "D"),
+        parents=np.array([-1, 0, 0, 1]),
+        offsets=np.array([[0, 0, 0], [0, 1, 0], [1, 0, 0], [0, 2, 0]], dtype=float),
+        rotation_orders=("ZYX", "XYZ", "ZXY", "YZX"),
+    )
     rng = np.random.default_rng(1)
     m = Motion(sk, rng.normal(size=(5, 3)), Q.qnormalize(rng.normal(size=(5, 4, 4))), fps=30.0)
     write_bvh(tmp_path / "bfs.bvh", m)
@@ -215,13 +234,22 @@ BAD_CASES = {
     "empty file": ("", 1, "missing HIERARCHY"),
     "missing MOTION": (FULL.replace("MOTION\n", ""), line_of(FULL, "Frames:") - 1, "missing MOTION"),
     "missing MOTION at end of file": (HEADER.split("MOTION")[0], line_of(FULL, "MOTION") - 1, "missing MOTION"),
-    "unclosed brace": (FULL.replace("      }\n    }\n  }\n", "      }\n    }\n", 1), line_of(FULL, "MOTION") - 1,
-                       "unbalanced braces"),
+    "unclosed brace": (
+        FULL.replace("      }\n    }\n  }\n", "      }\n    }\n", 1),
+        line_of(FULL, "MOTION") - 1,
+        "unbalanced braces",
+    ),
     "extra closing brace": (FULL.replace("}\nMOTION", "}\n}\nMOTION"), line_of(FULL, "MOTION"), "unbalanced braces"),
-    "frame with too few values": (FULL.replace(GOOD_BODY.splitlines()[1], GOOD_BODY.splitlines()[1].rsplit(" ", 1)[0]),
-                                  FRAME1 + 1, "frame 2 has 17 values"),
-    "frame with too many values": (FULL.replace(GOOD_BODY.splitlines()[2], GOOD_BODY.splitlines()[2] + " 7"),
-                                   FRAME1 + 2, "frame 3 has 19 values"),
+    "frame with too few values": (
+        FULL.replace(GOOD_BODY.splitlines()[1], GOOD_BODY.splitlines()[1].rsplit(" ", 1)[0]),
+        FRAME1 + 1,
+        "frame 2 has 17 values",
+    ),
+    "frame with too many values": (
+        FULL.replace(GOOD_BODY.splitlines()[2], GOOD_BODY.splitlines()[2] + " 7"),
+        FRAME1 + 2,
+        "frame 3 has 19 values",
+    ),
     "non-numeric value": (_bad_value(FULL, "abc"), FRAME1 + 1, "non-numeric value 'abc'"),
     "non-finite value": (_bad_value(FULL, "nan"), FRAME1 + 1, "non-finite value 'nan'"),
     "fewer frames than Frames:": (FULL.replace("Frames: 3", "Frames: 5"), FRAME1 + 2, "ends after 3 frames"),
@@ -230,22 +258,47 @@ BAD_CASES = {
     "fractional Frames:": (FULL.replace("Frames: 3", "Frames: 2.5"), line_of(FULL, "Frames:"), "bad 'Frames:'"),
     "missing Frames:": (_drop_line(FULL, "Frames:"), line_of(FULL, "Frames:"), "missing 'Frames:'"),
     "missing Frame Time": (_drop_line(FULL, "Frame Time"), line_of(FULL, "Frame Time"), "missing 'Frame Time:'"),
-    "zero Frame Time": (FULL.replace("Frame Time: 0.02", "Frame Time: 0"), line_of(FULL, "Frame Time"), "bad 'Frame Time:'"),
-    "CHANNELS count not a number": (FULL.replace("CHANNELS 3 Zrotation Xrotation", "CHANNELS three Zrotation Xrotation"),
-                                    line_of(FULL, "CHANNELS 3 Zrotation Xrotation"), "bad CHANNELS count 'three'"),
-    "CHANNELS count too large": (FULL.replace("CHANNELS 3 Zrotation Xrotation", "CHANNELS 4 Zrotation Xrotation"),
-                                 line_of(FULL, "JOINT Arm"), "bad CHANNELS count"),
-    "CHANNELS count too small": (FULL.replace("CHANNELS 3 Zrotation Xrotation", "CHANNELS 2 Zrotation Xrotation"),
-                                 line_of(FULL, "CHANNELS 3 Zrotation Xrotation"), "followed by more channel names"),
-    "two rotation channels": (FULL.replace("CHANNELS 3 Yrotation Xrotation Zrotation", "CHANNELS 2 Yrotation Xrotation"),
-                              line_of(FULL, "CHANNELS 3 Yrotation"), "unsupported CHANNELS 2"),
-    "position channels only": (FULL.replace("CHANNELS 3 Yrotation Xrotation Zrotation",
-                                            "CHANNELS 3 Xposition Yposition Zposition"),
-                               line_of(FULL, "CHANNELS 3 Yrotation"), "three rotation channels"),
-    "repeated rotation axis": (FULL.replace("CHANNELS 3 Yrotation Xrotation Zrotation", "CHANNELS 3 Yrotation Xrotation Xrotation"),
-                               line_of(FULL, "CHANNELS 3 Yrotation"), "unsupported CHANNELS"),
+    "zero Frame Time": (
+        FULL.replace("Frame Time: 0.02", "Frame Time: 0"),
+        line_of(FULL, "Frame Time"),
+        "bad 'Frame Time:'",
+    ),
+    "CHANNELS count not a number": (
+        FULL.replace("CHANNELS 3 Zrotation Xrotation", "CHANNELS three Zrotation Xrotation"),
+        line_of(FULL, "CHANNELS 3 Zrotation Xrotation"),
+        "bad CHANNELS count 'three'",
+    ),
+    "CHANNELS count too large": (
+        FULL.replace("CHANNELS 3 Zrotation Xrotation", "CHANNELS 4 Zrotation Xrotation"),
+        line_of(FULL, "JOINT Arm"),
+        "bad CHANNELS count",
+    ),
+    "CHANNELS count too small": (
+        FULL.replace("CHANNELS 3 Zrotation Xrotation", "CHANNELS 2 Zrotation Xrotation"),
+        line_of(FULL, "CHANNELS 3 Zrotation Xrotation"),
+        "followed by more channel names",
+    ),
+    "two rotation channels": (
+        FULL.replace("CHANNELS 3 Yrotation Xrotation Zrotation", "CHANNELS 2 Yrotation Xrotation"),
+        line_of(FULL, "CHANNELS 3 Yrotation"),
+        "unsupported CHANNELS 2",
+    ),
+    "position channels only": (
+        FULL.replace("CHANNELS 3 Yrotation Xrotation Zrotation", "CHANNELS 3 Xposition Yposition Zposition"),
+        line_of(FULL, "CHANNELS 3 Yrotation"),
+        "three rotation channels",
+    ),
+    "repeated rotation axis": (
+        FULL.replace("CHANNELS 3 Yrotation Xrotation Zrotation", "CHANNELS 3 Yrotation Xrotation Xrotation"),
+        line_of(FULL, "CHANNELS 3 Yrotation"),
+        "unsupported CHANNELS",
+    ),
     "joint without OFFSET": (_drop_line(FULL, "OFFSET 2 -3 0"), line_of(FULL, "JOINT Leg"), "no OFFSET"),
-    "bad OFFSET": (FULL.replace("OFFSET 2 -3 0", "OFFSET 2 -3 x"), line_of(FULL, "OFFSET 2 -3 0"), "OFFSET needs 3 numbers"),
+    "bad OFFSET": (
+        FULL.replace("OFFSET 2 -3 0", "OFFSET 2 -3 x"),
+        line_of(FULL, "OFFSET 2 -3 0"),
+        "OFFSET needs 3 numbers",
+    ),
     "duplicate joint name": (FULL.replace("JOINT Leg", "JOINT Chest"), line_of(FULL, "JOINT Leg"), "appears twice"),
     "second ROOT": (FULL.replace("}\nMOTION", "}\nROOT Other\nMOTION"), line_of(FULL, "MOTION"), "second ROOT"),
 }
@@ -340,9 +393,16 @@ def test_real_wrapped_angles_give_the_unwrapped_rotations():
 
 # ---- edge cases a user met (issue: real data end to end) ------------------------------
 
+
 def _chain_bvh(depth: int) -> str:
     """A chain of ``depth`` joints below the root, one frame."""
-    lines = ["HIERARCHY", "ROOT J0", "{", "OFFSET 0 0 0", "CHANNELS 6 Xposition Yposition Zposition Zrotation Xrotation Yrotation"]
+    lines = [
+        "HIERARCHY",
+        "ROOT J0",
+        "{",
+        "OFFSET 0 0 0",
+        "CHANNELS 6 Xposition Yposition Zposition Zrotation Xrotation Yrotation",
+    ]
     for d in range(1, depth + 1):
         lines += [f"JOINT J{d}", "{", "OFFSET 0 1 0", "CHANNELS 3 Zrotation Xrotation Yrotation"]
     lines += ["End Site", "{", "OFFSET 0 1 0", "}"] + ["}"] * (depth + 1)

@@ -12,7 +12,14 @@ from bvh_files import real_bvh_dir
 from motionvar.core import CMU_UNIT_CM, JointMap, Motion, Skeleton, cmu_joint_map, cmu_skeleton
 from motionvar.core import quaternions as Q
 from motionvar.io import (
-    DatasetError, export_clip_bvh, import_bvh_folder, load_dataset, load_joint_map, read_bvh, save_dataset, write_bvh,
+    DatasetError,
+    export_clip_bvh,
+    import_bvh_folder,
+    load_dataset,
+    load_joint_map,
+    read_bvh,
+    save_dataset,
+    write_bvh,
 )
 
 MAPS = Path(__file__).resolve().parents[1] / "config/joint_maps"
@@ -43,8 +50,18 @@ def folder(tmp_path) -> Path:
 
 def test_import_folder(folder):
     motions, meta = import_bvh_folder(folder, "labels.csv", unit_cm=CMU_UNIT_CM, joint_map=cmu_joint_map())
-    assert list(meta.columns) == ["clip_id", "subject", "behaviour", "style", "variant", "primitive", "source_file",
-                                  "source_behaviour", "source_style", "take"]
+    assert list(meta.columns) == [
+        "clip_id",
+        "subject",
+        "behaviour",
+        "style",
+        "variant",
+        "primitive",
+        "source_file",
+        "source_behaviour",
+        "source_style",
+        "take",
+    ]
     assert meta["source_behaviour"].tolist() == ["walk", "walk", "run"]
     assert meta["clip_id"].tolist() == ["a", "b", "c"]
     assert meta["subject"].tolist() == ["02", "02", "07"]
@@ -94,8 +111,10 @@ def _labels(folder: Path, text: str) -> Path:
 LABEL_ERRORS = {
     # name: (labels CSV text, expected message after "{csv}")
     "missing required column": ("file,subject,style\na.bvh,02,neutral\n", ": missing required column 'behaviour'"),
-    "labelled file missing": ("file,subject,behaviour,style\na.bvh,02,walk,x\nzz.bvh,02,walk,x\n",
-                              ":3: labelled file 'zz.bvh' does not exist"),
+    "labelled file missing": (
+        "file,subject,behaviour,style\na.bvh,02,walk,x\nzz.bvh,02,walk,x\n",
+        ":3: labelled file 'zz.bvh' does not exist",
+    ),
     "empty file entry": ("file,subject,behaviour,style\n,02,walk,x\n", ":2: empty 'file' entry"),
     "no rows": ("file,subject,behaviour,style\n", ": no clips listed"),
     "blank CSV": ("", ": not a readable CSV"),
@@ -195,9 +214,12 @@ def test_real_markerless_steps_folder(tmp_path):
 def test_real_cmu_folder_drops_tpose_and_rejects_other_rig(tmp_path):
     folder = _real("cmu")
     csv = tmp_path / "labels.csv"
-    csv.write_text("file,subject,behaviour,style\n02_01.bvh,02,walk,neutral\n02_03.bvh,02,run,neutral\n"
-                   "09_01.bvh,09,run,neutral\n")
-    motions, meta = import_bvh_folder(folder, csv, unit_cm=CMU_UNIT_CM, drop_first_frame=True, joint_map=cmu_joint_map())
+    csv.write_text(
+        "file,subject,behaviour,style\n02_01.bvh,02,walk,neutral\n02_03.bvh,02,run,neutral\n09_01.bvh,09,run,neutral\n"
+    )
+    motions, meta = import_bvh_folder(
+        folder, csv, unit_cm=CMU_UNIT_CM, drop_first_frame=True, joint_map=cmu_joint_map()
+    )
     assert [m.n_frames for m in motions] == [343, 173, 148]
     # the cgspeed T-pose frame is gone: the first remaining frame is close to the next one
     raw = read_bvh(folder / "02_01.bvh", scale=CMU_UNIT_CM)
@@ -233,13 +255,22 @@ def test_behaviour_vocabulary_is_the_segmenters():
 
 
 def test_aliases_map_the_source_words_and_keep_them(folder):
-    _labels(folder, "file,subject,behaviour,style\na.bvh,02,walk_step,normal\nb.bvh,02,sidestep_left,sexy\n"
-                    "sub/c.bvh,07,jog,normal\n")
+    _labels(
+        folder,
+        "file,subject,behaviour,style\na.bvh,02,walk_step,normal\nb.bvh,02,sidestep_left,sexy\n"
+        "sub/c.bvh,07,jog,normal\n",
+    )
     _, meta = import_bvh_folder(
-        folder, "labels.csv", unit_cm=CMU_UNIT_CM,
-        behaviour_aliases={"walk_step": "walk", "sidestep_left": {"behaviour": "sidestep", "variant": "left"},
-                           "jog": "run"},
-        style_aliases={"sexy": "female"}, neutral_style="normal",
+        folder,
+        "labels.csv",
+        unit_cm=CMU_UNIT_CM,
+        behaviour_aliases={
+            "walk_step": "walk",
+            "sidestep_left": {"behaviour": "sidestep", "variant": "left"},
+            "jog": "run",
+        },
+        style_aliases={"sexy": "female"},
+        neutral_style="normal",
     )
     assert meta["behaviour"].tolist() == ["walk", "sidestep", "run"]
     assert meta["variant"].tolist() == ["", "left", ""]
@@ -250,8 +281,10 @@ def test_aliases_map_the_source_words_and_keep_them(folder):
 
 def test_behaviours_no_paper_uses_are_left_out_unread(folder, caplog):
     (folder / "broken.bvh").write_text("not a BVH file")  # left out, so never parsed
-    _labels(folder, "file,subject,behaviour,style\na.bvh,02,walk,x\nb.bvh,02,jump,x\nbroken.bvh,02,kick,x\n"
-                    "sub/c.bvh,02,jump,x\n")
+    _labels(
+        folder,
+        "file,subject,behaviour,style\na.bvh,02,walk,x\nb.bvh,02,jump,x\nbroken.bvh,02,kick,x\nsub/c.bvh,02,jump,x\n",
+    )
     with caplog.at_level("WARNING"):
         motions, meta = import_bvh_folder(folder, "labels.csv", unit_cm=CMU_UNIT_CM)
     assert meta["clip_id"].tolist() == ["a"] and len(motions) == 1
@@ -260,18 +293,32 @@ def test_behaviours_no_paper_uses_are_left_out_unread(folder, caplog):
 
 LABEL_WORD_ERRORS = {
     # name: (labels CSV rows, import keyword arguments, expected message)
-    "no behaviour left": ("a.bvh,02,walk_step,x\n", {},
-                          "no clip has a behaviour the papers use (idle, pick, place, run, sidestep, walk); found "
-                          "walk_step: map the source's words with behaviour_aliases"),
-    "alias to an unknown behaviour": ("a.bvh,02,walk_step,x\n", {"behaviour_aliases": {"walk_step": "stroll"}},
-                                      "behaviour_aliases: walk_step -> 'stroll' is not a behaviour the papers use"),
-    "malformed alias": ("a.bvh,02,walk_step,x\n", {"behaviour_aliases": {"walk_step": {"variant": "l"}}},
-                        "behaviour_aliases: walk_step: expected a behaviour or"),
-    "variant clash": ("a.bvh,02,walk,x,\nb.bvh,02,side_l,x,right\n",
-                      {"behaviour_aliases": {"side_l": {"behaviour": "sidestep", "variant": "left"}}},
-                      "labels.csv:3: variant 'right' contradicts behaviour_aliases (side_l -> variant 'left')"),
-    "neutral twice": ("a.bvh,02,walk,normal\n", {"neutral_style": "normal", "style_aliases": {"normal": "calm"}},
-                      "neutral_style 'normal' is also in style_aliases (-> 'calm')"),
+    "no behaviour left": (
+        "a.bvh,02,walk_step,x\n",
+        {},
+        "no clip has a behaviour the papers use (idle, pick, place, run, sidestep, walk); found "
+        "walk_step: map the source's words with behaviour_aliases",
+    ),
+    "alias to an unknown behaviour": (
+        "a.bvh,02,walk_step,x\n",
+        {"behaviour_aliases": {"walk_step": "stroll"}},
+        "behaviour_aliases: walk_step -> 'stroll' is not a behaviour the papers use",
+    ),
+    "malformed alias": (
+        "a.bvh,02,walk_step,x\n",
+        {"behaviour_aliases": {"walk_step": {"variant": "l"}}},
+        "behaviour_aliases: walk_step: expected a behaviour or",
+    ),
+    "variant clash": (
+        "a.bvh,02,walk,x,\nb.bvh,02,side_l,x,right\n",
+        {"behaviour_aliases": {"side_l": {"behaviour": "sidestep", "variant": "left"}}},
+        "labels.csv:3: variant 'right' contradicts behaviour_aliases (side_l -> variant 'left')",
+    ),
+    "neutral twice": (
+        "a.bvh,02,walk,normal\n",
+        {"neutral_style": "normal", "style_aliases": {"normal": "calm"}},
+        "neutral_style 'normal' is also in style_aliases (-> 'calm')",
+    ),
     "bad mixed_rigs": ("a.bvh,02,walk,x\n", {"mixed_rigs": "majority"}, "mixed_rigs: 'majority' is not one of"),
 }
 
@@ -363,14 +410,21 @@ STEP_NAMES = {"0": "walk_start", 2: "walk_rightStance", "3": "walk_leftStance"} 
 
 
 def _step_labels(folder: Path, labels: tuple[str, str, str]) -> Path:
-    return _labels(folder, "file,subject,behaviour,style,primitive_label\n"
-                   + "".join(f"{f},02,walk_step,x,{k}\n" for f, k in zip(["a.bvh", "b.bvh", "sub/c.bvh"], labels)))
+    return _labels(
+        folder,
+        "file,subject,behaviour,style,primitive_label\n"
+        + "".join(f"{f},02,walk_step,x,{k}\n" for f, k in zip(["a.bvh", "b.bvh", "sub/c.bvh"], labels)),
+    )
 
 
 def test_primitive_labels_give_primitive_and_whole_clip_segments(folder):
     _step_labels(folder, ("0", " 2", "3"))
     motions, meta = import_bvh_folder(
-        folder, "labels.csv", unit_cm=CMU_UNIT_CM, drop_first_frame=True, behaviour_aliases={"walk_step": "walk"},
+        folder,
+        "labels.csv",
+        unit_cm=CMU_UNIT_CM,
+        drop_first_frame=True,
+        behaviour_aliases={"walk_step": "walk"},
         primitive_labels={"column": "primitive_label", "names": STEP_NAMES},
     )
     assert meta["primitive"].tolist() == ["walk_start", "walk_rightStance", "walk_leftStance"]
@@ -388,8 +442,13 @@ def test_whole_clip_segments_feed_ground_truth_prep(folder, tmp_path):
 
     write_bvh(folder / "b.bvh", cmu_motion(1, frames=60), scale=CMU_UNIT_CM)
     _step_labels(folder, ("0", "2", "3"))
-    motions, meta = import_bvh_folder(folder, "labels.csv", unit_cm=CMU_UNIT_CM, behaviour_aliases={"walk_step": "walk"},
-                                      primitive_labels={"column": "primitive_label", "names": STEP_NAMES})
+    motions, meta = import_bvh_folder(
+        folder,
+        "labels.csv",
+        unit_cm=CMU_UNIT_CM,
+        behaviour_aliases={"walk_step": "walk"},
+        primitive_labels={"column": "primitive_label", "names": STEP_NAMES},
+    )
     opts = PrepOptions(use_ground_truth_segments=True, min_primitive_s=0.2)  # 12 frames at 120 fps = 0.1 s: dropped
     save_dataset(tmp_path / "packed", motions, meta)
     out = preprocess_dataset(load_dataset(tmp_path / "packed"), cmu_joint_map(), opts)
@@ -401,16 +460,28 @@ def test_whole_clip_segments_feed_ground_truth_prep(folder, tmp_path):
 
 PRIMITIVE_LABEL_ERRORS = {
     # name: (labels of a, b, c; option; expected message)
-    "unmapped label": (("0", "2", "7"), {"column": "primitive_label", "names": STEP_NAMES},
-                       "labels.csv:4: primitive_label '7' is not in primitive_labels.names "
-                       "(0 -> walk_start, 2 -> walk_rightStance, 3 -> walk_leftStance)"),
-    "empty label": (("0", "", "3"), {"column": "primitive_label", "names": STEP_NAMES},
-                    "labels.csv:3: primitive_label '' is not in primitive_labels.names"),
-    "absent column": (("0", "2", "3"), {"column": "step", "names": STEP_NAMES},
-                      "labels.csv: primitive_labels.column 'step' is not a column"),
+    "unmapped label": (
+        ("0", "2", "7"),
+        {"column": "primitive_label", "names": STEP_NAMES},
+        "labels.csv:4: primitive_label '7' is not in primitive_labels.names "
+        "(0 -> walk_start, 2 -> walk_rightStance, 3 -> walk_leftStance)",
+    ),
+    "empty label": (
+        ("0", "", "3"),
+        {"column": "primitive_label", "names": STEP_NAMES},
+        "labels.csv:3: primitive_label '' is not in primitive_labels.names",
+    ),
+    "absent column": (
+        ("0", "2", "3"),
+        {"column": "step", "names": STEP_NAMES},
+        "labels.csv: primitive_labels.column 'step' is not a column",
+    ),
     "no names": (("0", "2", "3"), {"column": "primitive_label", "names": {}}, "primitive_labels.names: expected"),
-    "bad name": (("0", "2", "3"), {"column": "primitive_label", "names": {"0": "walk:start"}},
-                 "primitive_labels.names: {'0': 'walk:start'} are not primitive names"),
+    "bad name": (
+        ("0", "2", "3"),
+        {"column": "primitive_label", "names": {"0": "walk:start"}},
+        "primitive_labels.names: {'0': 'walk:start'} are not primitive names",
+    ),
     "missing key": (("0", "2", "3"), {"names": STEP_NAMES}, "primitive_labels: expected {column: ..., names:"),
 }
 
@@ -420,18 +491,26 @@ def test_bad_primitive_labels_are_named(folder, case):
     labels, option, expected = PRIMITIVE_LABEL_ERRORS[case]
     _step_labels(folder, labels)
     with pytest.raises(DatasetError) as info:
-        import_bvh_folder(folder, "labels.csv", unit_cm=CMU_UNIT_CM, behaviour_aliases={"walk_step": "walk"},
-                          primitive_labels=option)
+        import_bvh_folder(
+            folder, "labels.csv", unit_cm=CMU_UNIT_CM, behaviour_aliases={"walk_step": "walk"}, primitive_labels=option
+        )
     assert expected in str(info.value), str(info.value)
 
 
 @pytest.mark.parametrize("column", ["segments", "primitive"])
 def test_primitive_labels_with_the_csvs_own_segments_or_primitive(folder, column):
-    _labels(folder, f"file,subject,behaviour,style,primitive_label,{column}\n"
-            "a.bvh,02,walk,x,0,walk_start:0:5\nb.bvh,02,walk,x,2,\nsub/c.bvh,02,walk,x,3,\n")
+    _labels(
+        folder,
+        f"file,subject,behaviour,style,primitive_label,{column}\n"
+        "a.bvh,02,walk,x,0,walk_start:0:5\nb.bvh,02,walk,x,2,\nsub/c.bvh,02,walk,x,3,\n",
+    )
     with pytest.raises(DatasetError, match=rf"labels.csv: has a (filled )?'{column}' column and primitive_labels"):
-        import_bvh_folder(folder, "labels.csv", unit_cm=CMU_UNIT_CM,
-                          primitive_labels={"column": "primitive_label", "names": STEP_NAMES})
+        import_bvh_folder(
+            folder,
+            "labels.csv",
+            unit_cm=CMU_UNIT_CM,
+            primitive_labels={"column": "primitive_label", "names": STEP_NAMES},
+        )
 
 
 def test_real_dfki_config_maps_every_label(tmp_path):
@@ -442,8 +521,18 @@ def test_real_dfki_config_maps_every_label(tmp_path):
     if not folder.is_dir():
         pytest.skip(f"{folder} absent")
     cfg = yaml.safe_load((MAPS.parent / "real/dfki_markerless.yaml").read_text())["datasets"]["dfki_markerless"]
-    motions, meta = import_bvh_folder(folder, "labels.csv", unit_cm=0.1, joint_map=load_joint_map(MAPS / "dfki_markerless.yaml"),
-                                      behaviour_aliases=cfg["behaviour_aliases"], primitive_labels=cfg["primitive_labels"])
+    motions, meta = import_bvh_folder(
+        folder,
+        "labels.csv",
+        unit_cm=0.1,
+        joint_map=load_joint_map(MAPS / "dfki_markerless.yaml"),
+        behaviour_aliases=cfg["behaviour_aliases"],
+        primitive_labels=cfg["primitive_labels"],
+    )
     assert meta["primitive"].value_counts().to_dict() == {
-        "walk_rightStance": 127, "walk_leftStance": 103, "walk_start": 83, "walk_end": 83}
+        "walk_rightStance": 127,
+        "walk_leftStance": 103,
+        "walk_start": 83,
+        "walk_end": 83,
+    }
     assert meta["segments"].tolist() == [f"{p}:0:{m.n_frames}" for p, m in zip(meta["primitive"], motions)]

@@ -15,8 +15,15 @@ from motionvar.report.summary import read_claims_table
 
 
 def claim(**kw) -> Claim:
-    base = dict(claim_id="ma2010.x", paper="ma2010", source="Fig. 6", statement="s", published="p", measured="m",
-                verdict="partial")
+    base = dict(
+        claim_id="ma2010.x",
+        paper="ma2010",
+        source="Fig. 6",
+        statement="s",
+        published="p",
+        measured="m",
+        verdict="partial",
+    )
     return Claim(**{**base, **kw})
 
 

@@ -19,8 +19,27 @@ def table(rows: list[tuple]) -> pd.DataFrame:
     """Claims tables as the rule `claims` writes them (strings; empty value = none)."""
     out = []
     for cid, verdict, value in rows:
-        out.append(dict(zip(CLAIM_COLUMNS, [cid, cid.split(".")[0], "Fig. 1", "s", "p", "m", verdict, "",
-                                            "" if value is None else str(value), "1.2", "cm", "<="])))
+        out.append(
+            dict(
+                zip(
+                    CLAIM_COLUMNS,
+                    [
+                        cid,
+                        cid.split(".")[0],
+                        "Fig. 1",
+                        "s",
+                        "p",
+                        "m",
+                        verdict,
+                        "",
+                        "" if value is None else str(value),
+                        "1.2",
+                        "cm",
+                        "<=",
+                    ],
+                )
+            )
+        )
     return pd.DataFrame(out, columns=list(CLAIM_COLUMNS))
 
 
@@ -28,11 +47,17 @@ def table(rows: list[tuple]) -> pd.DataFrame:
 def five():
     v = [1.0, 1.1, 1.3, 0.9, 1.25]
     verdict = ["reproduced", "reproduced", "partial", "reproduced", "partial"]
-    return {f"s{k}": table([("ma2010.a", "reproduced", 0.5 + 0.01 * k),
-                             ("ma2010.b", verdict[k], v[k]),
-                             ("du2022.c", "not testable", None)]
-                            + ([("du2022.d", "reproduced", 2.0)] if k < 4 else []))
-            for k in range(5)}
+    return {
+        f"s{k}": table(
+            [
+                ("ma2010.a", "reproduced", 0.5 + 0.01 * k),
+                ("ma2010.b", verdict[k], v[k]),
+                ("du2022.c", "not testable", None),
+            ]
+            + ([("du2022.d", "reproduced", 2.0)] if k < 4 else [])
+        )
+        for k in range(5)
+    }
 
 
 def test_agreement_counts_and_the_stable_rule(five):
@@ -54,7 +79,8 @@ def test_interval_is_the_student_t_interval_of_the_mean(five):
     assert t.loc["ma2010.b", "value_mean"] == pytest.approx(v.mean())
     assert t.loc["ma2010.b", "value_sd"] == pytest.approx(v.std(ddof=1))
     assert (t.loc["ma2010.b", "value_ci_low"], t.loc["ma2010.b", "value_ci_high"]) == pytest.approx(
-        (v.mean() - half, v.mean() + half))
+        (v.mean() - half, v.mean() + half)
+    )
     assert t.loc["ma2010.b", "bound"] == 1.2
     # a claim measured by only four seeds: interval over those four
     assert t.loc["du2022.d", "value_sd"] == pytest.approx(0.0)

@@ -57,8 +57,9 @@ def _ma2010(ds, models):
     for i, s in enumerate(make_subjects(5, seed=7)):
         m, _ = generate_walk(s, sample_walk_params(s, rng, "neutral", n_steps=6))
         motions.append(m)
-        rows.append({"clip_id": f"w{i}", "subject": s.subject_id, "behaviour": "walk", "style": "neutral",
-                     "variant": "forward"})
+        rows.append(
+            {"clip_id": f"w{i}", "subject": s.subject_id, "behaviour": "walk", "style": "neutral", "variant": "forward"}
+        )
     save_dataset(ds / "data", motions, pd.DataFrame(rows))
     clips, table = walk_cycles(load_dataset(ds / "data"), JM, ["neutral"], ["forward"], n_frames=32)
     walks = WalkCycles(clips, table["subject"].tolist(), JM)
@@ -83,8 +84,11 @@ def _graph(models):
     opt = PrimitiveOptions(n_basis=8, n_components=5, gmm_components=(1, 2), sfpca_max_iter=0)
     for k, name in enumerate(("walk_leftStance", "walk_rightStance")):
         MotionPrimitive.fit(toy_clips(10, seed=k), name, opt).save(models / "du2022" / "graph" / name)
-    graph = MorphableGraph({"walk_leftStance": {"walk_rightStance": 3}, "walk_rightStance": {"walk_leftStance": 3}},
-                           {"walk_leftStance": 2}, {"walk_rightStance": 2})
+    graph = MorphableGraph(
+        {"walk_leftStance": {"walk_rightStance": 3}, "walk_rightStance": {"walk_leftStance": 3}},
+        {"walk_leftStance": 2},
+        {"walk_rightStance": 2},
+    )
     settings = {"tree_samples": 200, "beam": 2, "max_nfev": 10, "look_ahead": 1, "joint_steps": 0, "seed": 0}
     save_graph(models / "du2022" / "graph" / "graph" / "edges", graph, JM, settings)
 
@@ -97,28 +101,49 @@ def _style(tmp, models):
     from motionvar.du2022.style.generate import fit_rig, save_rig
 
     specs = [("neutral", 0.5, 0.3, 2.0)] * 6 + [("old", 0.2, 0.1, 1.2)] * 2
-    motions = [style_toy_walk(n_frames=70, seed=k, swing=sw, arm=arm, speed=sp) for k, (_, sw, arm, sp) in enumerate(specs)]
-    meta = pd.DataFrame({"clip_id": [f"c{k}" for k in range(len(specs))], "primitive": "walk_leftStance",
-                         "style": [st for st, *_ in specs], "variant": "forward", "turn_deg": 0.0})
+    motions = [
+        style_toy_walk(n_frames=70, seed=k, swing=sw, arm=arm, speed=sp) for k, (_, sw, arm, sp) in enumerate(specs)
+    ]
+    meta = pd.DataFrame(
+        {
+            "clip_id": [f"c{k}" for k in range(len(specs))],
+            "primitive": "walk_leftStance",
+            "style": [st for st, *_ in specs],
+            "variant": "forward",
+            "turn_deg": 0.0,
+        }
+    )
     save_dataset(tmp / "prep", motions, meta)
     dataset = load_dataset(tmp / "prep")
     layout = dataset_layout(dataset, JM)
     small = dict(n_samples=2, latent=4, hidden=(32, 16, 8))
-    space, _ = fit_feature_space(dataset, layout, TrainConfig(2, 3e-3, 8, seed=0), window=60, stride=5, max_windows=8,
-                                 n_kernels=16)
+    space, _ = fit_feature_space(
+        dataset, layout, TrainConfig(2, 3e-3, 8, seed=0), window=60, stride=5, max_windows=8, n_kernels=16
+    )
     base = models / "du2022_style"
     space.save(base / "autoencoder.pt")
     vae, shape, info, _ = fit_primitive_vae(dataset, layout, space, "walk_leftStance", TrainConfig(2, 1e-3, 4), **small)
     save_vae(base / "vae" / "walk_leftStance.pt", vae, shape, info)
-    cvae, cshape, cinfo, _ = fit_style_cvae(dataset, layout, space, vae, "walk_leftStance", "old",
-                                            TrainConfig(1, 1e-3, 4), alpha=1.0, **small)
+    cvae, cshape, cinfo, _ = fit_style_cvae(
+        dataset, layout, space, vae, "walk_leftStance", "old", TrainConfig(1, 1e-3, 4), alpha=1.0, **small
+    )
     save_vae(base / "cvae" / "walk_leftStance" / "old.pt", cvae, cshape, cinfo)
     save_rig(base / "rig", fit_rig(dataset, JM, 60))
 
 
 def run(results, *argv):
-    return main([argv[0], *(argv[1:2] if argv[0] == "du2022" else []), "--results", str(results), "--dataset", DS,
-                 "--quiet", *argv[(2 if argv[0] == "du2022" else 1):]])
+    return main(
+        [
+            argv[0],
+            *(argv[1:2] if argv[0] == "du2022" else []),
+            "--results",
+            str(results),
+            "--dataset",
+            DS,
+            "--quiet",
+            *argv[(2 if argv[0] == "du2022" else 1) :],
+        ]
+    )
 
 
 def _ma2010_model(results):
@@ -128,6 +153,7 @@ def _ma2010_model(results):
 
 
 # ---------------------------------------------------------------- models
+
 
 def test_models_lists_what_is_fitted_and_what_each_command_takes(results, capsys):
     assert run(results, "models") == 0
@@ -150,14 +176,30 @@ def test_models_names_the_snakemake_target_of_a_missing_model(results, tmp_path,
 
 # ---------------------------------------------------------------- Ma 2010
 
+
 def test_ma2010_walks_have_the_requested_stride_length_and_few_foot_skating(results, tmp_path, capsys):
     from motionvar.ma2010.examples import root_solver
     from motionvar.ma2010.generate import walk_measures
 
     saved = _ma2010_model(results)
     stride = float(np.round(saved.model.style_.mean(), 1))  # inside the examples' range: one number, both strides
-    assert run(results, "ma2010", "--style", f"{stride}", "--seconds", "6", "--variants", "2", "--seed", "3",
-               "--out", str(tmp_path)) == 0
+    assert (
+        run(
+            results,
+            "ma2010",
+            "--style",
+            f"{stride}",
+            "--seconds",
+            "6",
+            "--variants",
+            "2",
+            "--seed",
+            "3",
+            "--out",
+            str(tmp_path),
+        )
+        == 0
+    )
     files = sorted(tmp_path.glob("*.bvh"))
     assert [f.name for f in files] == [f"ma2010_{stride:g}_{stride:g}_v1.bvh", f"ma2010_{stride:g}_{stride:g}_v2.bvh"]
     out = capsys.readouterr().out
@@ -191,8 +233,9 @@ def test_ma2010_cleanup_root_is_the_papers_and_slides_more(results, tmp_path, ca
     paper, pinned = walks["root"], walks["root+feet"]
     assert np.allclose(paper.root_pos, pinned.root_pos, atol=1e-4)
     solver = root_solver(saved.model.skeleton_, saved.joint_map)
-    legs = np.concatenate([[j, paper.skeleton.parents[j], paper.skeleton.parents[paper.skeleton.parents[j]]]
-                           for j in solver.feet[:, 0]])
+    legs = np.concatenate(
+        [[j, paper.skeleton.parents[j], paper.skeleton.parents[paper.skeleton.parents[j]]] for j in solver.feet[:, 0]]
+    )
     others = np.setdiff1d(np.arange(paper.skeleton.n_joints), legs)
     assert np.allclose(paper.rotations[:, others], pinned.rotations[:, others], atol=1e-5)
     assert walk_measures(pinned, solver)["foot_skating_cm_s"] <= walk_measures(paper, solver)["foot_skating_cm_s"]
@@ -219,17 +262,25 @@ def test_ma2010_seed_reproduces_the_output_and_xi_fixes_groups(results, tmp_path
     assert paths[0].read_bytes() == paths[1].read_bytes()
     assert paths[0].read_bytes() != paths[2].read_bytes()
     xi = np.median(saved.model.xi_["legs"])
-    assert run(results, "ma2010", "--style", stride, "--seconds", "2", "--xi", f"A={xi}", "--out",
-               str(tmp_path / "xi")) == 0
+    assert (
+        run(results, "ma2010", "--style", stride, "--seconds", "2", "--xi", f"A={xi}", "--out", str(tmp_path / "xi"))
+        == 0
+    )
     assert f"xi: legs {xi:.3g}," in capsys.readouterr().out
 
 
-@pytest.mark.parametrize("style,message", [
-    ("60", r"style left_support_stride 60, right_support_stride 60 is outside the model's range \(left_support_stride "
-           r"\d+\.\d-\d+\.\d cm, right_support_stride \d+\.\d-\d+\.\d cm: the examples' .* widened by 25%"),
-    ("1,2,3", "the model takes 2 style parameters"),
-    ("fast", "--style: expected comma-separated numbers; got 'fast'"),
-])
+@pytest.mark.parametrize(
+    "style,message",
+    [
+        (
+            "60",
+            r"style left_support_stride 60, right_support_stride 60 is outside the model's range \(left_support_stride "
+            r"\d+\.\d-\d+\.\d cm, right_support_stride \d+\.\d-\d+\.\d cm: the examples' .* widened by 25%",
+        ),
+        ("1,2,3", "the model takes 2 style parameters"),
+        ("fast", "--style: expected comma-separated numbers; got 'fast'"),
+    ],
+)
 def test_ma2010_style_out_of_range_says_the_range(results, tmp_path, capsys, style, message):
     assert run(results, "ma2010", "--style", style, "--out", str(tmp_path / "out")) == 2
     err = capsys.readouterr().err
@@ -247,11 +298,14 @@ def test_ma2010_unequal_strides_off_the_examples_are_refused(results, tmp_path, 
     assert not list(tmp_path.glob("*.bvh"))
 
 
-@pytest.mark.parametrize("xi,message", [
-    ("E=1", re.escape("xi: unknown joint group 'E' (groups: A=legs, B=left_arm, C=right_arm, D=upper_body)")),
-    ("A=1000", r"xi A=1000 is outside the model's range for legs \("),
-    ("1,2", "--xi: give 4 numbers"),
-])
+@pytest.mark.parametrize(
+    "xi,message",
+    [
+        ("E=1", re.escape("xi: unknown joint group 'E' (groups: A=legs, B=left_arm, C=right_arm, D=upper_body)")),
+        ("A=1000", r"xi A=1000 is outside the model's range for legs \("),
+        ("1,2", "--xi: give 4 numbers"),
+    ],
+)
 def test_ma2010_bad_xi(results, tmp_path, capsys, xi, message):
     stride = f"{_ma2010_model(results).model.style_.mean():.1f}"
     assert run(results, "ma2010", "--style", stride, "--xi", xi, "--out", str(tmp_path)) == 2
@@ -260,6 +314,7 @@ def test_ma2010_bad_xi(results, tmp_path, capsys, xi, message):
 
 
 # ---------------------------------------------------------------- Egges 2004
+
 
 def test_egges2004_idle_of_one_subject(results, tmp_path, capsys):
     out = tmp_path / "idle.bvh"
@@ -288,6 +343,7 @@ def test_seconds_must_be_positive(results, tmp_path, capsys, seconds):
 
 # ---------------------------------------------------------------- Du 2022 walk
 
+
 def test_du2022_walk_follows_the_path(results, tmp_path, capsys):
     out = tmp_path / "walk.bvh"
     assert run(results, "du2022", "walk", "--path", "0,0 120,0 160,40", "--out", str(out)) == 0
@@ -299,13 +355,16 @@ def test_du2022_walk_follows_the_path(results, tmp_path, capsys):
     assert np.linalg.norm(m.root_pos[-1, [0, 2]]) > 60.0  # it walked
 
 
-@pytest.mark.parametrize("path,message", [
-    ("0,0", "--path: needs at least 2 points x,z (cm); got 1 in '0,0'"),
-    ("0,0 1,2,3", "--path: point '1,2,3' is not x,z"),
-    ("0,0 ten,0", "--path point 'ten,0': expected comma-separated numbers"),
-    ("0,0 0,0", "path: consecutive points must differ"),
-    ("", "--path: needs at least 2 points"),
-])
+@pytest.mark.parametrize(
+    "path,message",
+    [
+        ("0,0", "--path: needs at least 2 points x,z (cm); got 1 in '0,0'"),
+        ("0,0 1,2,3", "--path: point '1,2,3' is not x,z"),
+        ("0,0 ten,0", "--path point 'ten,0': expected comma-separated numbers"),
+        ("0,0 0,0", "path: consecutive points must differ"),
+        ("", "--path: needs at least 2 points"),
+    ],
+)
 def test_du2022_walk_bad_path(results, tmp_path, capsys, path, message):
     out = tmp_path / "walk.bvh"
     assert run(results, "du2022", "walk", "--path", path, "--out", str(out)) == 2
@@ -315,6 +374,7 @@ def test_du2022_walk_bad_path(results, tmp_path, capsys, path, message):
 
 
 # ---------------------------------------------------------------- Du 2022 style
+
 
 def test_du2022_style_samples(results, tmp_path, capsys):
     from motionvar.du2022.style.generate import load_rig
@@ -359,12 +419,16 @@ def test_positions_to_motion_recovers_a_walk_on_its_rig():
 
 # ---------------------------------------------------------------- missing models, rigs
 
-@pytest.mark.parametrize("argv,target", [
-    (["ma2010", "--style", "130"], "results/toy/models/ma2010/style_variation.npz"),
-    (["egges2004"], "results/toy/models/egges2004/idle_model.npz"),
-    (["du2022", "walk", "--path", "0,0 100,0"], "results/toy/models/du2022/graph/graph/edges.npz"),
-    (["du2022", "style", "--style", "old"], "results/toy/models/du2022_style/autoencoder.pt"),
-])
+
+@pytest.mark.parametrize(
+    "argv,target",
+    [
+        (["ma2010", "--style", "130"], "results/toy/models/ma2010/style_variation.npz"),
+        (["egges2004"], "results/toy/models/egges2004/idle_model.npz"),
+        (["du2022", "walk", "--path", "0,0 100,0"], "results/toy/models/du2022/graph/graph/edges.npz"),
+        (["du2022", "style", "--style", "old"], "results/toy/models/du2022_style/autoencoder.pt"),
+    ],
+)
 def test_a_missing_model_names_the_snakemake_target(tmp_path, capsys, argv, target):
     (tmp_path / "results" / DS / "models").mkdir(parents=True)
     out = tmp_path / ("out.bvh" if argv[0] == "egges2004" or "walk" in argv else "out")
@@ -400,13 +464,28 @@ def test_output_follows_the_rig_layout_and_unit(results, tmp_path):
 
 
 def test_progress_bar_on_stderr(results, tmp_path, capsys):
-    assert main(["egges2004", "--results", str(results), "--dataset", DS, "--seconds", "1",
-                 "--out", str(tmp_path / "i.bvh")]) == 0
+    assert (
+        main(
+            [
+                "egges2004",
+                "--results",
+                str(results),
+                "--dataset",
+                DS,
+                "--seconds",
+                "1",
+                "--out",
+                str(tmp_path / "i.bvh"),
+            ]
+        )
+        == 0
+    )
     err = capsys.readouterr().err
     assert "egges2004 idle [" in err and "1/1" in err
 
 
 # ---------------------------------------------------------------- the rules that save what the command reads
+
 
 def test_model_rule_scripts_save_what_the_command_loads(tmp_path):
     """Rules ma2010_model, du2022_graph_edges and style_rig as adapters: each writes a model
@@ -414,7 +493,8 @@ def test_model_rule_scripts_save_what_the_command_loads(tmp_path):
     import rule_scripts
     from rule_scripts import FakeSnakemake, Named, script
     from rule_scripts import run as run_rule
-    from test_ma2010_scripts import clips_fake, toy_dataset as walk_toy_dataset
+    from test_ma2010_scripts import clips_fake
+    from test_ma2010_scripts import toy_dataset as walk_toy_dataset
 
     from motionvar.du2022.graph.storage import load_graph
     from motionvar.du2022.style.generate import load_rig
@@ -425,21 +505,39 @@ def test_model_rule_scripts_save_what_the_command_loads(tmp_path):
     out, fake = clips_fake(tmp_path, walk_toy_dataset(tmp_path, ["neutral"] * 3))
     run_rule(fake, script("ma2010_clips").main)
     options = {"structure": "auto", "variogram_model": "linear", "root_group": "legs"}
-    run_rule(FakeSnakemake(tmp_path, "ma2010_model", input=fake.output,
-                           output=Named(model=str(out / "style_variation.npz"), settings=str(out / "style_variation.json")),
-                           params=Named(options=options, joint_map=None)), script("ma2010_model").main)
+    run_rule(
+        FakeSnakemake(
+            tmp_path,
+            "ma2010_model",
+            input=fake.output,
+            output=Named(model=str(out / "style_variation.npz"), settings=str(out / "style_variation.json")),
+            params=Named(options=options, joint_map=None),
+        ),
+        script("ma2010_model").main,
+    )
     saved = load_style_variation_model(out / "style_variation.npz")
     assert saved.settings == options and saved.model.style_.shape[1] == 2
 
-    meta = pd.DataFrame({"clip_id": ["a", "b", "c", "d"], "source_clip": ["w0", "w0", "w0", "w1"],
-                         "primitive": ["walk_start", "walk_leftStance", "walk_rightStance", "walk_leftStance"],
-                         "start_frame": [0, 40, 90, 0]})
+    meta = pd.DataFrame(
+        {
+            "clip_id": ["a", "b", "c", "d"],
+            "source_clip": ["w0", "w0", "w0", "w1"],
+            "primitive": ["walk_start", "walk_leftStance", "walk_rightStance", "walk_leftStance"],
+            "start_frame": [0, 40, 90, 0],
+        }
+    )
     meta.to_csv(tmp_path / "metadata.csv", index=False)
     edges = tmp_path / "graph" / "edges.npz"
-    run_rule(FakeSnakemake(tmp_path, "du2022_graph_edges", input=Named(metadata=str(tmp_path / "metadata.csv")),
-                           output=Named(model=str(edges), settings=str(edges.with_suffix(".json"))),
-                           params=Named(options={"tree_samples": 100, "look_ahead": 1}, joint_map=None)),
-             script("du2022_graph_edges").main)
+    run_rule(
+        FakeSnakemake(
+            tmp_path,
+            "du2022_graph_edges",
+            input=Named(metadata=str(tmp_path / "metadata.csv")),
+            output=Named(model=str(edges), settings=str(edges.with_suffix(".json"))),
+            params=Named(options={"tree_samples": 100, "look_ahead": 1}, joint_map=None),
+        ),
+        script("du2022_graph_edges").main,
+    )
     graph = load_graph(edges)
     assert graph.graph.edges["walk_start"] == {"walk_leftStance": 1} and graph.settings["tree_samples"] == 100
     assert graph.graph.start_nodes == {"walk_start": 1, "walk_leftStance": 1}
@@ -449,9 +547,16 @@ def test_model_rule_scripts_save_what_the_command_loads(tmp_path):
     prep.metadata["primitive"] = "walk_leftStance"
     save_dataset(tmp_path / "prep", list(prep), prep.metadata)
     rig = tmp_path / "rig.npz"
-    run_rule(FakeSnakemake(tmp_path, "style_rig", input=Named(clips=str(tmp_path / "prep" / "clips.npz")),
-                           output=Named(model=str(rig), settings=str(rig.with_suffix(".json"))),
-                           params=Named(options={"canonical_frames": 60}, joint_map=None)), script("style_rig").main)
+    run_rule(
+        FakeSnakemake(
+            tmp_path,
+            "style_rig",
+            input=Named(clips=str(tmp_path / "prep" / "clips.npz")),
+            output=Named(model=str(rig), settings=str(rig.with_suffix(".json"))),
+            params=Named(options={"canonical_frames": 60}, joint_map=None),
+        ),
+        script("style_rig").main,
+    )
     loaded = load_rig(rig)
     assert loaded.layout.n_joints == 21 and set(loaded.fps) == {"walk_leftStance"} and loaded.n_frames == 60
 
@@ -461,9 +566,13 @@ def test_a_model_the_dataset_cannot_have_says_why(tmp_path, capsys):
     a model is fitted for, the command says why instead of naming a target that would fail."""
     ds = tmp_path / "results" / DS
     (ds / "models").mkdir(parents=True)
-    pd.DataFrame({"evaluation": ["egges2004_speed", "egges2004_identification"], "applicable": [False, False],
-                  "reason": ["needs at least 2 idle recordings", "needs idle clips of 2 subjects"]}).to_csv(
-        ds / "applicability.csv", index=False)
+    pd.DataFrame(
+        {
+            "evaluation": ["egges2004_speed", "egges2004_identification"],
+            "applicable": [False, False],
+            "reason": ["needs at least 2 idle recordings", "needs idle clips of 2 subjects"],
+        }
+    ).to_csv(ds / "applicability.csv", index=False)
     out = tmp_path / "idle.bvh"
     assert main(["egges2004", "--results", str(tmp_path / "results"), "--dataset", DS, "--out", str(out)]) == 2
     err = capsys.readouterr().err
@@ -487,6 +596,21 @@ def test_du2022_walk_without_transitions_is_refused(results, tmp_path, capsys):
     nodes = {n: {} for n in ("walk_leftStance", "walk_rightStance")}
     save_graph(models / "du2022" / "graph" / "graph" / "edges", MorphableGraph(nodes, {}, {}), JM, saved.settings)
     out = tmp_path / "walk.bvh"
-    assert main(["du2022", "walk", "--results", str(tmp_path / "results"), "--dataset", DS, "--path", "0,0 100,0",
-                 "--out", str(out)]) == 2
+    assert (
+        main(
+            [
+                "du2022",
+                "walk",
+                "--results",
+                str(tmp_path / "results"),
+                "--dataset",
+                DS,
+                "--path",
+                "0,0 100,0",
+                "--out",
+                str(out),
+            ]
+        )
+        == 2
+    )
     assert "has no transitions between its walking primitives" in capsys.readouterr().err and not out.exists()

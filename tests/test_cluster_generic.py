@@ -17,7 +17,6 @@ from pathlib import Path
 
 import pandas as pd
 import pytest
-
 from conftest import CI_CONFIG, ROOT, run_snakemake
 
 pytest.importorskip("snakemake_executor_plugin_cluster_generic")
@@ -58,13 +57,31 @@ def cluster_run(tmp_path_factory):
     start = time.perf_counter()
     try:
         result = run_snakemake(
-            "-d", str(work), "--configfile", CI_CONFIG, "--workflow-profile", "none",
-            "--profile", str(PROFILE),  # executor, latency wait; the scripts by absolute path (other cwd):
-            "--cluster-generic-submit-cmd", f"bash {PROFILE}/submit.sh {{threads}} {{resources.mem_mb}}",
-            "--cluster-generic-status-cmd", f"bash {PROFILE}/status.sh",
-            "--cluster-generic-cancel-cmd", str(PROFILE / "cancel.sh"),
-            "--jobs", "2", "--seconds-between-status-checks", "1", "--latency-wait", "10",
-            "--", TARGET, cwd=work, env=env, timeout=1800,
+            "-d",
+            str(work),
+            "--configfile",
+            CI_CONFIG,
+            "--workflow-profile",
+            "none",
+            "--profile",
+            str(PROFILE),  # executor, latency wait; the scripts by absolute path (other cwd):
+            "--cluster-generic-submit-cmd",
+            f"bash {PROFILE}/submit.sh {{threads}} {{resources.mem_mb}}",
+            "--cluster-generic-status-cmd",
+            f"bash {PROFILE}/status.sh",
+            "--cluster-generic-cancel-cmd",
+            str(PROFILE / "cancel.sh"),
+            "--jobs",
+            "2",
+            "--seconds-between-status-checks",
+            "1",
+            "--latency-wait",
+            "10",
+            "--",
+            TARGET,
+            cwd=work,
+            env=env,
+            timeout=1800,
         )
     finally:
         _stop_leftovers(cluster)
@@ -72,8 +89,10 @@ def cluster_run(tmp_path_factory):
     after = resource.getrusage(resource.RUSAGE_CHILDREN)
     main_cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
     jobs_cpu = sum(_job_cpu(p) for p in cluster.glob("*.times"))
-    print(f"cluster-generic run: wall {wall:.1f} s, CPU {main_cpu + jobs_cpu:.1f} s "
-          f"(jobs {jobs_cpu:.1f} s, Snakemake's main process {main_cpu:.1f} s)")
+    print(
+        f"cluster-generic run: wall {wall:.1f} s, CPU {main_cpu + jobs_cpu:.1f} s "
+        f"(jobs {jobs_cpu:.1f} s, Snakemake's main process {main_cpu:.1f} s)"
+    )
     assert result.returncode == 0, result.stdout[-4000:] + result.stderr[-8000:]
     return work, cluster, result
 

@@ -48,8 +48,9 @@ def test_seeds_config_is_the_ci_config_for_five_seeds():
     shared = {k: v for k, v in ci.items() if k != "datasets"}
     assert {k: v for k, v in seeds.items() if k not in ("datasets", "run_datasets", "stability")} == shared
     for n in names:
-        assert {k: v for k, v in seeds["datasets"][n].items() if k not in ("seed", "subjects")} == \
-            {k: v for k, v in ci["datasets"]["synthetic"].items() if k != "subjects"} | {"source": "synthetic"}
+        assert {k: v for k, v in seeds["datasets"][n].items() if k not in ("seed", "subjects")} == {
+            k: v for k, v in ci["datasets"]["synthetic"].items() if k != "subjects"
+        } | {"source": "synthetic"}
 
 
 def test_defaults_are_filled_per_source():
@@ -59,9 +60,17 @@ def test_defaults_are_filled_per_source():
     assert cfg["datasets"]["synthetic"]["subjects"] == 25 and cfg["datasets"]["synthetic"]["seed"] == 0
     bvh = cfg["datasets"]["mine"]
     assert bvh == {
-        "source": "bvh", "path": "x", "unit_cm": 1.0, "labels": "labels.csv", "drop_first_frame": False,
-        "joint_map": None, "behaviour_aliases": {}, "style_aliases": {}, "neutral_style": None,
-        "mixed_rigs": "skip_minority", "plausibility_check": True,
+        "source": "bvh",
+        "path": "x",
+        "unit_cm": 1.0,
+        "labels": "labels.csv",
+        "drop_first_frame": False,
+        "joint_map": None,
+        "behaviour_aliases": {},
+        "style_aliases": {},
+        "neutral_style": None,
+        "mixed_rigs": "skip_minority",
+        "plausibility_check": True,
     }  # and none of the synthetic keys leaked in
     assert cfg["prep"] == PrepOptions().to_dict()
     assert cfg["report"]["animation_fps"] == 20
@@ -103,9 +112,23 @@ def test_synthetic_dataset_entry_matches_synth_spec():
 def run_dry(tmp_path, config_text):
     (tmp_path / "bad.yaml").write_text(config_text)
     return subprocess.run(
-        [sys.executable, "-m", "snakemake", "-s", SNAKEFILE, "-d", str(tmp_path),
-         "--configfile", str(tmp_path / "bad.yaml"), "-n", "--workflow-profile", "none"],
-        capture_output=True, text=True, timeout=120,
+        [
+            sys.executable,
+            "-m",
+            "snakemake",
+            "-s",
+            SNAKEFILE,
+            "-d",
+            str(tmp_path),
+            "--configfile",
+            str(tmp_path / "bad.yaml"),
+            "-n",
+            "--workflow-profile",
+            "none",
+        ],
+        capture_output=True,
+        text=True,
+        timeout=120,
     )
 
 
@@ -114,7 +137,10 @@ def run_dry(tmp_path, config_text):
     [
         ("datasets:\n  synthetic: {subjectz: 3}\n", "unknown config key(s) datasets.synthetic.subjectz"),
         ("prepp: {}\n", "unknown config key(s) prepp"),
-        ("datasets:\n  synthetic: {subjects: many}\n", "config key datasets.synthetic.subjects: 'many' is not of type 'integer'"),
+        (
+            "datasets:\n  synthetic: {subjects: many}\n",
+            "config key datasets.synthetic.subjects: 'many' is not of type 'integer'",
+        ),
         ("prep: {heading: sideways}\n", "config key prep.heading: 'sideways' is not one of"),
         ("datasets:\n  cmu: {source: bvh, path: /data}\n", "config key datasets.cmu: 'unit_cm' is a required property"),
         ("run_datasets: [cmu]\n", "run_datasets names ['cmu'], not in datasets"),
@@ -137,8 +163,11 @@ def test_yaml_syntax_error_names_file_and_line(tmp_path):
     root = ROOT
     bad = "datasets:\n  synthetic: {source: synthetic\n  other: 1\n"
     (tmp_path / "mine.yaml").write_text(bad)
-    tool = subprocess.run([sys.executable, str(root / "tools" / "check_config.py"), str(tmp_path / "mine.yaml")],
-                          capture_output=True, text=True)
+    tool = subprocess.run(
+        [sys.executable, str(root / "tools" / "check_config.py"), str(tmp_path / "mine.yaml")],
+        capture_output=True,
+        text=True,
+    )
     assert tool.returncode != 0 and f"{tmp_path / 'mine.yaml'}:3:8: not valid YAML" in tool.stderr
 
     copy = tmp_path / "repo"
@@ -146,7 +175,11 @@ def test_yaml_syntax_error_names_file_and_line(tmp_path):
     shutil.copytree(root / "config", copy / "config")
     shutil.copy(root / "Snakefile", copy / "Snakefile")
     (copy / "config" / "config.yaml").write_text(bad)
-    run = subprocess.run([sys.executable, "-m", "snakemake", "-n", "--workflow-profile", "none"], cwd=copy,
-                         capture_output=True, text=True)
+    run = subprocess.run(
+        [sys.executable, "-m", "snakemake", "-n", "--workflow-profile", "none"],
+        cwd=copy,
+        capture_output=True,
+        text=True,
+    )
     assert run.returncode != 0
     assert f"Invalid configuration file {copy / 'config' / 'config.yaml'}:3:8" in run.stdout + run.stderr

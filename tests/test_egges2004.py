@@ -3,14 +3,29 @@ integration, on small idle-like recordings built in tests/egges2004_toy.py."""
 
 import numpy as np
 import pytest
-
 from egges2004_toy import toy_recording
+
 from motionvar.core import Motion, cmu_joint_map, cmu_skeleton
 from motionvar.core.quaternions import qangle, qidentity, quat_about_axis
 from motionvar.egges2004 import (
-    CategoryGraph, IdleSettings, PosturePCA, add_variations, analyse_recording, blend_motions,
-    build_database, extrema_pairs, find_extrema, fit_anim, fit_anim_part, fit_variation_model,
-    generate_idle, idle_between, joint_mask, posture_distance, static_segments, synthesize_balance,
+    CategoryGraph,
+    IdleSettings,
+    PosturePCA,
+    add_variations,
+    analyse_recording,
+    blend_motions,
+    build_database,
+    extrema_pairs,
+    find_extrema,
+    fit_anim,
+    fit_anim_part,
+    fit_variation_model,
+    generate_idle,
+    idle_between,
+    joint_mask,
+    posture_distance,
+    static_segments,
+    synthesize_balance,
 )
 from motionvar.egges2004.categories import frame_labels, parse_postures, segment_agreement
 from motionvar.egges2004.fitting import best_fitting_animation
@@ -69,8 +84,9 @@ def test_pca_rejects_bad_input():
     with pytest.raises(ValueError, match="joint indices"):
         PosturePCA.fit([m], joints=[40])
     pca = PosturePCA.fit([m], joints=[0, 1])
-    small = Motion(cmu_skeleton().__class__(("a",), np.array([-1]), np.zeros((1, 3))), np.zeros((3, 3)),
-                   qidentity((3, 1)), 30.0)
+    small = Motion(
+        cmu_skeleton().__class__(("a",), np.array([-1]), np.zeros((1, 3))), np.zeros((3, 3)), qidentity((3, 1)), 30.0
+    )
     with pytest.raises(ValueError, match="joints"):
         pca.project(small)
 

@@ -6,9 +6,9 @@ import json
 from dataclasses import fields
 from pathlib import Path
 
+import matplotlib.pyplot as plt
 import numpy as np
 import pytest
-import matplotlib.pyplot as plt
 import yaml
 from claim_checks import check_value_bound
 from egges2004_toy import toy_dataset
@@ -16,17 +16,27 @@ from matplotlib.figure import Figure
 
 from motionvar.claims import EvaluationResult
 from motionvar.core import cmu_joint_map
-from motionvar.egges2004 import IdleSettings
-from motionvar.egges2004 import figures
+from motionvar.egges2004 import IdleSettings, figures
 from motionvar.egges2004.evaluations import (
-    FittingParams, IdentificationParams, RepetitionParams, SpeedParams, category_check, fitting, identification,
-    idle_animation, pc_extrema, repetition, speed,
+    FittingParams,
+    IdentificationParams,
+    RepetitionParams,
+    SpeedParams,
+    category_check,
+    fitting,
+    identification,
+    idle_animation,
+    pc_extrema,
+    repetition,
+    speed,
 )
 from motionvar.egges2004.pipeline import fit_idle_model, idle_clips, model_recordings, split_clips
 from motionvar.egges2004.storage import load_idle_model, save_idle_model
 from motionvar.io import load_dataset
 
 ROOT = Path(__file__).resolve().parents[1]
+
+
 @pytest.fixture(autouse=True)
 def _close_figures():
     yield
@@ -124,8 +134,10 @@ def test_evaluations_on_toy_subjects(fitted):
     )
     table, (claim,) = result.table, result.claims
     assert set(table["source"]) == {"recorded (held out)", "generated (Egges 2004)", "Perlin noise on PCs"}
-    assert result.figure["confusion"].sum() == table.query(
-        "source.str.startswith('generated') and features == 'all'", engine="python")["windows"].iloc[0]
+    assert (
+        result.figure["confusion"].sum()
+        == table.query("source.str.startswith('generated') and features == 'all'", engine="python")["windows"].iloc[0]
+    )
     assert result.figure["labels"] == ["01", "02", "03"] and result.figure["window_s"] == 5.0
     assert claim.claim_id == "egges2004.sec8.generated_idle_identifies_person"
     acc = table[table["features"] == "all"].set_index("source")["accuracy"]
@@ -139,8 +151,9 @@ def test_evaluations_on_toy_subjects(fitted):
     assert pooled["looped recorded clip"].min() > 0.99 and pooled["looped rest variations"].min() > 0.99
     assert np.median(pooled["generated variations (Sec. 6)"]) < 0.99
     assert claim.verdict in ("reproduced", "partial", "not reproduced") and result.figure["n_pcs"] == 4
-    cut, rec = (np.median(pooled[k]) for k in ("generated variations, cut to the recorded length",
-                                               "recorded rest variations"))
+    cut, rec = (
+        np.median(pooled[k]) for k in ("generated variations, cut to the recorded length", "recorded rest variations")
+    )
     assert (claim.value, claim.bound, claim.direction) == (cut, rec, "<=")
     check_value_bound(claim)
     assert isinstance(figures.draw_repetition(result), Figure)

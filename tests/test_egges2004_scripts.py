@@ -19,19 +19,36 @@ from motionvar.io import load_dataset, save_dataset
 sys.modules.setdefault("_egges2004", rule_scripts._load("_egges2004", "_egges2004"))
 
 OPTIONS = {
-    "seed": 0, "held_out_clips": 1, "translation_scale": 0.01, "figure_subjects": 2,
-    "analysis": {"smooth_s": 0.15, "rest_speed": None, "min_rest_s": 1.0, "min_shift_rms": 5.0, "max_categories": 3,
-                 "support_margin": 0.1, "variation_pcs": 4, "extrema_eps_sd": 0.5, "variation_clusters": 6},
+    "seed": 0,
+    "held_out_clips": 1,
+    "translation_scale": 0.01,
+    "figure_subjects": 2,
+    "analysis": {
+        "smooth_s": 0.15,
+        "rest_speed": None,
+        "min_rest_s": 1.0,
+        "min_shift_rms": 5.0,
+        "max_categories": 3,
+        "support_margin": 0.1,
+        "variation_pcs": 4,
+        "extrema_eps_sd": 0.5,
+        "variation_clusters": 6,
+    },
 }
 
 
 def model_fake(tmp_path, folder, name="idle_model"):
     out = tmp_path / "out"
     return out, FakeSnakemake(
-        tmp_path, "egges2004_model",
+        tmp_path,
+        "egges2004_model",
         input=Named(clips=str(folder / "clips.npz"), metadata=str(folder / "metadata.csv")),
-        output=Named(model=str(out / f"{name}.npz"), model_settings=str(out / f"{name}.json"),
-                     categories=str(out / "categories.csv"), graph=str(out / "graph.png")),
+        output=Named(
+            model=str(out / f"{name}.npz"),
+            model_settings=str(out / f"{name}.json"),
+            categories=str(out / "categories.csv"),
+            graph=str(out / "graph.png"),
+        ),
         params=Named(options=OPTIONS, joint_map=None),
     )
 
@@ -44,7 +61,9 @@ def test_model_and_speed_scripts_write_their_outputs(tmp_path):
     assert len(pd.read_csv(out / "categories.csv")) == 3 and (out / "graph.png").stat().st_size > 0
 
     speed = FakeSnakemake(
-        tmp_path, "egges2004_speed", input=Named(model=str(out / "idle_model.npz")),
+        tmp_path,
+        "egges2004_speed",
+        input=Named(model=str(out / "idle_model.npz")),
         output=Named(table=str(out / "speed.csv"), figure=str(out / "speed.png"), claims=str(out / "speed.json")),
         params=Named(options={"seed": 0, "speed": {"sequence_s": 5.0, "repeats": 1, "subjects": 1}}),
     )

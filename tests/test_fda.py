@@ -86,6 +86,7 @@ def data():
 
 # ---- B-splines (Eq. 3.1) ------------------------------------------------------------
 
+
 def test_bspline_fit_reproduces_splines_and_gram_is_exact():
     basis = BSplineBasis(7)
     rng = np.random.default_rng(0)
@@ -133,6 +134,7 @@ def test_bspline_rmse_decreases_with_k(data):
 
 # ---- motion parameterisation (Eq. 3.2, Sec. 3.2.1) -----------------------------------
 
+
 def test_quaternion_signs_continuous_within_and_across_clips():
     rng = np.random.default_rng(1)
     T, J = 20, 3
@@ -164,7 +166,9 @@ def test_functional_motions_bad_input():
     clips, _ = make_clips(4)
     with pytest.raises(ValueError, match="clip 1 has 5 frames"):
         FunctionalMotions.from_motions([clips[0], clips[1].slice(0, 5)], n_basis=8)
-    other = Motion(skeleton=chain_skeleton(4), root_pos=np.zeros((30, 3)), rotations=np.tile([1.0, 0, 0, 0], (30, 4, 1)), fps=120)
+    other = Motion(
+        skeleton=chain_skeleton(4), root_pos=np.zeros((30, 3)), rotations=np.tile([1.0, 0, 0, 0], (30, 4, 1)), fps=120
+    )
     with pytest.raises(ValueError, match="clip 1 has another skeleton topology"):
         FunctionalMotions.from_motions([clips[0], other], n_basis=8)
     bad = clips[2].copy()
@@ -176,6 +180,7 @@ def test_functional_motions_bad_input():
 
 
 # ---- FPCA (Eq. 3.3-3.5) ----------------------------------------------------------------
+
 
 def reference_explained_variance_ratio(fd, n, points_per_span=40):
     """Independent FPCA: PCA of densely sampled curves with Simpson quadrature weights."""
@@ -287,6 +292,7 @@ def test_save_load_round_trip(tmp_path, data):
 
 
 # ---- SFPCA (Eq. 3.6-3.8) ------------------------------------------------------------
+
 
 def test_top_eigenvectors_gradient():
     rng = np.random.default_rng(2)
@@ -417,6 +423,7 @@ def test_sfpca_bad_params(data):
 
 # ---- Bayesian GPLVM -------------------------------------------------------------------
 
+
 def test_gplvm_bound_matches_exact_gp_marginal_likelihood():
     """With q(X) collapsed to points and Z = X, the Titsias bound equals the exact GP
     log marginal likelihood minus the KL term."""
@@ -426,9 +433,14 @@ def test_gplvm_bound_matches_exact_gp_marginal_likelihood():
     Y = rng.normal(size=(N, D))
     model = BayesianGPLVM(Q, n_inducing=N, jitter=1e-9)
     S = np.full((N, Q), 1e-12)
-    p = {"mu": torch.as_tensor(X), "log_S": torch.as_tensor(np.log(S)), "Z": torch.as_tensor(X),
-         "log_sf2": torch.tensor([0.3], dtype=torch.float64), "log_ell": torch.tensor([0.1, -0.2], dtype=torch.float64),
-         "log_noise": torch.tensor([math.log(0.2)], dtype=torch.float64)}
+    p = {
+        "mu": torch.as_tensor(X),
+        "log_S": torch.as_tensor(np.log(S)),
+        "Z": torch.as_tensor(X),
+        "log_sf2": torch.tensor([0.3], dtype=torch.float64),
+        "log_ell": torch.tensor([0.1, -0.2], dtype=torch.float64),
+        "log_noise": torch.tensor([math.log(0.2)], dtype=torch.float64),
+    }
     bound, _ = model._bound(p, torch.as_tensor(Y), float(np.sum(Y**2)), None)
     kl = 0.5 * np.sum(S + X**2 - 1 - np.log(S))
     sf2, ell = math.exp(0.3), np.exp([0.1, -0.2])
@@ -485,6 +497,7 @@ def test_functional_gplvm_reconstructs(data):
 
 # ---- latent-space measures (Fig. 3.11) --------------------------------------------------
 
+
 def test_knn_accuracy_and_separation():
     rng = np.random.default_rng(4)
     labels = np.repeat([0, 1, 2], 20)
@@ -499,6 +512,7 @@ def test_knn_accuracy_and_separation():
 
 
 # ---- the primitives of a dataset and the evaluations (Fig. 3.9-3.11, Table 3.1) --------
+
 
 class StandInDataset:
     """What the evaluations use of motionvar.io.MotionDataset: ``metadata`` and ``motion(i)``."""
@@ -516,10 +530,16 @@ def prep_dataset():
     clips, labels = make_clips(40, seed=7, lengths=(28, 40))
     variants = np.array(["forward", "left", "right"])[labels]
     primitive = np.array(["walk_leftStance"] * 24 + ["pick_reach"] * 14 + ["pick_retrieve"] * 2)
-    meta = pd.DataFrame({
-        "clip_id": [f"c{i:02d}" for i in range(40)], "behaviour": [p.split("_")[0] for p in primitive],
-        "primitive": primitive, "variant": variants, "n_frames": [c.n_frames for c in clips], "fps": 120.0,
-    })
+    meta = pd.DataFrame(
+        {
+            "clip_id": [f"c{i:02d}" for i in range(40)],
+            "behaviour": [p.split("_")[0] for p in primitive],
+            "primitive": primitive,
+            "variant": variants,
+            "n_frames": [c.n_frames for c in clips],
+            "fps": 120.0,
+        }
+    )
     return StandInDataset(clips, meta)
 
 
@@ -575,9 +595,13 @@ def test_basis_sizes_and_fig3_9(canonical_dataset):
 @pytest.fixture(scope="module")
 def fda_curves(canonical_dataset):
     """The Fig. 3.10-3.11 measurements of both primitives, in two parts each as the pipeline."""
-    options = dict(dims=[1, 3, 100], latent_dim=3, seed=0, sfpca={"max_iter": 3, "eval_frames_per_basis": 2},
-                   gplvm={"n_inducing": 6, "max_iter": 8, "noise_init": 0.01, "discriminative_sigma2": 1.0,
-                          "n_clusters": 3})
+    options = dict(
+        dims=[1, 3, 100],
+        latent_dim=3,
+        seed=0,
+        sfpca={"max_iter": 3, "eval_frames_per_basis": 2},
+        gplvm={"n_inducing": 6, "max_iter": 8, "noise_init": 0.01, "discriminative_sigma2": 1.0, "n_clusters": 3},
+    )
     out = []
     for primitive in ("walk_leftStance", "pick_reach"):
         fd, meta = functional_primitive(canonical_dataset, primitive, 6)
@@ -607,8 +631,12 @@ def test_fig3_10(fda_curves):
     result = evaluate_fig3_10(fda_curves, methods, ["walk_leftStance", "pick_reach"], "pick_reach")
     assert len(result.table) == 16 and "fit_seconds" in result.table
     ids = [c.claim_id.split(".")[-1] for c in result.claims]
-    assert ids == ["fpca_lowest_feature_error", "sfpca_lowest_observation_error",
-                   "normalized_fpca_beats_fpca_observation_pick", "errors_decrease_with_dims"]
+    assert ids == [
+        "fpca_lowest_feature_error",
+        "sfpca_lowest_observation_error",
+        "normalized_fpca_beats_fpca_observation_pick",
+        "errors_decrease_with_dims",
+    ]
     first = result.claims[0]  # FPCA minimises the feature-space error (Eq. 3.3)
     assert first.verdict == "reproduced" and first.measured.startswith("FPCA lowest in 4/4")
     assert re.match(r"\d+/12 curves monotone", result.claims[3].measured)  # 2 primitives x 3 FPCAs x 2 spaces
@@ -625,8 +653,9 @@ def test_fig3_10(fda_curves):
 
 def test_fig3_11(fda_curves):
     methods = ["fpca", "normalized_fpca", "sfpca", "gplvm"]
-    result = evaluate_fig3_11(fda_curves, methods, ["walk_leftStance", "pick_reach"], "pick_reach", knn=3,
-                              tsne_perplexity=30.0, seed=0)
+    result = evaluate_fig3_11(
+        fda_curves, methods, ["walk_leftStance", "pick_reach"], "pick_reach", knn=3, tsne_perplexity=30.0, seed=0
+    )
     table = result.table
     assert list(table.columns) == ["primitive", "method", "latent_dim", "n_clips", "silhouette", "knn3_accuracy"]
     assert len(table) == 8 and table["latent_dim"].eq(3).all()
@@ -660,8 +689,9 @@ def test_smallest_dim_bisection():
 
 def test_table3_1(canonical_dataset):
     _, chosen = choose_basis_sizes(canonical_dataset, [4, 6], 0.05)
-    result = evaluate_table3_1(canonical_dataset, chosen, {"max_iter": 3}, reference_components=3,
-                               max_components=50, observation_error_cm=1.0)
+    result = evaluate_table3_1(
+        canonical_dataset, chosen, {"max_iter": 3}, reference_components=3, max_components=50, observation_error_cm=1.0
+    )
     table = result.table.set_index("primitive")
     assert list(table.index) == ["pick_reach", "walk_leftStance"] and result.claims == []
     assert table.loc["pick_reach", "clips"] == 14 and table.loc["pick_reach", "published_dims"] == 45

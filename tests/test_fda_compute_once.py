@@ -11,9 +11,11 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 import pytest
-import torch
-
 import rule_scripts
+import torch
+from rule_scripts import FakeSnakemake, Named
+from test_fda import StandInDataset, make_clips
+
 from motionvar.core import cmu_skeleton
 from motionvar.core.kinematics import fk_torch
 from motionvar.du2022.fda import SFPCA, canonical_primitives, choose_basis_sizes, functional_primitive
@@ -22,8 +24,6 @@ from motionvar.du2022.fda.evaluations.curves import fitted_sfpca
 from motionvar.du2022.fda.evaluations.table3_1 import fit_reference_sfpca, reference_dims
 from motionvar.du2022.fda.sfpca import fk_joint_major
 from motionvar.io import save_dataset
-from rule_scripts import FakeSnakemake, Named
-from test_fda import StandInDataset, make_clips
 
 SFPCA_OPTIONS = {"max_iter": 3, "eval_frames_per_basis": 2}
 
@@ -32,11 +32,16 @@ SFPCA_OPTIONS = {"max_iter": 3, "eval_frames_per_basis": 2}
 def canonical():
     clips, labels = make_clips(30, seed=3, lengths=(28, 36))
     primitive = np.array(["walk_leftStance"] * 18 + ["pick_reach"] * 12)
-    meta = pd.DataFrame({
-        "clip_id": [f"c{i:02d}" for i in range(30)], "behaviour": [p.split("_")[0] for p in primitive],
-        "primitive": primitive, "variant": np.array(["forward", "left", "right"])[labels],
-        "n_frames": [c.n_frames for c in clips], "fps": 120.0,
-    })
+    meta = pd.DataFrame(
+        {
+            "clip_id": [f"c{i:02d}" for i in range(30)],
+            "behaviour": [p.split("_")[0] for p in primitive],
+            "primitive": primitive,
+            "variant": np.array(["forward", "left", "right"])[labels],
+            "n_frames": [c.n_frames for c in clips],
+            "fps": 120.0,
+        }
+    )
     motions, cmeta = canonical_primitives(StandInDataset(clips, meta), ["walk", "pick"], 3, "linear")
     return StandInDataset(motions, cmeta)
 
@@ -95,8 +100,9 @@ def test_table3_1_from_saved_models_equals_fitting_there(canonical, chosen, save
     pd.testing.assert_frame_equal(from_files.table, fitted_here.table, check_exact=True)
     assert from_files.figure["curves"] == fitted_here.figure["curves"]
     # a primitive without a given model is fitted there
-    one = evaluate_table3_1(canonical, chosen, SFPCA_OPTIONS, 4, 50, 1.0,
-                            sfpca_models={"walk_leftStance": models["walk_leftStance"]})
+    one = evaluate_table3_1(
+        canonical, chosen, SFPCA_OPTIONS, 4, 50, 1.0, sfpca_models={"walk_leftStance": models["walk_leftStance"]}
+    )
     pd.testing.assert_frame_equal(one.table, fitted_here.table, check_exact=True)
     with pytest.raises(ValueError, match="fitted at d = 4, Table 3.1's reference dimension is 3"):
         evaluate_table3_1(canonical, chosen, SFPCA_OPTIONS, 3, 50, 1.0, sfpca_models=models)
@@ -149,32 +155,55 @@ def test_rule_scripts_fit_once_and_read_the_file(canonical, chosen, tmp_path):
     data = tmp_path / "canonical"
     save_dataset(data, canonical.motions, canonical.metadata)
     chosen.to_csv(tmp_path / "n_basis.csv", index=False)
-    inputs = dict(clips=str(data / "clips.npz"), metadata=str(data / "metadata.csv"),
-                  n_basis=str(tmp_path / "n_basis.csv"))
+    inputs = dict(
+        clips=str(data / "clips.npz"), metadata=str(data / "metadata.csv"), n_basis=str(tmp_path / "n_basis.csv")
+    )
     models = []
     for primitive in chosen["primitive"]:
         out = Named(model=str(tmp_path / f"{primitive}.npz"), settings=str(tmp_path / f"{primitive}.json"))
-        sm = FakeSnakemake(tmp_path, "du2022_fda_sfpca", input=Named(**inputs), output=out,
-                           params=Named(options={"sfpca": SFPCA_OPTIONS, "reference_components": 4,
-                                                 "max_components": 50}),
-                           wildcards=Named(dataset="test", primitive=primitive))
+        sm = FakeSnakemake(
+            tmp_path,
+            "du2022_fda_sfpca",
+            input=Named(**inputs),
+            output=out,
+            params=Named(options={"sfpca": SFPCA_OPTIONS, "reference_components": 4, "max_components": 50}),
+            wildcards=Named(dataset="test", primitive=primitive),
+        )
         rule_scripts.run(sm, rule_scripts.script("du2022_fda_sfpca").main)
         assert Path(out.model).is_file() and Path(out.settings).is_file()
         models += [out.model, out.settings]
     out = Named(table=str(tmp_path / "t.csv"), figure=str(tmp_path / "t.png"), claims=str(tmp_path / "t.json"))
-    sm = FakeSnakemake(tmp_path, "du2022_table3_1", input=Named(**inputs, sfpca=models), output=out,
-                       params=Named(options={"sfpca": SFPCA_OPTIONS, "reference_components": 4, "max_components": 50,
-                                             "observation_error_cm": 1.0}))
+    sm = FakeSnakemake(
+        tmp_path,
+        "du2022_table3_1",
+        input=Named(**inputs, sfpca=models),
+        output=out,
+        params=Named(
+            options={
+                "sfpca": SFPCA_OPTIONS,
+                "reference_components": 4,
+                "max_components": 50,
+                "observation_error_cm": 1.0,
+            }
+        ),
+    )
     expected = evaluate_table3_1(canonical, chosen, SFPCA_OPTIONS, 4, 50, 1.0).table
     rule_scripts.run(sm, rule_scripts.script("du2022_table3_1").main)
-    pd.testing.assert_frame_equal(pd.read_csv(out.table), pd.read_csv(pd.io.common.StringIO(
-        expected.to_csv(index=False, float_format="%.6g"))))
+    pd.testing.assert_frame_equal(
+        pd.read_csv(out.table), pd.read_csv(pd.io.common.StringIO(expected.to_csv(index=False, float_format="%.6g")))
+    )
     curves = tmp_path / "walk_leftStance_pca.npz"
-    sm = FakeSnakemake(tmp_path, "du2022_fda_curves", input=Named(**inputs, sfpca=models[2:4]),
-                       output=Named(curves=str(curves)),
-                       params=Named(options={"seed": 0, "dims": [2, 4], "n_components": 4, "sfpca": SFPCA_OPTIONS,
-                                             "gplvm": {}}, methods=["sfpca"]),
-                       wildcards=Named(dataset="test", primitive="walk_leftStance", part="pca"))
+    sm = FakeSnakemake(
+        tmp_path,
+        "du2022_fda_curves",
+        input=Named(**inputs, sfpca=models[2:4]),
+        output=Named(curves=str(curves)),
+        params=Named(
+            options={"seed": 0, "dims": [2, 4], "n_components": 4, "sfpca": SFPCA_OPTIONS, "gplvm": {}},
+            methods=["sfpca"],
+        ),
+        wildcards=Named(dataset="test", primitive="walk_leftStance", part="pca"),
+    )
     assert Path(models[2]).stem == "walk_leftStance"
     rule_scripts.run(sm, rule_scripts.script("du2022_fda_curves").main)
     with np.load(curves) as z:

@@ -110,8 +110,14 @@ def test_a_nearly_straight_leg_keeps_bending_forwards():
     across = ik.knee[0] - np.dot(ik.knee[0], line) * line
     assert across[2] > 1.0 and np.allclose(ik.ankle, target)  # in front of the hip-ankle line
     for pole, side in (([0.0, 0.0, 1.0], 1.0), ([0.0, 0.0, -1.0], -1.0)):
-        k, a = knee_and_ankle(hip, np.array([[0.0, -70.0, 0.0]]), np.array([40.0]), np.array([40.0]),
-                              np.array([[0.0, -1.0, 0.0]]), fallback=np.array(pole))
+        k, a = knee_and_ankle(
+            hip,
+            np.array([[0.0, -70.0, 0.0]]),
+            np.array([40.0]),
+            np.array([40.0]),
+            np.array([[0.0, -1.0, 0.0]]),
+            fallback=np.array(pole),
+        )
         assert np.sign(k[0, 2]) == side and np.allclose(a, [[0.0, -70.0, 0.0]])
     w = bend_direction(np.array([[0.0, -1.0, 0.0]]), np.array([[0.0, -2.0, 0.0]]))  # no pole, no fallback
     assert np.isclose(np.linalg.norm(w), 1.0) and abs(w[0, 1]) < 1e-12
@@ -144,6 +150,7 @@ def test_leg_ik_on_the_cmu_rig_moves_the_ankle_and_keeps_the_foot():
 
 
 # ---------------------------------------------------------------- the displacement of a contact
+
 
 def sliding_foot(T=100, speed=0.2):
     """One foot of two joints (ankle 8 cm up, toe 2 cm up) planted on frames 20-59, sliding
@@ -197,6 +204,7 @@ def test_contact_offsets_follow_the_rolling_contact_point():
 
 # ---------------------------------------------------------------- the cleanup on walks
 
+
 @pytest.fixture(scope="module")
 def generator_walk():
     from motionvar.synth import generate_walk, make_subjects, sample_walk_params
@@ -221,8 +229,16 @@ def test_root_solver_defaults_to_the_papers_cleanup_and_checks_the_name(generato
     with pytest.raises(ValueError, match="foot_blend_s"):
         dataclasses.replace(solver, foot_blend_s=-1.0)
     paper = solver.motion(m.rotations, m.fps)
-    assert np.array_equal(paper.root_pos, reconstruct_root(m.rotations, m.skeleton, solver.feet, solver.planted,
-                                                           min_support_frames=int(round(solver.min_support_s * m.fps))))
+    assert np.array_equal(
+        paper.root_pos,
+        reconstruct_root(
+            m.rotations,
+            m.skeleton,
+            solver.feet,
+            solver.planted,
+            min_support_frames=int(round(solver.min_support_s * m.fps)),
+        ),
+    )
     assert np.array_equal(paper.rotations, m.rotations)
 
 
@@ -259,8 +275,10 @@ def test_root_plus_feet_pins_the_other_foot_of_a_sliding_walk(generator_walk):
     rot = m.rotations.copy()
     hip = JM.indices(m.skeleton, ["right_hip"])[0]
     wobble = np.radians(3.0) * np.sin(2 * np.pi * 2.7 * np.arange(m.n_frames) / m.fps)
-    rot[:, hip] = qmul(np.stack([np.cos(wobble / 2), np.zeros_like(wobble), np.zeros_like(wobble),
-                                 np.sin(wobble / 2)], axis=1), rot[:, hip])
+    rot[:, hip] = qmul(
+        np.stack([np.cos(wobble / 2), np.zeros_like(wobble), np.zeros_like(wobble), np.sin(wobble / 2)], axis=1),
+        rot[:, hip],
+    )
     paper = solver.motion(rot, m.fps)
     fixed = dataclasses.replace(solver, cleanup="root+feet").motion(rot, m.fps)
     before, after = walk_measures(paper, solver), walk_measures(fixed, solver)
@@ -269,9 +287,12 @@ def test_root_plus_feet_pins_the_other_foot_of_a_sliding_walk(generator_walk):
     legs = leg_chains(m.skeleton, solver.feet)
     pa, pb = paper.positions(), fixed.positions()
     for h, k, a in legs:
+
         def straightness(p):
-            return np.linalg.norm(p[:, a] - p[:, h], axis=1) / (np.linalg.norm(p[:, k] - p[:, h], axis=1)
-                                                                 + np.linalg.norm(p[:, a] - p[:, k], axis=1))
+            return np.linalg.norm(p[:, a] - p[:, h], axis=1) / (
+                np.linalg.norm(p[:, k] - p[:, h], axis=1) + np.linalg.norm(p[:, a] - p[:, k], axis=1)
+            )
+
         assert straightness(pb).max() <= max(straightness(pa).max(), 1.0 - 1e-9) + 1e-9
     step = np.linalg.norm(np.diff(pb, axis=0), axis=-1).max()
     assert step < 1.5 * np.linalg.norm(np.diff(pa, axis=0), axis=-1).max()  # no pop

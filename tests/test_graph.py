@@ -12,20 +12,47 @@ from claim_checks import check_value_bound
 from graph_toy import toy_clips
 
 from motionvar.core import cmu_joint_map
-from motionvar.io import load_dataset, save_dataset
 from motionvar.du2022.graph import (
-    Constraint, KeyFramePositionIndex, MedianKDTree, MorphableGraph, MotionPrimitive, Objective, Path2D,
-    PrimitiveOptions, SpacePartitioningTree, StepChain, StepGoal, WalkSettings, brute_force, concatenate_steps,
-    follow_path, optimize_chain, optimize_map, place_motion, primitive_clips, random_constraints, random_search,
-    select_beam, select_gmm,
+    Constraint,
+    KeyFramePositionIndex,
+    MedianKDTree,
+    MorphableGraph,
+    MotionPrimitive,
+    Objective,
+    Path2D,
+    PrimitiveOptions,
+    SpacePartitioningTree,
+    StepChain,
+    StepGoal,
+    WalkSettings,
+    brute_force,
+    concatenate_steps,
+    follow_path,
+    optimize_chain,
+    optimize_map,
+    place_motion,
+    primitive_clips,
+    random_constraints,
+    random_search,
+    select_beam,
+    select_gmm,
 )
 from motionvar.du2022.graph.evaluations import (
-    SearchSettings, coverage, evaluate_fig4_9, evaluate_fig4_10, evaluate_fig4_12, evaluate_sec4_6_1, motion_bytes,
-    search_comparison, search_primitive, summarize_search,
+    SearchSettings,
+    coverage,
+    evaluate_fig4_9,
+    evaluate_fig4_10,
+    evaluate_fig4_12,
+    evaluate_sec4_6_1,
+    motion_bytes,
+    search_comparison,
+    search_primitive,
+    summarize_search,
 )
 from motionvar.du2022.graph.figures import animate_fig4_10, draw_fig4_9, draw_fig4_10, draw_fig4_12, draw_sec4_6_1
 from motionvar.du2022.graph.kinematics import ancestors, chain_fk
 from motionvar.du2022.graph.morphable_graph import _to_local
+from motionvar.io import load_dataset, save_dataset
 
 OPT = PrimitiveOptions(n_basis=8, n_components=5, gmm_components=(1, 3), sfpca_max_iter=0)
 
@@ -51,10 +78,15 @@ def dataset(clips, tmp_path_factory):
     alternating left and right stance, clips 8-15 pick reaches."""
     d = tmp_path_factory.mktemp("prep")
     walk = ["walk_leftStance", "walk_rightStance"] * 4
-    meta = pd.DataFrame(dict(clip_id=[f"c{i}" for i in range(16)],
-                             source_clip=[f"w{i // 4}" for i in range(8)] + [f"p{i}" for i in range(8)],
-                             primitive=walk + ["pick_reach"] * 8, start_frame=[100 * (i % 4) for i in range(16)],
-                             stop_frame=[100 * (i % 4) + c.n_frames for i, c in enumerate(clips)]))
+    meta = pd.DataFrame(
+        dict(
+            clip_id=[f"c{i}" for i in range(16)],
+            source_clip=[f"w{i // 4}" for i in range(8)] + [f"p{i}" for i in range(8)],
+            primitive=walk + ["pick_reach"] * 8,
+            start_frame=[100 * (i % 4) for i in range(16)],
+            stop_frame=[100 * (i % 4) + c.n_frames for i, c in enumerate(clips)],
+        )
+    )
     save_dataset(d, clips, meta)
     return load_dataset(d)
 
@@ -62,8 +94,20 @@ def dataset(clips, tmp_path_factory):
 @pytest.fixture(scope="module")
 def joints(prim):
     jm, sk = cmu_joint_map(), prim.skeleton
-    return {k: jm.index(sk, k) for k in ("hips", "right_hand", "left_hand", "left_ankle", "right_ankle",
-                                         "left_shoulder", "right_shoulder", "left_hip", "right_hip")}
+    return {
+        k: jm.index(sk, k)
+        for k in (
+            "hips",
+            "right_hand",
+            "left_hand",
+            "left_ankle",
+            "right_ankle",
+            "left_shoulder",
+            "right_shoulder",
+            "left_hip",
+            "right_hip",
+        )
+    }
 
 
 def test_chain_fk_matches_full_fk(clips):
@@ -227,8 +271,9 @@ def test_beam_from_the_evaluation_budget(prim, joints):
     assert select_beam({2: 130.0, 3: 190.0}, 120) == (2, False)
     pose = [joints[k] for k in ("hips", "left_hand", "right_hand")]
     for budget in (1e6, 40.0):
-        st = SearchSettings(n_samples=400, n_queries=3, leaf_size=8, n_random=10, beams=(1, 2, 3),
-                            max_evaluations=budget)
+        st = SearchSettings(
+            n_samples=400, n_queries=3, leaf_size=8, n_random=10, beams=(1, 2, 3), max_evaluations=budget
+        )
         table, _ = search_comparison(prim, joints["right_hand"], pose, st)
         km = table[table["method"] == "kmeans"]
         mean = km.groupby("beam")["n_evals"].mean()
@@ -258,9 +303,13 @@ def test_map_optimisation_reaches_constraint(prim, joints):
 
 
 def test_graph_from_metadata():
-    meta = pd.DataFrame(dict(
-        source_clip=["a", "a", "a", "b", "b"], start_frame=[0, 30, 60, 0, 20],
-        primitive=["walk_start", "walk_leftStance", "walk_end", "pick_reach", "pick_retrieve"]))
+    meta = pd.DataFrame(
+        dict(
+            source_clip=["a", "a", "a", "b", "b"],
+            start_frame=[0, 30, 60, 0, 20],
+            primitive=["walk_start", "walk_leftStance", "walk_end", "pick_reach", "pick_retrieve"],
+        )
+    )
     g = MorphableGraph.from_metadata(meta.iloc[::-1])  # order of rows does not matter
     assert g.successors("walk_start") == ["walk_leftStance"]
     assert g.successors("walk_leftStance") == ["walk_end"]
@@ -285,8 +334,9 @@ def test_place_motion_and_local_frame(clips):
 
 def test_follow_straight_path(prim, right):
     prims = {"walk_leftStance": prim, "walk_rightStance": right}
-    meta = pd.DataFrame(dict(source_clip=["a"] * 4, start_frame=[0, 1, 2, 3],
-                             primitive=["walk_leftStance", "walk_rightStance"] * 2))
+    meta = pd.DataFrame(
+        dict(source_clip=["a"] * 4, start_frame=[0, 1, 2, 3], primitive=["walk_leftStance", "walk_rightStance"] * 2)
+    )
     g = MorphableGraph.from_metadata(meta, prims)
     trees = {k: SpacePartitioningTree(p.sample(300, 0), "kmeans", leaf_size=8) for k, p in prims.items()}
     path = Path2D(np.array([[0.0, 0.0], [200.0, 0.0]]))
@@ -307,7 +357,7 @@ def test_step_chain_errors_match_the_step_constraints(prim, right, joints):
 
     js = (joints["hips"], joints["left_hip"], joints["right_hip"])
     prims = [prim, right, prim]
-    S = [p.sample(1, k) [0] for k, p in enumerate(prims)]
+    S = [p.sample(1, k)[0] for k, p in enumerate(prims)]
     goals = [StepGoal([40.0 * (k + 1), 5.0 * k], [1.0, 0.0, 0.2 * k]) for k in range(3)]
     start, heading = np.array([3.0, -2.0]), np.array([0.9, 0.0, 0.3])
     chain = StepChain(prims, goals, start, heading, *js)
@@ -331,23 +381,31 @@ def test_joint_optimisation_never_worse_than_greedy(prim, right, corner):
     trade position against likelihood there: mean step error 37.9 cm against 37.85 cm
     greedy, not checked."""
     prims = {"walk_leftStance": prim, "walk_rightStance": right}
-    meta = pd.DataFrame(dict(source_clip=["a"] * 4, start_frame=[0, 1, 2, 3],
-                             primitive=["walk_leftStance", "walk_rightStance"] * 2))
+    meta = pd.DataFrame(
+        dict(source_clip=["a"] * 4, start_frame=[0, 1, 2, 3], primitive=["walk_leftStance", "walk_rightStance"] * 2)
+    )
     g = MorphableGraph.from_metadata(meta, prims)
     trees = {k: SpacePartitioningTree(p.sample(300, 0), "kmeans", leaf_size=8) for k, p in prims.items()}
     path = Path2D(np.array([[0.0, 0.0], [120.0, 0.0], [200.0, 80.0]] if corner else [[0.0, 0.0], [200.0, 20.0]]))
     jm = cmu_joint_map()
     runs = {}
-    for label, kw in (("greedy", {}), ("line9", dict(joint_steps="all")), ("last2", dict(joint_steps=2)),
-                      ("ahead", dict(look_ahead=2))):
+    for label, kw in (
+        ("greedy", {}),
+        ("line9", dict(joint_steps="all")),
+        ("last2", dict(joint_steps=2)),
+        ("ahead", dict(look_ahead=2)),
+    ):
         runs[label] = follow_path(g, trees, path, jm, WalkSettings(max_steps=6, max_nfev=30, **kw))
     greedy, line9 = runs["greedy"], runs["line9"]
     assert [s.primitive for s in line9] == [s.primitive for s in greedy]  # line 9 keeps the graph walk
     js = tuple(jm.index(prim.skeleton, k) for k in ("hips", "left_hip", "right_hip"))
-    chain = StepChain([prims[s.primitive] for s in greedy], [s.goal for s in greedy], path.points[0],
-                      path.tangent(0.0), *js)
-    cost = {k: float(np.sum(chain.residuals(np.concatenate([s.fit.latent for s in v])[None], 1.0) ** 2))
-            for k, v in (("greedy", greedy), ("line9", line9))}
+    chain = StepChain(
+        [prims[s.primitive] for s in greedy], [s.goal for s in greedy], path.points[0], path.tangent(0.0), *js
+    )
+    cost = {
+        k: float(np.sum(chain.residuals(np.concatenate([s.fit.latent for s in v])[None], 1.0) ** 2))
+        for k, v in (("greedy", greedy), ("line9", line9))
+    }
     assert cost["line9"] <= cost["greedy"] + 1e-9
     mean_pos = {k: np.mean([s.fit.errors_after[0] for s in v]) for k, v in runs.items()}
     if not corner:
@@ -377,10 +435,13 @@ def test_coverage_measures_overlap():
 
 
 def test_search_comparison_table(prim, joints):
-    pose = [joints[k] for k in ("hips", "left_shoulder", "right_shoulder", "left_hand", "right_hand",
-                                "left_ankle", "right_ankle")]
-    table, trees = search_comparison(prim, joints["right_hand"], pose,
-                                     SearchSettings(n_samples=500, n_queries=4, leaf_size=8, n_random=20))
+    pose = [
+        joints[k]
+        for k in ("hips", "left_shoulder", "right_shoulder", "left_hand", "right_hand", "left_ankle", "right_ankle")
+    ]
+    table, trees = search_comparison(
+        prim, joints["right_hand"], pose, SearchSettings(n_samples=500, n_queries=4, leaf_size=8, n_random=20)
+    )
     assert set(table["method"]) == {"kmeans", "gmm", "median", "median_means", "random", "brute_force"}
     # per kind and query: k-means at beams 2, 3, 4, then GMM, the kd-tree, our median split, random, brute force
     assert len(table) == 3 * 4 * (3 + 5)
@@ -392,7 +453,8 @@ def test_search_comparison_table(prim, joints):
     assert (wide.drop(columns="random").min(axis=1) >= wide["brute_force"] - 1e-9).all()  # trees search its samples
     summary = summarize_search(table)
     assert {"median", "median_over_random", "selected", "beam", "mean_evals", "share_under_120_evals"} <= set(
-        summary.columns)
+        summary.columns
+    )
     assert np.allclose(summary.loc[summary["method"] == "random", "median_over_random"], 1.0)
 
 
@@ -428,8 +490,9 @@ def test_fig4_12_verdicts_follow_the_numbers():
     assert claims["kmeans_halves_random_error_position"].verdict == "not reproduced"
     assert claims["kmeans_near_brute_force_position"].verdict == "not reproduced"
     # where even brute force cannot halve random's error the bar is not testable, never reproduced
-    rows = [dict(r, median=2.2) if (r["kind"] == "pose" and r["method"] in ("kmeans", "brute_force")) else r
-            for r in rows]
+    rows = [
+        dict(r, median=2.2) if (r["kind"] == "pose" and r["method"] in ("kmeans", "brute_force")) else r for r in rows
+    ]
     claims = {c.claim_id.split(".")[-1]: c for c in fig4_12_claims(pd.DataFrame(rows), per_query)}
     pose = claims["kmeans_halves_random_error_pose"]
     assert pose.verdict == "not testable" and "0.55" in pose.note and "brute force 0.55" in pose.measured
@@ -456,8 +519,10 @@ def test_primitive_clips_selects_and_names_the_file(dataset):
 def test_search_primitive_and_fig4_12(prim, right):
     settings = SearchSettings(n_samples=300, n_queries=3, leaf_size=8, n_random=10)
     pose = ["hips", "left_hand", "right_hand"]
-    tables = [search_primitive(p, cmu_joint_map(), settings, {"walk_leftStance": "left_ankle"}, "right_hand", pose)
-              for p in (prim, right)]
+    tables = [
+        search_primitive(p, cmu_joint_map(), settings, {"walk_leftStance": "left_ankle"}, "right_hand", pose)
+        for p in (prim, right)
+    ]
     queries, trees = tables[0]
     assert list(queries.columns[:3]) == ["primitive", "kind", "joint"] and set(queries["joint"]) == {"left_ankle"}
     assert set(tables[1][0]["joint"]) == {"right_hand"} and (trees["primitive"] == "walk_leftStance").all()
@@ -468,9 +533,14 @@ def test_search_primitive_and_fig4_12(prim, right):
     result = evaluate_fig4_12(pd.concat([t[0] for t in tables], ignore_index=True))
     assert len(result.table) == 2 * 3 * (3 + 5) and "mean_time_ms" not in result.table.columns
     assert [c.claim_id.split(".")[-1] for c in result.claims] == [
-        "kmeans_halves_random_error_position", "kmeans_halves_random_error_orientation",
-        "kmeans_halves_random_error_pose", "kmeans_under_120_evaluations", "gmm_tree_close_to_kmeans",
-        "median_tree_closer_to_random", "kmeans_near_brute_force_position"]
+        "kmeans_halves_random_error_position",
+        "kmeans_halves_random_error_orientation",
+        "kmeans_halves_random_error_pose",
+        "kmeans_under_120_evaluations",
+        "gmm_tree_close_to_kmeans",
+        "median_tree_closer_to_random",
+        "kmeans_near_brute_force_position",
+    ]
     assert "beams 2/3/4" in result.claims[0].measured and "kd-tree" in result.claims[5].note
     for c in result.claims:
         check_value_bound(c)
@@ -478,8 +548,9 @@ def test_search_primitive_and_fig4_12(prim, right):
 
 
 def test_fig4_9_coverage_of_the_training_clips(prim, dataset):
-    result = evaluate_fig4_9({"walk_leftStance": prim, "pick_reach": prim}, dataset, cmu_joint_map(), n_samples=2000,
-                             grid=32, seed=0)
+    result = evaluate_fig4_9(
+        {"walk_leftStance": prim, "pick_reach": prim}, dataset, cmu_joint_map(), n_samples=2000, grid=32, seed=0
+    )
     t = result.table
     assert len(t) == 9 and list(t["joint"].unique()) == ["left_ankle", "left_hand", "right_hand"]
     assert list(t["n_training"]) == [4] * 3 + [8] * 6 and t["coverage"].between(0, 1).all()
@@ -492,8 +563,16 @@ def test_fig4_9_coverage_of_the_training_clips(prim, dataset):
 
 def test_fig4_10_follows_path_and_reaches(prim, right, dataset, tmp_path):
     models = {"walk_leftStance": prim, "walk_rightStance": right, "pick_reach": prim}
-    result = evaluate_fig4_10(models, dataset, cmu_joint_map(), [[0.0, 0.0], [200.0, 0.0]], reach_targets=2,
-                              tree_samples=300, max_nfev=30, max_steps=4)
+    result = evaluate_fig4_10(
+        models,
+        dataset,
+        cmu_joint_map(),
+        [[0.0, 0.0], [200.0, 0.0]],
+        reach_targets=2,
+        tree_samples=300,
+        max_nfev=30,
+        max_steps=4,
+    )
     t = result.table
     assert list(t["task"].unique()) == ["path", "path_greedy", "path_line9", "reach"]
     assert (t["task"] == "reach").sum() == 2

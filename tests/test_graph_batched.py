@@ -15,8 +15,16 @@ from graph_toy import toy_clips
 
 from motionvar.core import cmu_joint_map
 from motionvar.du2022.graph import (
-    Constraint, KeyFramePositionIndex, MedianKDTree, MotionPrimitive, Objective, PrimitiveOptions,
-    SpacePartitioningTree, brute_force, random_constraints, random_search,
+    Constraint,
+    KeyFramePositionIndex,
+    MedianKDTree,
+    MotionPrimitive,
+    Objective,
+    PrimitiveOptions,
+    SpacePartitioningTree,
+    brute_force,
+    random_constraints,
+    random_search,
 )
 from motionvar.du2022.graph.constraints import ConstraintStack, constraint_errors
 from motionvar.du2022.graph.primitive import gmm_log_density
@@ -88,16 +96,24 @@ def test_constraint_stack_equals_one_query_at_a_time(prim, setup):
     joints = sorted(set(joints) | {lh, rh})
     pos, rot = prim.key_frame_pose(S[:50], [last], joints)
     rng = np.random.default_rng(0)
-    masked = [[Constraint("position", last, (hand,), rng.normal(size=(1, 3)), mask=np.array([1.0, 0.0, 1.0])),
-               Constraint("heading", last, (lh, rh), np.array([1.0, 0.0, rng.normal()]))] for _ in range(6)]
-    mixed = [[Constraint("position", last, (hand,), rng.normal(size=(1, 3)), mask=m)]
-             for m in ([1.0, 1.0, 1.0], [1.0, 0.0, 1.0], [0.0, 1.0, 0.0])]  # masks differ between queries
+    masked = [
+        [
+            Constraint("position", last, (hand,), rng.normal(size=(1, 3)), mask=np.array([1.0, 0.0, 1.0])),
+            Constraint("heading", last, (lh, rh), np.array([1.0, 0.0, rng.normal()])),
+        ]
+        for _ in range(6)
+    ]
+    mixed = [
+        [Constraint("position", last, (hand,), rng.normal(size=(1, 3)), mask=m)]
+        for m in ([1.0, 1.0, 1.0], [1.0, 0.0, 1.0], [0.0, 1.0, 0.0])
+    ]  # masks differ between queries
     for qs in [[[c] for c in queries[k]] for k in KINDS] + [masked, mixed]:
         stack = ConstraintStack(qs)
         query = rng.integers(0, len(qs), size=len(pos))
         got = stack.errors(pos, rot, [last], joints, query)
-        want = np.stack([constraint_errors(qs[q], pos[b:b + 1], rot[b:b + 1], [last], joints)[0]
-                         for b, q in enumerate(query)])
+        want = np.stack(
+            [constraint_errors(qs[q], pos[b : b + 1], rot[b : b + 1], [last], joints)[0] for b, q in enumerate(query)]
+        )
         assert np.array_equal(got, want)  # bit for bit, not approximately
     with pytest.raises(ValueError, match="same kinds, frames and joints"):
         ConstraintStack([[queries["position"][0]], [queries["orientation"][0]]])
@@ -131,8 +147,11 @@ def test_lockstep_tree_search_equals_one_query_at_a_time(prim, setup, kind):
             for c, r in zip(qs, many):
                 obj = Objective(prim, [c])
                 one = tree.search(obj, beam)
-                assert (r.index, r.error, r.n_evals) == (one.index, one.error, one.n_evals) == \
-                    _reference_beam(tree, Objective(prim, [c]), beam)
+                assert (
+                    (r.index, r.error, r.n_evals)
+                    == (one.index, one.error, one.n_evals)
+                    == _reference_beam(tree, Objective(prim, [c]), beam)
+                )
                 assert one.n_evals == obj.n_evals and np.array_equal(r.latent, S[r.index])
 
 
@@ -146,8 +165,11 @@ def test_lockstep_kd_search_equals_one_query_at_a_time(prim, setup):
         for c, r in zip(qs, many):
             obj = Objective(prim, [c])
             one = tree.search(obj)
-            assert (r.index, r.error, r.n_evals) == (one.index, one.error, one.n_evals) == \
-                _reference_greedy(tree, Objective(prim, [c]))
+            assert (
+                (r.index, r.error, r.n_evals)
+                == (one.index, one.error, one.n_evals)
+                == _reference_greedy(tree, Objective(prim, [c]))
+            )
             assert one.n_evals == obj.n_evals
 
 
@@ -167,8 +189,10 @@ def test_lockstep_searches_break_ties_as_the_reference(beam):
     kd = MedianKDTree(S, "cyclic")
     kd_many = kd.search_many(lambda q, r: evaluate(q, r, S), len(targets))
     for q, (r, k) in enumerate(zip(many, kd_many)):
+
         def objective(X, q=q):
             return np.round(np.linalg.norm(X - targets[q], axis=1) * 2.0)
+
         assert (r.index, r.error, r.n_evals) == _reference_beam(tree, objective, beam)
         assert (k.index, k.error, k.n_evals) == _reference_greedy(kd, objective)
 
@@ -190,7 +214,7 @@ def test_gmm_log_density_equals_score_samples(prim):
     for n in (1, 2, 17, 400):
         X = prim.sample(n, n) * 1.5
         assert np.array_equal(gmm_log_density(g, X), g.score_samples(X))
-        wide = np.concatenate([X, X], axis=1)[:, prim.n_latent:]  # a strided view, as StepChain.split gives
+        wide = np.concatenate([X, X], axis=1)[:, prim.n_latent :]  # a strided view, as StepChain.split gives
         assert np.array_equal(gmm_log_density(g, wide), g.score_samples(wide))
     assert np.array_equal(prim.log_prob(g.means_), g.score_samples(g.means_))
     with pytest.raises(ValueError, match="NaN or infinity"):

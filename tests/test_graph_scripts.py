@@ -19,8 +19,16 @@ from motionvar.io import save_dataset
 sys.modules.setdefault("_graph", rule_scripts._load("_graph", "_graph"))  # the scripts' shared loaders
 
 MODEL_OPTIONS = {  # params.options of du2022_graph_primitive: seed and config.graph.model, flat
-    "seed": 0, "n_basis": 8, "n_components": 4, "gmm_min": 1, "gmm_max": 2, "gmm_criterion": "bic",
-    "reg_covar": 1e-3, "sfpca_max_iter": 0, "sfpca_weight_groups": "function", "sfpca_eval_frames": None,
+    "seed": 0,
+    "n_basis": 8,
+    "n_components": 4,
+    "gmm_min": 1,
+    "gmm_max": 2,
+    "gmm_criterion": "bic",
+    "reg_covar": 1e-3,
+    "sfpca_max_iter": 0,
+    "sfpca_weight_groups": "function",
+    "sfpca_eval_frames": None,
 }
 
 
@@ -28,19 +36,29 @@ MODEL_OPTIONS = {  # params.options of du2022_graph_primitive: seed and config.g
 def prep_dir(tmp_path_factory):
     d = tmp_path_factory.mktemp("prep")
     clips = toy_clips(6)
-    meta = pd.DataFrame(dict(clip_id=[f"c{i}" for i in range(6)], source_clip=[f"s{i // 2}" for i in range(6)],
-                             primitive=["walk_leftStance"] * 4 + ["pick_reach"] * 2,
-                             start_frame=[0] * 6, stop_frame=[c.n_frames for c in clips]))
+    meta = pd.DataFrame(
+        dict(
+            clip_id=[f"c{i}" for i in range(6)],
+            source_clip=[f"s{i // 2}" for i in range(6)],
+            primitive=["walk_leftStance"] * 4 + ["pick_reach"] * 2,
+            start_frame=[0] * 6,
+            stop_frame=[c.n_frames for c in clips],
+        )
+    )
     save_dataset(d, clips, meta)
     return d
 
 
 def _primitive_rule(tmp_path, prep_dir, primitive):
     out = tmp_path / f"{primitive}.npz"
-    return out, FakeSnakemake(tmp_path, "du2022_graph_primitive", input=Named(clips=str(prep_dir / "clips.npz")),
-                              output=Named(model=str(out), meta=str(out.with_suffix(".json"))),
-                              params=Named(options=MODEL_OPTIONS),
-                              wildcards=Named(dataset="t", primitive=primitive))
+    return out, FakeSnakemake(
+        tmp_path,
+        "du2022_graph_primitive",
+        input=Named(clips=str(prep_dir / "clips.npz")),
+        output=Named(model=str(out), meta=str(out.with_suffix(".json"))),
+        params=Named(options=MODEL_OPTIONS),
+        wildcards=Named(dataset="t", primitive=primitive),
+    )
 
 
 def test_graph_primitive_fits_and_saves(tmp_path, prep_dir):
@@ -62,9 +80,12 @@ def test_graph_primitive_too_few_clips_names_file_and_key(tmp_path, prep_dir, ca
 
 def test_dense_picks_need_the_synthetic_generator(tmp_path, capsys):
     out = tmp_path / "dense" / "clips.npz"
-    sm = FakeSnakemake(tmp_path, "du2022_graph_dense_picks",
-                       output=Named(clips=str(out), metadata=str(out.parent / "m.csv")),
-                       params=Named(entry={"source": "bvh"}, options={}, prep={}, joint_map=None))
+    sm = FakeSnakemake(
+        tmp_path,
+        "du2022_graph_dense_picks",
+        output=Named(clips=str(out), metadata=str(out.parent / "m.csv")),
+        params=Named(entry={"source": "bvh"}, options={}, prep={}, joint_map=None),
+    )
     with pytest.raises(SystemExit):
         run(sm, script("du2022_graph_dense_picks").main)
     assert "dense picks need the synthetic generator" in capsys.readouterr().err

@@ -58,8 +58,15 @@ def test_map_fits_its_rig(name, rel):
 
     for part in ("hip", "shoulder", "hand", "knee"):
         assert frac_left(f"left_{part}", f"right_{part}") > 0.9, part
-    for upper, lower in [("head", "neck"), ("neck", "chest"), ("chest", "spine"), ("spine", "hips"),
-                         ("left_hip", "left_knee"), ("right_knee", "right_ankle"), ("left_elbow", "left_hand")]:
+    for upper, lower in [
+        ("head", "neck"),
+        ("neck", "chest"),
+        ("chest", "spine"),
+        ("spine", "hips"),
+        ("left_hip", "left_knee"),
+        ("right_knee", "right_ankle"),
+        ("left_elbow", "left_hand"),
+    ]:
         assert frac_above(upper, lower) > 0.9, (upper, lower)
 
 
@@ -75,14 +82,20 @@ BAD_MAPS = {
     "not a mapping": ("- Hips\n- Spine\n", "expected a mapping with 'joints'"),
     "unknown key": (CMU_TEXT + "extra: 1\n", "unknown keys ['extra']"),
     "missing semantic joint": (CMU_TEXT.replace("  head: Head\n", ""), "missing semantic joints ['head']"),
-    "unknown semantic joint": (CMU_TEXT.replace("  head: Head\n", "  head: Head\n  tail: Tail\n"),
-                               "unknown semantic joints ['tail']"),
+    "unknown semantic joint": (
+        CMU_TEXT.replace("  head: Head\n", "  head: Head\n  tail: Tail\n"),
+        "unknown semantic joints ['tail']",
+    ),
     "non-string joint": (CMU_TEXT.replace("  head: Head\n", "  head: [Head]\n"), "non-empty strings: ['head']"),
     "unknown group": (CMU_TEXT.replace("  legs:", "  feet:"), "unknown groups ['feet']"),
-    "group not a list": (CMU_TEXT.replace("  upper_body: [LowerBack, Spine, Spine1, Neck, Neck1, Head]",
-                                          "  upper_body: Spine"), "groups ['upper_body'] must be lists"),
-    "joint in two groups": (CMU_TEXT.replace("upper_body: [LowerBack,", "upper_body: [LeftArm, LowerBack,"),
-                            "listed more than once in groups: ['LeftArm']"),
+    "group not a list": (
+        CMU_TEXT.replace("  upper_body: [LowerBack, Spine, Spine1, Neck, Neck1, Head]", "  upper_body: Spine"),
+        "groups ['upper_body'] must be lists",
+    ),
+    "joint in two groups": (
+        CMU_TEXT.replace("upper_body: [LowerBack,", "upper_body: [LeftArm, LowerBack,"),
+        "listed more than once in groups: ['LeftArm']",
+    ),
 }
 
 

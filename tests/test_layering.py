@@ -15,10 +15,19 @@ SRC = Path(__file__).resolve().parents[1] / "src" / "motionvar"
 # of a lower level only. The three paper packages share the top level and never import
 # one another.
 LEVELS = {
-    "core": 0, "metrics": 0, "claims": 0, "applicability": 0,
-    "io": 1, "report": 1,
-    "synth": 2, "prep": 2, "models": 2, "plots": 2,
-    "ma2010": 3, "du2022": 3, "egges2004": 3,
+    "core": 0,
+    "metrics": 0,
+    "claims": 0,
+    "applicability": 0,
+    "io": 1,
+    "report": 1,
+    "synth": 2,
+    "prep": 2,
+    "models": 2,
+    "plots": 2,
+    "ma2010": 3,
+    "du2022": 3,
+    "egges2004": 3,
     "cli": 4,  # the `motionvar` command: glue over the papers and shared parts; nothing imports it
 }
 PAPERS = {"ma2010", "du2022", "egges2004"}

@@ -7,16 +7,35 @@ from ma2010_toywalk import toy_walk
 from motionvar.core import Motion, cmu_joint_map
 from motionvar.core.quaternions import qdistance_sinusoidal, qmul, qnormalize, quat_about_axis
 from motionvar.ma2010 import (
-    PropagationNetwork, StyleVariationModel, UniversalKriging, build_clipset, choose_structure, cut, extract_cycles,
-    fit_variogram, normalized_strides, resolve_structure, root_solver, structure_evidence,
+    PropagationNetwork,
+    StyleVariationModel,
+    UniversalKriging,
+    build_clipset,
+    choose_structure,
+    cut,
+    extract_cycles,
+    fit_variogram,
+    normalized_strides,
+    resolve_structure,
+    root_solver,
+    structure_evidence,
 )
 from motionvar.ma2010.correspondence import (
-    reference_key_positions, retime, space_warp, standard_skeleton, time_warp,
+    reference_key_positions,
+    retime,
+    space_warp,
+    standard_skeleton,
+    time_warp,
 )
 from motionvar.ma2010.keyframes import find_extrema, keyframe_signal
 from motionvar.ma2010.network import LOWER_FIRST, UPPER_FIRST
 from motionvar.ma2010.postprocess import (
-    blend_weights, foot_heights, landing_frame, reconstruct_root, support_foot, transition,
+    blend_weights,
+    foot_heights,
+    landing_frame,
+    reconstruct_root,
+    support_foot,
+    transition,
 )
 from motionvar.ma2010.variation import determinative_joints, joint_importance, joint_variation
 
@@ -29,8 +48,14 @@ def toy_clips():
     rng = np.random.default_rng(0)
     cycles, keys, ids = [], [], []
     for s in range(8):
-        m = toy_walk(hip_amp=rng.uniform(0.28, 0.42), arm_amp=rng.uniform(0.1, 0.5), period_s=rng.uniform(1.0, 1.2),
-                     height=rng.uniform(0.92, 1.08), twist=rng.uniform(0, 0.1), n_cycles=3)
+        m = toy_walk(
+            hip_amp=rng.uniform(0.28, 0.42),
+            arm_amp=rng.uniform(0.1, 0.5),
+            period_s=rng.uniform(1.0, 1.2),
+            height=rng.uniform(0.92, 1.08),
+            twist=rng.uniform(0, 0.1),
+            n_cycles=3,
+        )
         for k, c in enumerate(extract_cycles(m, JM).cycles):
             cycles.append(cut(m, c))
             keys.append(c.key_frames)
@@ -40,6 +65,7 @@ def toy_clips():
 
 
 # --- key frames (Eq. 1-4) ---------------------------------------------------------------
+
 
 def test_keyframes_of_a_walk_are_the_double_supports_and_passings():
     m = toy_walk(n_cycles=4)
@@ -78,11 +104,17 @@ def test_keyframe_signal_rejects_bad_shapes():
 
 # --- correspondence (Eq. 5-6, time warping) ----------------------------------------------
 
+
 def test_space_warp_turns_the_walk_onto_x_and_starts_at_origin():
     m = toy_walk(n_cycles=2)
     rot = quat_about_axis([0, 1, 0], 0.7)
-    turned = Motion(m.skeleton, m.root_pos @ np.array([[np.cos(.7), 0, -np.sin(.7)], [0, 1, 0], [np.sin(.7), 0, np.cos(.7)]]) + [50, 0, -20],
-                    m.rotations.copy(), m.fps)
+    turned = Motion(
+        m.skeleton,
+        m.root_pos @ np.array([[np.cos(0.7), 0, -np.sin(0.7)], [0, 1, 0], [np.sin(0.7), 0, np.cos(0.7)]])
+        + [50, 0, -20],
+        m.rotations.copy(),
+        m.fps,
+    )
     turned.rotations[:, 0] = qmul(rot, turned.rotations[:, 0])
     w = space_warp(turned, JM)
     d = w.root_pos[-1] - w.root_pos[0]
@@ -117,6 +149,7 @@ def test_standard_skeleton_is_the_mean_and_checks_topology():
 
 # --- latent variation (Eq. 7-9) ------------------------------------------------------------
 
+
 def test_joint_variation_sums_sinusoidal_distances():
     T, step = 11, 0.1
     rot = np.zeros((1, T, 3, 4))
@@ -130,6 +163,7 @@ def test_joint_variation_sums_sinusoidal_distances():
 
 
 # --- parameter propagation network (Eq. 10) -------------------------------------------------
+
 
 def test_network_recovers_linear_gaussian_weights_and_samples():
     rng = np.random.default_rng(2)
@@ -149,7 +183,9 @@ def test_network_recovers_linear_gaussian_weights_and_samples():
     fixed = net.sample([120.0, 120.0], rng=rng, fixed={"upper_body": 2.0})
     assert fixed["upper_body"][0] == 2.0
     mean = net.sample([120.0, 120.0], noise=False)
-    assert mean["left_arm"][0] == pytest.approx(net.nodes_["left_arm"].weights[0] * mean["upper_body"][0] + net.nodes_["left_arm"].mu)
+    assert mean["left_arm"][0] == pytest.approx(
+        net.nodes_["left_arm"].weights[0] * mean["upper_body"][0] + net.nodes_["left_arm"].mu
+    )
     with pytest.raises(ValueError, match="unknown groups"):
         net.sample([120.0, 120.0], rng=rng, fixed={"tail": 1.0})
 
@@ -161,6 +197,7 @@ def test_network_structures_follow_fig5():
 
 
 # --- universal Kriging (Sec. 6.1) -------------------------------------------------------------
+
 
 def test_kriging_interpolates_examples_and_weights_sum_to_one():
     rng = np.random.default_rng(3)
@@ -187,7 +224,9 @@ def test_kriging_reproduces_a_hyperplane_and_handles_duplicates():
 def test_variogram_fit_recovers_a_linear_variogram():
     rng = np.random.default_rng(5)
     x = np.sort(rng.uniform(0, 100, 400))[:, None]
-    r = np.cumsum(rng.normal(0, 1, (400, 300)) * np.sqrt(np.diff(x[:, 0], prepend=0))[:, None], axis=0)  # Brownian: gamma = h/2
+    r = np.cumsum(
+        rng.normal(0, 1, (400, 300)) * np.sqrt(np.diff(x[:, 0], prepend=0))[:, None], axis=0
+    )  # Brownian: gamma = h/2
     v = fit_variogram(x, r - r.mean(axis=0), "linear", n_bins=10)
     assert v.params[0] == pytest.approx(0.5, rel=0.2) and v.nugget < 2.0
     with pytest.raises(ValueError, match="unknown variogram model"):
@@ -202,6 +241,7 @@ def test_kriging_rejects_bad_input():
 
 
 # --- post-processing (Sec. 6.3) ------------------------------------------------------------------
+
 
 def test_blend_weights_eq15():
     rho = blend_weights(5)
@@ -286,8 +326,11 @@ def generator_walks():
     from motionvar.synth import generate_walk, make_subjects, sample_walk_params
 
     rng = np.random.default_rng(1)
-    return [generate_walk(s, sample_walk_params(s, rng, style, n_steps=6))
-            for s in make_subjects(2, seed=7) for style in ("neutral", "childlike")]
+    return [
+        generate_walk(s, sample_walk_params(s, rng, style, n_steps=6))
+        for s in make_subjects(2, seed=7)
+        for style in ("neutral", "childlike")
+    ]
 
 
 def support_runs(solver, m):
@@ -342,13 +385,16 @@ def test_flight_phases_follow_the_predicted_root_height():
     solver = root_solver(m.skeleton, JM)
     high = np.full(m.n_frames, 500.0)  # predicted curve far above the ground: every frame is in flight
     high[:3] = m.root_pos[:3, 1]
-    root = reconstruct_root(m.rotations, m.skeleton, solver.feet, solver.planted, root_height=high, flight_threshold=5.0)
+    root = reconstruct_root(
+        m.rotations, m.skeleton, solver.feet, solver.planted, root_height=high, flight_threshold=5.0
+    )
     assert np.allclose(root[5:, 1], 500.0)
     v = np.diff(root[5:, [0, 2]], axis=0)
     assert np.allclose(v, v[0])  # constant horizontal speed in flight
 
 
 # --- the whole model (Sec. 5-6) ---------------------------------------------------------------------
+
 
 def test_clipset_style_is_the_stride_on_the_standard_skeleton(toy_clips):
     assert toy_clips.style.shape == (toy_clips.n_clips, 2)
@@ -362,7 +408,9 @@ def test_model_predicts_held_out_strides_and_varies_at_fixed_style(toy_clips):
     rng = np.random.default_rng(6)
     errors = []
     for i in (0, 7, 13):
-        model = StyleVariationModel(groups).fit(toy_clips.subset(np.arange(toy_clips.n_clips) != i), d_lower=1, d_upper=0)
+        model = StyleVariationModel(groups).fit(
+            toy_clips.subset(np.arange(toy_clips.n_clips) != i), d_lower=1, d_upper=0
+        )
         pred, _ = model.synthesize_clips(toy_clips.style[i], rng=rng)
         rot, _ = retime(pred.rotations[0], model.reference_keys_, pred.key_times[0], toy_clips.fps)
         kf = np.minimum(np.round((pred.key_times[0] - pred.key_times[0, 0]) * toy_clips.fps).astype(int), len(rot) - 1)
@@ -395,8 +443,10 @@ def test_auto_structure_measures_d_l_and_d_u_of_the_examples(toy_clips):
     d_l, d_u = structure_evidence(toy_clips, groups)
     sk = toy_clips.skeleton
     upper = np.setdiff1d(np.arange(sk.n_joints), groups["legs"])
-    per_clip = [keyframe_signal(fk(r, np.zeros((len(r), 3)), sk.offsets, sk.parents), groups["legs"], upper)
-                for r in toy_clips.rotations]
+    per_clip = [
+        keyframe_signal(fk(r, np.zeros((len(r), 3)), sk.offsets, sk.parents), groups["legs"], upper)
+        for r in toy_clips.rotations
+    ]
     assert d_l == pytest.approx(np.sqrt(sum(s.d_lower**2 for s in per_clip)))
     assert d_u == pytest.approx(np.sqrt(sum(s.d_upper**2 for s in per_clip))) and d_l > d_u
     assert resolve_structure("auto", toy_clips, groups) == "lower_first"

@@ -33,10 +33,19 @@ JM = cmu_joint_map()
 def toy_dataset(path, styles, n_cycles=3):
     """Toy walkers of growing stride, some lengthening their strides as they walk (a steady
     walker's two support strides are equal: the style space would be a line)."""
-    motions = [toy_walk(hip_amp=0.3 + 0.03 * i, arm_amp=0.2 + 0.1 * i, n_cycles=n_cycles, hip_growth=0.03 * (i % 3))
-               for i in range(len(styles))]
-    meta = pd.DataFrame({"clip_id": [f"w{i}" for i in range(len(styles))], "subject": [f"{i:02d}" for i in range(len(styles))],
-                         "behaviour": "walk", "style": styles, "variant": "forward"})
+    motions = [
+        toy_walk(hip_amp=0.3 + 0.03 * i, arm_amp=0.2 + 0.1 * i, n_cycles=n_cycles, hip_growth=0.03 * (i % 3))
+        for i in range(len(styles))
+    ]
+    meta = pd.DataFrame(
+        {
+            "clip_id": [f"w{i}" for i in range(len(styles))],
+            "subject": [f"{i:02d}" for i in range(len(styles))],
+            "behaviour": "walk",
+            "style": styles,
+            "variant": "forward",
+        }
+    )
     save_dataset(path, motions, meta)
     return load_dataset(path)
 
@@ -71,8 +80,9 @@ def test_walk_cycles_cut_walks_into_cycles(tmp_path):
     assert np.all(table["left_support_stride_cm"] > 50) and set(table["subject"]) == {"00", "01", "02"}
 
 
-@pytest.mark.parametrize("styles, n_cycles, expected", [(["proud", "proud"], 3, "no clip with"),
-                                                         (["neutral"], 1.2, "need at least 3")])
+@pytest.mark.parametrize(
+    "styles, n_cycles, expected", [(["proud", "proud"], 3, "no clip with"), (["neutral"], 1.2, "need at least 3")]
+)
 def test_walk_cycles_name_the_problem(tmp_path, styles, n_cycles, expected):
     data = toy_dataset(tmp_path, styles, n_cycles)
     with pytest.raises(ValueError, match=expected) as err:
@@ -108,8 +118,10 @@ def test_fig6_leave_one_out(walks):
     assert {"ours_own_xi_root_upper_body", "least_squares", "kriging", "rbf"} <= set(summary["method"])
     assert set(summary["cycles"]) <= {"all", "steady", "closing"} and "all" in set(summary["cycles"])
     assert set(summary.loc[summary["method"] == "ours_own_xi", "root_group"]) == {"legs"}
-    assert [c.claim_id for c in result.claims] == ["ma2010.fig6.loo_max_stride_error_below_1_2cm",
-                                                   "ma2010.mk05.kriging_beats_rbf"]
+    assert [c.claim_id for c in result.claims] == [
+        "ma2010.fig6.loo_max_stride_error_below_1_2cm",
+        "ma2010.mk05.kriging_beats_rbf",
+    ]
     assert "steady cycles" in result.claims[0].measured and "upper_body" in result.claims[0].note
     stride, kriging = result.claims
     assert stride.value == folds["ours_own_xi_stride_error_cm"].max() and (stride.bound, stride.unit) == (1.2, "cm")
@@ -132,8 +144,9 @@ def test_fig6_compares_with_the_validation_cycle_through_the_same_measure(walks)
     assert np.allclose(folds["validation_stride_error_cm"], np.abs(validation - style).max(axis=1))
     assert "validation" in set(result.table.loc[result.table["kind"] == "summary", "method"])
     assert "floor" in result.claims[0].note and result.figure["stride_reference"] == "validation"
-    by_style = fig6_leave_one_out(walks, "lower_first", "linear", seed=0, max_clips=2, ablation=False,
-                                  stride_reference="style").table
+    by_style = fig6_leave_one_out(
+        walks, "lower_first", "linear", seed=0, max_clips=2, ablation=False, stride_reference="style"
+    ).table
     by_style = by_style[by_style["kind"] == "fold"]
     assert np.allclose(by_style["ours_own_xi_stride_error_cm"], by_style["ours_own_xi_style_error_cm"])
     with pytest.raises(ValueError, match="stride_reference must be one of"):
@@ -185,8 +198,9 @@ def test_fig6_whole_walk_folds_leave_out_every_sibling(walks):
     size = pd.Series(walks.source_clips).value_counts()
     assert np.array_equal(folds["n_train"], walks.clips.n_clips - size[folds["source_clip"]].to_numpy())
     assert "ours_own_xi_root_upper_body_stride_error_cm" not in folds
-    per_cycle = fig6_leave_one_out(walks, "lower_first", "linear", seed=0, max_clips=3, loo_unit="cycle",
-                                   ablation=False).table
+    per_cycle = fig6_leave_one_out(
+        walks, "lower_first", "linear", seed=0, max_clips=3, loo_unit="cycle", ablation=False
+    ).table
     assert np.all(per_cycle.loc[per_cycle["kind"] == "fold", "n_train"] == walks.clips.n_clips - 1)
 
 
@@ -214,16 +228,23 @@ def test_fig8_variants_vary_and_interpolations_do_not(walks, model):
 
 
 def test_sec7_4_comparison(walks):
-    result = sec7_4_comparison(walks, n_examples=3, seconds=2.0, n_sequences=2, gplvm_iterations=2,
-                               gplvm_frame_step=4, dbn_max_parents=4)
+    result = sec7_4_comparison(
+        walks, n_examples=3, seconds=2.0, n_sequences=2, gplvm_iterations=2, gplvm_frame_step=4, dbn_max_parents=4
+    )
     t = result.table
     assert set(t["method"]) == {*METHODS, "examples"} and (t["method"] != "examples").sum() == 2 * len(METHODS)
     assert list(result.figure["sequences"]) == list(METHODS)
     ours = t[t["method"] == "ours"]["variation_between_sequences_cm"]
     rbf = t[t["method"] == "rbf"]["variation_between_sequences_cm"]
     assert np.all(ours > 0) and np.allclose(rbf, 0.0)
-    for col in ("jerk_cm_s3", "root_free_jerk_cm_s3", "foot_skating_cm_s", "low_joint_speed_cm_s", "contact_share",
-                *NATURALNESS_SCORES):
+    for col in (
+        "jerk_cm_s3",
+        "root_free_jerk_cm_s3",
+        "foot_skating_cm_s",
+        "low_joint_speed_cm_s",
+        "contact_share",
+        *NATURALNESS_SCORES,
+    ):
         assert col in t
     ex = t[t["method"] == "examples"]
     assert np.isfinite(ex[["jerk_cm_s3", "root_free_jerk_cm_s3", "foot_skating_cm_s"]].to_numpy()).all()

@@ -9,12 +9,27 @@ import pytest
 from scipy.spatial.distance import cdist
 
 from motionvar.ma2010.kriging import (
-    AUTO_MODELS, UniversalKriging, Variogram, bin_count, empirical_semivariogram, fit_semivariogram, output_weights,
+    AUTO_MODELS,
+    UniversalKriging,
+    Variogram,
+    bin_count,
+    empirical_semivariogram,
+    fit_semivariogram,
+    output_weights,
 )
 
 
-def draw_gp(n: int, p: int, d: int, family: str = "exponential", sill: float = 1.0, rng_: float = 1.0,
-            nugget: float = 0.2, box: float = 8.0, seed: int = 0) -> tuple[np.ndarray, np.ndarray]:
+def draw_gp(
+    n: int,
+    p: int,
+    d: int,
+    family: str = "exponential",
+    sill: float = 1.0,
+    rng_: float = 1.0,
+    nugget: float = 0.2,
+    box: float = 8.0,
+    seed: int = 0,
+) -> tuple[np.ndarray, np.ndarray]:
     """n points uniform in [0, box]^p and d independent outputs, each a zero-mean GP with
     covariance sill * rho(h / rng_) plus white noise of variance ``nugget``: semivariogram
     nugget + sill * (1 - rho(h / rng_))."""
@@ -122,6 +137,7 @@ def test_kriging_interpolates_and_flat_residuals_do_not_break_the_fit():
 
 # --- the diagnostic evaluation (ma2010_variogram) on toy walkers -------------------------------------
 
+
 def test_variogram_evaluation_table_and_figure(tmp_path):
     import matplotlib
 
@@ -138,10 +154,18 @@ def test_variogram_evaluation_table_and_figure(tmp_path):
     from motionvar.ma2010.svi import GROUP_ORDER
 
     jm = cmu_joint_map()
-    motions = [toy_walk(hip_amp=0.3 + 0.03 * i, arm_amp=0.2 + 0.1 * i, n_cycles=3, hip_growth=0.03 * (i % 3))
-               for i in range(4)]
-    meta = pd.DataFrame({"clip_id": [f"w{i}" for i in range(4)], "subject": [f"{i:02d}" for i in range(4)],
-                         "behaviour": "walk", "style": "neutral", "variant": "forward"})
+    motions = [
+        toy_walk(hip_amp=0.3 + 0.03 * i, arm_amp=0.2 + 0.1 * i, n_cycles=3, hip_growth=0.03 * (i % 3)) for i in range(4)
+    ]
+    meta = pd.DataFrame(
+        {
+            "clip_id": [f"w{i}" for i in range(4)],
+            "subject": [f"{i:02d}" for i in range(4)],
+            "behaviour": "walk",
+            "style": "neutral",
+            "variant": "forward",
+        }
+    )
     save_dataset(tmp_path, motions, meta)
     clips, table = walk_cycles(load_dataset(tmp_path), jm, ["neutral"], ["forward"], n_frames=24)
     walks = WalkCycles(clips, table["subject"].tolist(), jm, source="toy walks")

@@ -4,13 +4,12 @@ cycle table; bad input is one error line naming the config key or file, with no 
 left behind."""
 
 import json
-import sys
 
 import numpy as np
 import pandas as pd
 import pytest
-from ma2010_toywalk import toy_walk
 import rule_scripts
+from ma2010_toywalk import toy_walk
 from rule_scripts import FakeSnakemake, Named, run, script
 
 from motionvar.io import save_dataset
@@ -19,15 +18,25 @@ from motionvar.io import save_dataset
 rule_scripts.helper_module("_ma2010")
 
 OPTIONS = {
-    "walk_styles": ["neutral"], "walk_variants": ["forward"], "n_frames": 24, "keyframe_prominence": 0.1,
+    "walk_styles": ["neutral"],
+    "walk_variants": ["forward"],
+    "n_frames": 24,
+    "keyframe_prominence": 0.1,
     "keyframe_min_separation_s": 0.1,
 }
 
 
 def toy_dataset(tmp_path, styles, n_cycles=3):
     motions = [toy_walk(hip_amp=0.3 + 0.03 * i, arm_amp=0.2 + 0.1 * i, n_cycles=n_cycles) for i in range(len(styles))]
-    meta = pd.DataFrame({"clip_id": [f"w{i}" for i in range(len(styles))], "subject": [f"{i:02d}" for i in range(len(styles))],
-                         "behaviour": "walk", "style": styles, "variant": "forward"})
+    meta = pd.DataFrame(
+        {
+            "clip_id": [f"w{i}" for i in range(len(styles))],
+            "subject": [f"{i:02d}" for i in range(len(styles))],
+            "behaviour": "walk",
+            "style": styles,
+            "variant": "forward",
+        }
+    )
     save_dataset(tmp_path / "data", motions, meta)
     return tmp_path / "data"
 
@@ -35,10 +44,14 @@ def toy_dataset(tmp_path, styles, n_cycles=3):
 def clips_fake(tmp_path, data):
     out = tmp_path / "models"
     fake = FakeSnakemake(
-        tmp_path, "ma2010_clips",
+        tmp_path,
+        "ma2010_clips",
         input=Named(clips=str(data / "clips.npz"), metadata=str(data / "metadata.csv")),
-        output=Named(clips=str(out / "walk_clips.npz"), clips_settings=str(out / "walk_clips.json"),
-                     table=str(out / "walk_cycles.csv")),
+        output=Named(
+            clips=str(out / "walk_clips.npz"),
+            clips_settings=str(out / "walk_clips.json"),
+            table=str(out / "walk_cycles.csv"),
+        ),
         params=Named(options=OPTIONS, joint_map=None),
     )
     out.mkdir()
@@ -56,8 +69,10 @@ def test_clips_script_writes_the_cycles_as_a_model_file(tmp_path):
     assert len(table) >= 3 and set(table["source_clip"]) == {"w0", "w1", "w2"}
 
 
-@pytest.mark.parametrize("styles, n_cycles, expected", [(["proud", "proud"], 3, "config ma2010.walk_styles"),
-                                                         (["neutral"], 1.2, "need at least 3")])
+@pytest.mark.parametrize(
+    "styles, n_cycles, expected",
+    [(["proud", "proud"], 3, "config ma2010.walk_styles"), (["neutral"], 1.2, "need at least 3")],
+)
 def test_clips_script_names_the_problem(tmp_path, capsys, styles, n_cycles, expected):
     out, fake = clips_fake(tmp_path, toy_dataset(tmp_path, styles, n_cycles))
     with pytest.raises(SystemExit):
@@ -74,11 +89,20 @@ def test_evaluation_scripts_reject_a_stale_cycle_table(tmp_path, capsys):
     table.iloc[:-1].to_csv(out / "walk_cycles.csv", index=False)
     ev = tmp_path / "ev"
     fake = FakeSnakemake(
-        tmp_path, "ma2010_sec8",
+        tmp_path,
+        "ma2010_sec8",
         input=Named(clips=str(out / "walk_clips.npz"), table=str(out / "walk_cycles.csv")),
         output=Named(table=str(ev / "t.csv"), figure=str(ev / "f.png"), claims=str(ev / "c.json")),
-        params=Named(options={"structure": "auto", "variogram_model": "linear", "seed": 0, "timing_seconds": 2.0,
-                              "timing_repeats": 1}, joint_map=None),
+        params=Named(
+            options={
+                "structure": "auto",
+                "variogram_model": "linear",
+                "seed": 0,
+                "timing_seconds": 2.0,
+                "timing_repeats": 1,
+            },
+            joint_map=None,
+        ),
     )
     with pytest.raises(SystemExit):
         run(fake, script("ma2010_sec8").main)

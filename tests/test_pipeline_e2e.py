@@ -27,7 +27,10 @@ WALL_GUARD_S = 3 * CI_BUDGET_S
 def snakemake(*args, cwd, timeout=900):
     return subprocess.run(
         [sys.executable, "-m", "snakemake", "-s", SNAKEFILE, *args],
-        cwd=cwd, capture_output=True, text=True, timeout=timeout,
+        cwd=cwd,
+        capture_output=True,
+        text=True,
+        timeout=timeout,
     )
 
 
@@ -85,8 +88,13 @@ def test_motionvar_command_generates_from_the_ci_models(ci_run, tmp_path):
     models = work / "results" / "synthetic" / "models"
 
     def cli(*args):
-        r = subprocess.run([sys.executable, "-m", "motionvar.cli.main", *args, "--dataset", "synthetic", "--quiet"],
-                           cwd=work, capture_output=True, text=True, timeout=300)
+        r = subprocess.run(
+            [sys.executable, "-m", "motionvar.cli.main", *args, "--dataset", "synthetic", "--quiet"],
+            cwd=work,
+            capture_output=True,
+            text=True,
+            timeout=300,
+        )
         assert r.returncode == 0, r.stdout + r.stderr
         return r.stdout
 
@@ -101,8 +109,13 @@ def test_motionvar_command_generates_from_the_ci_models(ci_run, tmp_path):
     walks = sorted((tmp_path / "ma").glob("*.bvh"))
     styles = sorted((tmp_path / "style").glob("*.bvh"))
     assert len(walks) == 2 and len(styles) == 2
-    for path, seconds in [(walks[0], 5.0), (walks[1], 5.0), (tmp_path / "idle.bvh", 10.0),
-                          (tmp_path / "walk.bvh", None), (styles[0], None)]:
+    for path, seconds in [
+        (walks[0], 5.0),
+        (walks[1], 5.0),
+        (tmp_path / "idle.bvh", 10.0),
+        (tmp_path / "walk.bvh", None),
+        (styles[0], None),
+    ]:
         m = read_bvh(path)
         assert m.skeleton.names == cmu_skeleton().names, path  # the synthetic data's rig
         if seconds is not None:

@@ -54,9 +54,12 @@ def test_a_floor_point_named_as_hips_fails(synthetic):
     floor = JointMap({**jm.joints, "hips": "LeftToeBase"}, jm.groups, origin="config/joint_maps/mine.yaml")
     problems = check_plausibility(walks, _meta(walks), floor).problems
     n = len(walks)
-    assert any(p.startswith("pelvis (joint map hips = LeftToeBase) is ") and f"{n}/{n} clips outside" in p
-               and "a standing human pelvis is 60-130 cm high: check the joint map's 'hips' "
-                   "(config/joint_maps/mine.yaml)" in p for p in problems), problems
+    assert any(
+        p.startswith("pelvis (joint map hips = LeftToeBase) is ")
+        and f"{n}/{n} clips outside" in p
+        and "a standing human pelvis is 60-130 cm high: check the joint map's 'hips' (config/joint_maps/mine.yaml)" in p
+        for p in problems
+    ), problems
 
 
 def test_a_wrong_unit_fails_with_the_unit_that_fits(synthetic):
@@ -101,8 +104,10 @@ def test_gate_raises_one_line_and_can_be_switched_off(synthetic, caplog):
 
 # ---------------------------------------------------------------- the real sets
 
-BANDAI_ALIASES = {"sidestep_left": {"behaviour": "sidestep", "variant": "left"},
-                  "sidestep_right": {"behaviour": "sidestep", "variant": "right"}}
+BANDAI_ALIASES = {
+    "sidestep_left": {"behaviour": "sidestep", "variant": "left"},
+    "sidestep_right": {"behaviour": "sidestep", "variant": "right"},
+}
 REAL_SETS = {
     # name: (unit_cm, joint map, import keywords, clips kept)
     "xia": (5.644444, None, {}, 16),
@@ -140,5 +145,9 @@ def test_real_bandai_with_the_floor_root_as_hips_fails(tmp_path):
     jm = load_joint_map(wrong)
     motions, meta = import_bvh_folder(folder, "labels.csv", unit, joint_map=jm, **kw)
     problems = check_plausibility(motions, meta, jm, unit).problems
-    assert any(p.startswith("pelvis (joint map hips = joint_Root) is ") and "75/75 clips outside 60-130 cm" in p
-               and f"check the joint map's 'hips' ({wrong})" in p for p in problems), problems
+    assert any(
+        p.startswith("pelvis (joint map hips = joint_Root) is ")
+        and "75/75 clips outside 60-130 cm" in p
+        and f"check the joint map's 'hips' ({wrong})" in p
+        for p in problems
+    ), problems

@@ -9,7 +9,15 @@ from motionvar.core import Motion, cmu_skeleton
 from motionvar.core.quaternions import qidentity, quat_about_axis
 from motionvar.io import load_dataset, save_dataset
 from motionvar.plots import (
-    KeyFrameRow, animate_motions, dataset_overview, gif_page, key_frame_grid, overview_clips, project, view_axis, write_gif,
+    KeyFrameRow,
+    animate_motions,
+    dataset_overview,
+    gif_page,
+    key_frame_grid,
+    overview_clips,
+    project,
+    view_axis,
+    write_gif,
 )
 from motionvar.plots.stick import joint_sides
 
@@ -29,7 +37,16 @@ def swinging_clip(n_frames=60, fps=30.0, speed_cm_s=100.0, swing=0.4):
 def test_joint_sides_from_names():
     names = ["Hips", "LHipJoint", "LeftUpLeg", "RightArm", "RThumb", "lShldr", "hand_r", "Hand.L", "LowerBack", "Root"]
     assert joint_sides(names, len(names)) == [
-        "centre", "left", "left", "right", "right", "left", "right", "left", "centre", "centre",
+        "centre",
+        "left",
+        "left",
+        "right",
+        "right",
+        "left",
+        "right",
+        "left",
+        "centre",
+        "centre",
     ]
 
 
@@ -74,10 +91,14 @@ def test_key_frame_grid_rejects_bad_positions():
 
 def _tiny_dataset(tmp_path):
     clips = [swinging_clip(), swinging_clip(speed_cm_s=0.0, swing=0.05), swinging_clip(speed_cm_s=150.0, swing=0.6)]
-    meta = pd.DataFrame({
-        "clip_id": ["w1", "i1", "w2"], "subject": ["01", "01", "02"],
-        "behaviour": ["walk", "idle", "walk"], "style": ["neutral", None, "proud"],
-    })
+    meta = pd.DataFrame(
+        {
+            "clip_id": ["w1", "i1", "w2"],
+            "subject": ["01", "01", "02"],
+            "behaviour": ["walk", "idle", "walk"],
+            "style": ["neutral", None, "proud"],
+        }
+    )
     save_dataset(tmp_path / "data", clips, meta)
     return load_dataset(tmp_path / "data")
 

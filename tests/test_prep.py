@@ -18,13 +18,33 @@ from motionvar.core import JointMap, Motion, Skeleton, cmu_joint_map, cmu_skelet
 from motionvar.core import quaternions as Q
 from motionvar.io import load_dataset, save_dataset
 from motionvar.prep import (
-    FootContacts, PrepOptions, Segment, align_motion, align_motions, apply_warp, clean_mask,
-    detect_foot_contacts, dtw_warp, facing_directions, format_intervals, format_segments, intervals_to_mask,
-    mask_to_intervals, median_length_index, parse_intervals, parse_segments, preprocess_dataset,
-    resample_motion, sample_motion, segment_motion, warp_to_median, DROPPED_COLUMNS, drop_summary,
+    DROPPED_COLUMNS,
+    FootContacts,
+    PrepOptions,
+    Segment,
+    align_motion,
+    align_motions,
+    apply_warp,
+    clean_mask,
+    detect_foot_contacts,
+    drop_summary,
+    dtw_warp,
+    facing_directions,
+    format_intervals,
+    format_segments,
+    intervals_to_mask,
+    mask_to_intervals,
+    median_length_index,
+    parse_intervals,
+    parse_segments,
+    preprocess_dataset,
+    resample_motion,
+    sample_motion,
+    segment_motion,
+    warp_to_median,
 )
 from motionvar.prep.pipeline import too_short
-from motionvar.prep.segmentation import reach_boundary, sidestep_segments, standing_ends, step_segments, trailing_foot
+from motionvar.prep.segmentation import reach_boundary, sidestep_segments, step_segments, trailing_foot
 from motionvar.prep.timewarp import check_warp
 
 FPS = 120.0
@@ -77,8 +97,10 @@ def renamed_rig(m: Motion) -> tuple[Motion, JointMap]:
     names = tuple(f"j{k}_{n.lower()}" for k, n in enumerate(m.skeleton.names))
     rename = dict(zip(m.skeleton.names, names))
     sk = replace(m.skeleton, names=names)
-    jm = JointMap(joints={s: rename[n] for s, n in JM.joints.items()},
-                  groups={g: tuple(rename[n] for n in ns) for g, ns in JM.groups.items()})
+    jm = JointMap(
+        joints={s: rename[n] for s, n in JM.joints.items()},
+        groups={g: tuple(rename[n] for n in ns) for g, ns in JM.groups.items()},
+    )
     return replace(m, skeleton=sk), jm
 
 
@@ -314,8 +336,10 @@ def _heading(m: Motion) -> np.ndarray:
 def test_alignment_starts_at_origin_heading_x():
     rng = np.random.default_rng(3)
     base = stepping(WALK_STEPS, 2.5)
-    clips = [turned(base.slice(k * 10, 200 + k * 10), rng.uniform(-np.pi, np.pi), rng.uniform(-300, 300, 2))
-             for k in range(5)]
+    clips = [
+        turned(base.slice(k * 10, 200 + k * 10), rng.uniform(-np.pi, np.pi), rng.uniform(-300, 300, 2))
+        for k in range(5)
+    ]
     assert not np.allclose(_heading(clips[0]), [1, 0, 0], atol=0.1)
     aligned = align_motions(clips, JM)
     for src, a in zip(clips, aligned):
@@ -470,10 +494,15 @@ def small_dataset(tmp_path: Path, with_truth: bool = True) -> Path:
     walk = turned(stepping(WALK_STEPS, 2.5), 1.2, (100.0, -40.0))
     idle = turned(standing(90), -2.0, (-30.0, 60.0))
     motions = [walk, idle]
-    meta = pd.DataFrame({
-        "clip_id": ["w1", "i1"], "subject": ["s1", "s1"], "behaviour": ["walk", "idle"],
-        "style": ["neutral", "neutral"], "primitive": ["", ""],
-    })
+    meta = pd.DataFrame(
+        {
+            "clip_id": ["w1", "i1"],
+            "subject": ["s1", "s1"],
+            "behaviour": ["walk", "idle"],
+            "style": ["neutral", "neutral"],
+            "primitive": ["", ""],
+        }
+    )
     if with_truth:
         meta["segments"] = ["walk_start:0:70;walk_rightStance:70:130;walk_leftStance:130:301", "idle:0:90"]
     d = tmp_path / "data"
@@ -496,7 +525,11 @@ def test_preprocess_dataset_detected_and_ground_truth(tmp_path):
         assert np.allclose(_heading(m), [1.0, 0.0, 0.0], atol=1e-6)
     gt_motions, gt, _ = preprocess_dataset(ds, JM, PrepOptions(use_ground_truth_segments=True))
     assert gt[["primitive", "start_frame", "stop_frame"]].values.tolist() == [
-        ["walk_start", 0, 70], ["walk_rightStance", 70, 130], ["walk_leftStance", 130, 301], ["idle", 0, 90]]
+        ["walk_start", 0, 70],
+        ["walk_rightStance", 70, 130],
+        ["walk_leftStance", 130, 301],
+        ["idle", 0, 90],
+    ]
     assert gt_motions[1].n_frames == 60
     # round trip through a packed dataset
     save_dataset(tmp_path / "prep", gt_motions, gt)
@@ -523,19 +556,24 @@ def test_preprocess_dataset_errors(tmp_path):
         preprocess_dataset(ds, JointMap(joints={k: v for k, v in JM.joints.items() if k != "head"}))
     # a "run" standing still has no step: dropped and listed (default), or an error naming it
     one_step = replace(ds, metadata=ds.metadata.assign(behaviour=["idle", "run"]))
-    with pytest.raises(ValueError, match="1 of 2 clips of dataset d1 .*clip i1: no run primitive found.*"
-                                         "skip_unsegmentable: true"):
+    with pytest.raises(
+        ValueError, match="1 of 2 clips of dataset d1 .*clip i1: no run primitive found.*skip_unsegmentable: true"
+    ):
         preprocess_dataset(one_step, JM, PrepOptions(skip_unsegmentable=False), name="d1")
     _, meta, dropped = preprocess_dataset(one_step, JM)
     assert meta["clip_id"].tolist() == ["w1_00"]
     assert dropped[["clip_id", "behaviour", "primitive", "n_frames", "reason"]].values.tolist() == [
-        ["i1", "run", "", 90, "no primitive found"]]
+        ["i1", "run", "", 90, "no primitive found"]
+    ]
 
 
 def test_too_short_primitives_are_dropped_and_counted(tmp_path):
     ds = load_dataset(small_dataset(tmp_path))
     assert too_short([Segment("a", 0, 1), Segment("b", 0, 23), Segment("c", 0, 24)], FPS, 0.2).tolist() == [
-        True, True, False]  # 24 frames at 120 fps are 0.2 s: kept
+        True,
+        True,
+        False,
+    ]  # 24 frames at 120 fps are 0.2 s: kept
     assert too_short([Segment("a", 5, 6)], FPS, 0.0).tolist() == [True]  # one frame is never a primitive
     segs = ["walk_start:0:70;walk_rightStance:70:71;walk_leftStance:71:93;walk_end:93:301", "idle:0:20"]
     short = replace(ds, metadata=ds.metadata.assign(segments=segs))
@@ -545,20 +583,22 @@ def test_too_short_primitives_are_dropped_and_counted(tmp_path):
     assert result.metadata["primitive"].tolist() == ["walk_start", "walk_end"]
     assert [m.n_frames for m in result.motions] == [70, 208]
     assert result.dropped[["clip_id", "primitive", "start_frame", "n_frames", "reason"]].values.tolist() == [
-        ["w1", "walk_rightStance", 70, 1, "too short"], ["w1", "walk_leftStance", 71, 22, "too short"],
-        ["i1", "idle", 0, 20, "too short"]]
+        ["w1", "walk_rightStance", 70, 1, "too short"],
+        ["w1", "walk_leftStance", 71, 22, "too short"],
+        ["i1", "idle", 0, 20, "too short"],
+    ]
     assert np.allclose(result.dropped["duration_s"], [1 / 120, 22 / 120, 20 / 120])
     summary = drop_summary(result, len(short), "d1", 0.2)
     assert "dataset d1: 2 clips -> 2 primitives from 1 clips (walk_end 1, walk_start 1)" in summary
-    assert "dropped 3 primitives shorter than 0.2 s (idle 1, walk_leftStance 1, " \
-           "walk_rightStance 1)" in summary
+    assert "dropped 3 primitives shorter than 0.2 s (idle 1, walk_leftStance 1, walk_rightStance 1)" in summary
     assert "dropped 1 clips with no primitive left (0 with none found, 1 with all too short; idle 1)" in summary
     # the threshold is a config value: at 0 only the one-frame sliver goes
     kept = preprocess_dataset(short, JM, replace(opt, min_primitive_s=0.0))
     assert kept.metadata["primitive"].tolist() == ["walk_start", "walk_leftStance", "walk_end", "idle"]
     # a clip left empty stops the run when skip_unsegmentable is off, naming it
-    with pytest.raises(ValueError, match="1 of 2 clips of dataset d1.*clip i1: all 1 idle primitives shorter than "
-                                         "0.2 s"):
+    with pytest.raises(
+        ValueError, match="1 of 2 clips of dataset d1.*clip i1: all 1 idle primitives shorter than 0.2 s"
+    ):
         preprocess_dataset(short, JM, replace(opt, skip_unsegmentable=False), name="d1")
 
 
@@ -572,14 +612,20 @@ def test_preprocess_script_lists_and_logs_what_it_dropped(tmp_path, capsys):
 
     def fake(options):
         return FakeSnakemake(
-            tmp_path, "preprocess", input=Named(clips=str(tmp_path / "short" / "clips.npz")),
+            tmp_path,
+            "preprocess",
+            input=Named(clips=str(tmp_path / "short" / "clips.npz")),
             output=Named(clips=str(out / "clips.npz"), metadata=str(out / "metadata.csv")),
-            params=Named(options=options, joint_map=None), wildcards=Named(dataset="mine"))
+            params=Named(options=options, joint_map=None),
+            wildcards=Named(dataset="mine"),
+        )
 
     run(fake({"use_ground_truth_segments": True}), script("preprocess").main)
     dropped = pd.read_csv(out / "dropped.csv")
     assert dropped[["clip_id", "primitive", "n_frames", "reason"]].values.tolist() == [
-        ["w1", "walk_rightStance", 1, "too short"], ["i1", "idle", 20, "too short"]]
+        ["w1", "walk_rightStance", 1, "too short"],
+        ["i1", "idle", 20, "too short"],
+    ]
     assert pd.read_csv(out / "metadata.csv")["clip_id"].tolist() == ["w1_00", "w1_01"]
     log = (tmp_path / "preprocess.log").read_text()
     assert "WARNING dataset mine: 2 clips -> 2 primitives from 1 clips" in log and "shorter than 0.2 s" in log
@@ -596,14 +642,20 @@ def test_preprocess_script_lists_and_logs_what_it_dropped(tmp_path, capsys):
 def test_nothing_left_names_the_dataset_and_the_commonest_reason(tmp_path):
     ds = load_dataset(small_dataset(tmp_path))
     slivers = replace(ds, metadata=ds.metadata.assign(segments=["walk_start:0:3;walk_end:3:5", "idle:0:2"]))
-    with pytest.raises(ValueError, match="no primitive left in dataset d1 \\(2 clips\\); most common reason: in 2 "
-                                         "clips every primitive was shorter than prep.min_primitive_s = 0.2 s"):
+    with pytest.raises(
+        ValueError,
+        match="no primitive left in dataset d1 \\(2 clips\\); most common reason: in 2 "
+        "clips every primitive was shorter than prep.min_primitive_s = 0.2 s",
+    ):
         preprocess_dataset(slivers, JM, PrepOptions(use_ground_truth_segments=True), name="d1")
     still = [turned(standing(90), 0.3 * k, (10.0 * k, 0.0)) for k in range(3)]
     meta = pd.DataFrame({"clip_id": ["a", "b", "c"], "subject": "s", "style": "neutral", "behaviour": "run"})
     save_dataset(tmp_path / "still", still, meta)
-    with pytest.raises(ValueError, match="no primitive left in dataset d2 \\(3 clips\\); most common reason: no "
-                                         "primitive found in 3 clips \\(run: 3\\)"):
+    with pytest.raises(
+        ValueError,
+        match="no primitive left in dataset d2 \\(3 clips\\); most common reason: no "
+        "primitive found in 3 clips \\(run: 3\\)",
+    ):
         preprocess_dataset(load_dataset(tmp_path / "still"), JM, name="d2")
 
 
@@ -654,8 +706,15 @@ def synthetic_clips():
         where = dict(start_xz=tuple(rng.uniform(-300, 300, 2)), heading_deg=float(rng.uniform(-180, 180)))
         walks = [
             WalkParams(style=("neutral", "old", "angry")[k], first_foot=("left", "right")[k % 2], **where),
-            WalkParams(style="depressed", turn_deg=(-50.0, 40.0, 70.0)[k], speed_cm_s=90.0, stride_length_cm=110.0,
-                       stand_start_s=0.1, stand_end_s=0.1, **where),
+            WalkParams(
+                style="depressed",
+                turn_deg=(-50.0, 40.0, 70.0)[k],
+                speed_cm_s=90.0,
+                stride_length_cm=110.0,
+                stand_start_s=0.1,
+                stand_end_s=0.1,
+                **where,
+            ),
         ]
         out += [("walk", *locomotion.generate_walk(subject, p)) for p in walks]
         out.append(("run", *locomotion.generate_run(subject, RunParams(first_foot=("right", "left")[k % 2], **where))))
@@ -694,10 +753,15 @@ def test_synthetic_segmentation_finds_every_step(synthetic):
 @needs_synth
 def test_synthetic_aligned_primitives_start_at_origin_heading_x(synthetic, tmp_path):
     motions = [m for _, m, _ in synthetic]
-    meta = pd.DataFrame({
-        "clip_id": [f"c{k}" for k in range(len(motions))], "subject": "s", "style": "neutral",
-        "behaviour": [b for b, _, _ in synthetic], "segments": [t["segments"] for _, _, t in synthetic],
-    })
+    meta = pd.DataFrame(
+        {
+            "clip_id": [f"c{k}" for k in range(len(motions))],
+            "subject": "s",
+            "style": "neutral",
+            "behaviour": [b for b, _, _ in synthetic],
+            "segments": [t["segments"] for _, _, t in synthetic],
+        }
+    )
     save_dataset(tmp_path, motions, meta)
     ds = load_dataset(tmp_path)
     for truth in (False, True):

@@ -9,7 +9,6 @@ from pathlib import Path
 
 import pandas as pd
 import pytest
-
 from rule_scripts import FakeSnakemake, Named, rule_module
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -89,8 +88,9 @@ def test_job_cpu_comes_from_the_jobs_log_line(two_runs, tmp_path):
     pr = _profile_rules()
     after, before = two_runs
     (after / "logs" / "fit").mkdir(parents=True)
-    (after / "logs" / "data.log").write_text("x INFO rule data\nx INFO job cpu 9.500 s (user 9, system 0.5), "
-                                            "peak rss 500 MB\nx INFO done\n")
+    (after / "logs" / "data.log").write_text(
+        "x INFO rule data\nx INFO job cpu 9.500 s (user 9, system 0.5), peak rss 500 MB\nx INFO done\n"
+    )
     (after / "logs" / "fit" / "a.log").write_text("x INFO job cpu 1.0 s\nx INFO job cpu 31.250 s (user 30)\n")
     (after / "logs" / "fit" / "b.log").write_text("x INFO an older run: no line\n")
     jobs = pr.read_jobs(after).set_index(["rule", "job"])
@@ -138,7 +138,11 @@ def test_profile_hook_writes_a_profile_per_job(tmp_path, monkeypatch):
     run(_job(tmp_path), _main)
     run(_job(tmp_path, primitive="walk", part="pca"), _main)
     assert sorted(p.name for p in folder.iterdir()) == [
-        "some_rule.prof", "some_rule.txt", "some_rule.walk_pca.prof", "some_rule.walk_pca.txt"]
+        "some_rule.prof",
+        "some_rule.txt",
+        "some_rule.walk_pca.prof",
+        "some_rule.walk_pca.txt",
+    ]
     stats = pstats.Stats(str(folder / "some_rule.prof"))
     assert any(func[2] == "_main" for func in stats.stats)
     text = (folder / "some_rule.txt").read_text()

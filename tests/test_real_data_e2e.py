@@ -4,7 +4,6 @@ clean with a claims table, its summary and the report; evaluations the data cann
 support are `not applicable` with their reason, the others get checked verdicts."""
 
 import shutil
-from pathlib import Path
 
 import pandas as pd
 import pytest
@@ -29,8 +28,16 @@ def real_run(tmp_path_factory):
     # the config's paths are relative to the working directory, as from the repository root
     (base / "shared").symlink_to(ROOT.parent / "shared")
     shutil.copytree(ROOT / "config" / "joint_maps", work / "config" / "joint_maps")
-    result = snakemake("-d", str(work), "--configfile", CI_CONFIG, str(ROOT / "config" / "real" / f"{DATASET}.yaml"),
-                       "--cores", "2", cwd=work)
+    result = snakemake(
+        "-d",
+        str(work),
+        "--configfile",
+        CI_CONFIG,
+        str(ROOT / "config" / "real" / f"{DATASET}.yaml"),
+        "--cores",
+        "2",
+        cwd=work,
+    )
     assert result.returncode == 0, result.stdout[-4000:] + result.stderr[-8000:]
     return work
 

@@ -16,18 +16,24 @@ SCRIPTS = Path(__file__).resolve().parents[1] / "workflow" / "scripts"
 
 CASES = {
     # the runner of every rule script (pandas and matplotlib only where a rule uses them)
-    "rule runner": (f"import sys; sys.path.insert(0, {str(SCRIPTS)!r}); import _rule",
-                    ["pandas", "matplotlib", "scipy", "sklearn", "torch"]),
+    "rule runner": (
+        f"import sys; sys.path.insert(0, {str(SCRIPTS)!r}); import _rule",
+        ["pandas", "matplotlib", "scipy", "sklearn", "torch"],
+    ),
     # rule applicability: the papers' requirements, not their models
-    "requirements": ("import motionvar.applicability, motionvar.du2022.requirements, "
-                     "motionvar.egges2004.requirements, motionvar.ma2010.requirements",
-                     ["sklearn", "scipy.signal", "scipy.stats", "scipy.spatial", "matplotlib", "torch"]),
+    "requirements": (
+        "import motionvar.applicability, motionvar.du2022.requirements, "
+        "motionvar.egges2004.requirements, motionvar.ma2010.requirements",
+        ["sklearn", "scipy.signal", "scipy.stats", "scipy.spatial", "matplotlib", "torch"],
+    ),
     # rules gif_page_*: an HTML page around a GIF
     "gif page": ("from motionvar.plots import gif_page", ["matplotlib", "pandas", "scipy", "torch"]),
     # the Egges 2004 evaluations of a fitted model (fitting it needs scikit-learn; they do not)
-    "egges2004 evaluations": ("from motionvar.egges2004.storage import load_idle_model; "
-                              "from motionvar.egges2004.evaluations import fitting, idle_animation, repetition, speed",
-                              ["sklearn", "scipy.stats", "torch"]),
+    "egges2004 evaluations": (
+        "from motionvar.egges2004.storage import load_idle_model; "
+        "from motionvar.egges2004.evaluations import fitting, idle_animation, repetition, speed",
+        ["sklearn", "scipy.stats", "torch"],
+    ),
 }
 
 

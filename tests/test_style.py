@@ -14,16 +14,59 @@ from claim_checks import check_value_bound
 from motionvar.core import JointMap, Motion, cmu_joint_map, cmu_skeleton
 from motionvar.core import quaternions as Q
 from motionvar.du2022.style import (
-    ConvAutoencoder, FeatureScaler, FeatureSpace, MotionVAE, TrainConfig, content_loss, diagonal_minima,
-    diversity, features_to_positions, gram, gram_distance, gram_distance_maps, heading_angles, kl_loss, load_vae, motion_features,
-    motions_features, positions_to_features, sample_features, sample_maps, save_vae, sliding_windows, step_lengths,
-    style_distance, style_distance_matrix, style_joints, style_loss, train_autoencoder, train_vae,
+    ConvAutoencoder,
+    FeatureScaler,
+    FeatureSpace,
+    MotionVAE,
+    TrainConfig,
+    content_loss,
+    diagonal_minima,
+    diversity,
+    features_to_positions,
+    gram,
+    gram_distance,
+    gram_distance_maps,
+    heading_angles,
+    kl_loss,
+    load_vae,
+    motion_features,
+    motions_features,
+    positions_to_features,
+    sample_features,
+    sample_maps,
+    save_vae,
+    sliding_windows,
+    step_lengths,
+    style_distance,
+    style_distance_matrix,
+    style_joints,
+    style_loss,
+    train_autoencoder,
+    train_vae,
 )
 
 CMU_21 = (
-    "Hips", "Spine", "Spine1", "Neck1", "Head", "LeftShoulder", "LeftArm", "LeftForeArm", "LeftHand",
-    "RightShoulder", "RightArm", "RightForeArm", "RightHand", "LeftUpLeg", "LeftLeg", "LeftFoot",
-    "LeftToeBase", "RightUpLeg", "RightLeg", "RightFoot", "RightToeBase",
+    "Hips",
+    "Spine",
+    "Spine1",
+    "Neck1",
+    "Head",
+    "LeftShoulder",
+    "LeftArm",
+    "LeftForeArm",
+    "LeftHand",
+    "RightShoulder",
+    "RightArm",
+    "RightForeArm",
+    "RightHand",
+    "LeftUpLeg",
+    "LeftLeg",
+    "LeftFoot",
+    "LeftToeBase",
+    "RightUpLeg",
+    "RightLeg",
+    "RightFoot",
+    "RightToeBase",
 )
 
 
@@ -54,6 +97,7 @@ def layout():
 
 
 # ---------------------------------------------------------------- features (Sec. 5.2)
+
 
 def test_style_joints_are_the_21_of_the_thesis(layout):
     assert layout.names == CMU_21
@@ -147,6 +191,7 @@ def test_scaler_pools_positions_and_inverts(layout):
 
 # ---------------------------------------------------------------- networks (Eq. 5.1-5.2, Fig. 5.3)
 
+
 def test_conv_autoencoder_shapes_and_eq_5_2_depooling():
     torch.manual_seed(0)
     ae = ConvAutoencoder(66)
@@ -177,6 +222,7 @@ def test_vae_architecture_of_fig_5_3():
 
 
 # ---------------------------------------------------------------- losses (Eq. 5.6-5.12)
+
 
 def test_content_and_kl_losses():
     y = torch.tensor([[1.0, 2.0], [0.0, 0.0]])
@@ -210,13 +256,18 @@ def test_gram_sum_and_mean_differ_by_the_frame_count_in_the_style_terms():
     30-frame maps is 30 times larger summed than averaged, so the Frobenius style term
     (Eq. 5.10) is 30 times larger at the same alpha and the mean squared distance 900 times."""
     gen = torch.Generator().manual_seed(1)
-    a, b = torch.rand(2, 3, 16, 30, generator=gen, dtype=torch.float64), torch.rand(16, 30, generator=gen, dtype=torch.float64)
+    a, b = (
+        torch.rand(2, 3, 16, 30, generator=gen, dtype=torch.float64),
+        torch.rand(16, 30, generator=gen, dtype=torch.float64),
+    )
     assert torch.allclose(gram_distance_maps(a, b, "sum"), 900 * gram_distance_maps(a, b, "mean"), rtol=1e-9)
     fro_sum = float(style_loss(a, b, 200.0, gram_reduce="sum"))
     fro_mean = float(style_loss(a, b, 200.0, gram_reduce="mean"))
     assert fro_sum == pytest.approx(30 * fro_mean, rel=1e-6)
     ms_sum = float(style_loss(a, b, 200.0, norm="mean_squared", gram_reduce="sum"))
-    assert ms_sum == pytest.approx(900 * float(style_loss(a, b, 200.0, norm="mean_squared", gram_reduce="mean")), rel=1e-9)
+    assert ms_sum == pytest.approx(
+        900 * float(style_loss(a, b, 200.0, norm="mean_squared", gram_reduce="mean")), rel=1e-9
+    )
     # Table 5.1's distance stays on the average (the thesis' scale) unless asked
     assert float(style_distance(a[0], b)) == pytest.approx(float(gram_distance_maps(a[0], b, "mean").mean()))
     assert float(style_distance(a[0], b, "sum")) == pytest.approx(900 * float(style_distance(a[0], b)))
@@ -226,7 +277,10 @@ def test_gram_sum_and_mean_differ_by_the_frame_count_in_the_style_terms():
 
 def test_gram_distance_from_maps_equals_the_explicit_one():
     gen = torch.Generator().manual_seed(0)
-    a, b = torch.rand(3, 5, 16, 10, generator=gen, dtype=torch.float64), torch.rand(16, 7, generator=gen, dtype=torch.float64)
+    a, b = (
+        torch.rand(3, 5, 16, 10, generator=gen, dtype=torch.float64),
+        torch.rand(16, 7, generator=gen, dtype=torch.float64),
+    )
     for reduce in ("sum", "mean"):
         ref = gram_distance(gram(a, reduce), gram(b, reduce))
         assert ref.shape == (3, 5)
@@ -235,12 +289,15 @@ def test_gram_distance_from_maps_equals_the_explicit_one():
         # Eq. 5.10 as printed: the Frobenius norm of the Gram difference
         fro = torch.linalg.matrix_norm(gram(a, reduce) - gram(b, reduce)).mean()
         assert float(style_loss(a, b, 2.0, gram_reduce=reduce)) == pytest.approx(2.0 * float(fro), rel=1e-6)
-        assert float(style_loss(a, b, 2.0, norm="mean_squared", gram_reduce=reduce)) == pytest.approx(2.0 * float(ref.mean()))
+        assert float(style_loss(a, b, 2.0, norm="mean_squared", gram_reduce=reduce)) == pytest.approx(
+            2.0 * float(ref.mean())
+        )
     with pytest.raises(ValueError, match="norm must be"):
         style_loss(a, b, 2.0, norm="l1")
 
 
 # ---------------------------------------------------------------- training
+
 
 @pytest.fixture(scope="module")
 def tiny(layout):
@@ -248,8 +305,9 @@ def tiny(layout):
     clips = [toy_walk(n_frames=120, seed=s, turn=0.2 * s) for s in range(6)]
     windows = sliding_windows([motion_features(m, layout) for m in clips], 60, 30)
     scaler = FeatureScaler.fit(windows, 21)
-    ae, hist = train_autoencoder(scaler.transform(windows), TrainConfig(epochs=30, lr=3e-3, batch_size=8, seed=0),
-                                 n_kernels=16)
+    ae, hist = train_autoencoder(
+        scaler.transform(windows), TrainConfig(epochs=30, lr=3e-3, batch_size=8, seed=0), n_kernels=16
+    )
     prims = motions_features([toy_walk(seed=10 + s, swing=0.4 + 0.02 * s) for s in range(12)], layout)
     return FeatureSpace(ae, scaler), hist, prims
 
@@ -314,7 +372,9 @@ def test_sliced_adam_is_torch_adam_bit_for_bit():
     for size in (7, 1 << 18):
         sliced = run(lambda params: SlicedAdam(params, 1e-2, slice_size=size))
         assert all(torch.equal(a, b) for a, b in zip(reference, sliced))
-    assert isinstance(TrainConfig(1, 1e-3, 4).make_optimizer(MotionVAE(8, hidden=(4,), latent=2).parameters()), SlicedAdam)
+    assert isinstance(
+        TrainConfig(1, 1e-3, 4).make_optimizer(MotionVAE(8, hidden=(4,), latent=2).parameters()), SlicedAdam
+    )
     with pytest.raises(ValueError, match="slice_size"):
         SlicedAdam([torch.nn.Parameter(torch.zeros(3))], 1e-3, slice_size=0)
 
@@ -342,14 +402,19 @@ def test_vae_and_cvae_training(tiny):
     assert hist["loss"].iloc[-1] < hist["loss"].iloc[0] and (hist["style"] == 0).all()
     # a style example far from the content: the CVAE's samples move toward its Gram matrix
     example = space.encode(motions_features([toy_walk(seed=99, swing=1.2, arm=1.0, speed=4.0)], space_layout()))[0]
-    cvae, chist = train_vae(maps, cfg, n_samples=3, style_maps=example, alpha=200.0, init=vae,
-                            hidden=(64, 32, 16), latent=4)
+    cvae, chist = train_vae(
+        maps, cfg, n_samples=3, style_maps=example, alpha=200.0, init=vae, hidden=(64, 32, 16), latent=4
+    )
     assert chist["style"].iloc[-1] < chist["style"].iloc[0]
     from motionvar.du2022.style import active_units
 
     assert 0 <= active_units(vae, maps) <= 4
-    d_vae = float(style_distance(space.reencode(vae.sample(200, torch.Generator().manual_seed(1)).reshape(200, 16, 30)), example))
-    d_cvae = float(style_distance(space.reencode(cvae.sample(200, torch.Generator().manual_seed(1)).reshape(200, 16, 30)), example))
+    d_vae = float(
+        style_distance(space.reencode(vae.sample(200, torch.Generator().manual_seed(1)).reshape(200, 16, 30)), example)
+    )
+    d_cvae = float(
+        style_distance(space.reencode(cvae.sample(200, torch.Generator().manual_seed(1)).reshape(200, 16, 30)), example)
+    )
     assert d_cvae < d_vae
     with pytest.raises(ValueError, match="style_maps must be"):
         train_vae(maps, cfg, style_maps=example[:3], hidden=(64, 32, 16), latent=4)
@@ -412,11 +477,16 @@ def test_save_load_sample_and_distance_matrix(tiny, tmp_path, layout):
     b = sample_features(vae2, shape, space2, 5, seed=3)
     assert a.shape == (5, 60, 66) and np.array_equal(a, b)
     maps5 = sample_maps(vae, shape, 5, seed=3)  # decoded in chunks into one array: as concatenating the chunks
-    chunks = np.concatenate([space.decode(maps5[i:i + 2]) for i in range(0, 5, 2)])
+    chunks = np.concatenate([space.decode(maps5[i : i + 2]) for i in range(0, 5, 2)])
     assert sample_features(vae, shape, space, 5, seed=3, chunk=2).tobytes() == chunks.tobytes()
     assert space2.reconstruction_rmse(prims) == pytest.approx(space.reconstruction_rmse(prims))
-    table = style_distance_matrix({"neutral": (vae, shape), "other": (vae2, shape)},
-                                  {"neutral": prims.mean(axis=0), "other": prims[0]}, space, 10, seed=0)
+    table = style_distance_matrix(
+        {"neutral": (vae, shape), "other": (vae2, shape)},
+        {"neutral": prims.mean(axis=0), "other": prims[0]},
+        space,
+        10,
+        seed=0,
+    )
     assert table.shape == (2, 2) and np.isfinite(table.to_numpy()).all()
     assert set(diagonal_minima(table)) <= {"neutral", "other"}
     with pytest.raises(FileNotFoundError, match="missing"):
@@ -434,6 +504,7 @@ def test_diagonal_minima():
 
 
 # ---------------------------------------------------------------- diversity (Eq. 5.13-5.15)
+
 
 def test_diversity_by_hand():
     rng = np.random.default_rng(0)
@@ -453,18 +524,21 @@ def test_diversity_by_hand():
 
 # ---------------------------------------------------------------- data selection (Sec. 5.4.1, 5.4.3)
 
+
 @pytest.fixture(scope="module")
 def prim_dataset(tmp_path_factory):
     from motionvar.io import load_dataset, save_dataset
 
     motions = [toy_walk(n_frames=50 + 5 * k, seed=k) for k in range(6)]
-    meta = pd.DataFrame({
-        "clip_id": [f"c{k}" for k in range(6)],
-        "primitive": ["walk_leftStance"] * 5 + ["run_rightStance"],
-        "style": ["neutral", "neutral", "proud", "proud", "proud", "neutral"],
-        "variant": ["forward", "left", "left", "forward", "forward", "forward"],
-        "turn_deg": [0.0, 30.0, 2.0, -8.0, 4.0, 0.0],
-    })
+    meta = pd.DataFrame(
+        {
+            "clip_id": [f"c{k}" for k in range(6)],
+            "primitive": ["walk_leftStance"] * 5 + ["run_rightStance"],
+            "style": ["neutral", "neutral", "proud", "proud", "proud", "neutral"],
+            "variant": ["forward", "left", "left", "forward", "forward", "forward"],
+            "turn_deg": [0.0, 30.0, 2.0, -8.0, 4.0, 0.0],
+        }
+    )
     path = tmp_path_factory.mktemp("prims")
     save_dataset(path, motions, meta)
     return load_dataset(path)
@@ -511,6 +585,7 @@ def test_primitive_selection_errors_name_what_is_missing(prim_dataset):
 
 # ---------------------------------------------------------------- from a dataset to the evaluations
 
+
 @pytest.fixture(scope="module")
 def style_run(tmp_path_factory, layout):
     """A tiny dataset of one primitive (neutral, proud and old clips), the models fitted
@@ -520,30 +595,44 @@ def style_run(tmp_path_factory, layout):
 
     specs = [("neutral", 0.5, 0.3, 2.0)] * 6 + [("proud", 0.3, 0.6, 2.6)] * 2 + [("old", 0.2, 0.1, 1.2)] * 2
     motions = [toy_walk(n_frames=70, seed=k, swing=sw, arm=arm, speed=sp) for k, (_, sw, arm, sp) in enumerate(specs)]
-    meta = pd.DataFrame({
-        "clip_id": [f"c{k}" for k in range(len(specs))], "primitive": "walk_leftStance",
-        "style": [st for st, *_ in specs], "variant": "forward", "turn_deg": 0.0,
-    })
+    meta = pd.DataFrame(
+        {
+            "clip_id": [f"c{k}" for k in range(len(specs))],
+            "primitive": "walk_leftStance",
+            "style": [st for st, *_ in specs],
+            "variant": "forward",
+            "turn_deg": 0.0,
+        }
+    )
     path = tmp_path_factory.mktemp("style_run")
     save_dataset(path / "data", motions, meta)
     dataset = load_dataset(path / "data")
     small = dict(n_samples=2, latent=4, hidden=(32, 16, 8))
-    space, ae_hist = fit_feature_space(dataset, layout, TrainConfig(3, 3e-3, 8, seed=0), window=60, stride=5,
-                                       max_windows=8, n_kernels=16)
-    assert list(ae_hist.columns) == ["epoch", "loss", "end_loss", "seconds", "kept", "windows"] and (ae_hist["windows"] == 8).all()
+    space, ae_hist = fit_feature_space(
+        dataset, layout, TrainConfig(3, 3e-3, 8, seed=0), window=60, stride=5, max_windows=8, n_kernels=16
+    )
+    assert (
+        list(ae_hist.columns) == ["epoch", "loss", "end_loss", "seconds", "kept", "windows"]
+        and (ae_hist["windows"] == 8).all()
+    )
     space.save(path / "ae.pt")
     vae, shape, info, _ = fit_primitive_vae(dataset, layout, space, "walk_leftStance", TrainConfig(3, 1e-3, 4), **small)
     assert shape == (16, 30) and {k: info[k] for k in ("primitive", "style", "n_clips")} == {
-        "primitive": "walk_leftStance", "style": "neutral", "n_clips": 6}
+        "primitive": "walk_leftStance",
+        "style": "neutral",
+        "n_clips": 6,
+    }
     assert info["regime"] == "adam lr 0.001, 3 epochs, batch 4, L = 2" and 0 <= info["active_units"] <= 4
     save_vae(path / "vae.pt", vae, shape, info)
     cvaes = []
     for style in ("proud", "old"):
-        cvae, cshape, cinfo, hist = fit_style_cvae(dataset, layout, space, vae, "walk_leftStance", style,
-                                                   TrainConfig(2, 1e-3, 4), alpha=1.0, **small)
+        cvae, cshape, cinfo, hist = fit_style_cvae(
+            dataset, layout, space, vae, "walk_leftStance", style, TrainConfig(2, 1e-3, 4), alpha=1.0, **small
+        )
         assert cinfo["example"] in set(meta.loc[meta["style"] == style, "clip_id"]) and (hist["style"] > 0).all()
-        assert cinfo["regime"] == ("adam lr 0.001, 2 epochs, batch 4; alpha 1, frobenius norm, Gram sum over frames, "
-                                   "from the neutral VAE")
+        assert cinfo["regime"] == (
+            "adam lr 0.001, 2 epochs, batch 4; alpha 1, frobenius norm, Gram sum over frames, from the neutral VAE"
+        )
         assert cinfo["active_units"] == hist["active"].iloc[-1]
         save_vae(path / f"{style}.pt", cvae, cshape, cinfo)
         cvaes.append(load_vae(path / f"{style}.pt"))
@@ -554,8 +643,9 @@ def test_fitting_is_deterministic(style_run, layout):
     from motionvar.du2022.style import fit_primitive_vae
 
     dataset, space, (vae, _, _), _ = style_run
-    again, *_ = fit_primitive_vae(dataset, layout, space, "walk_leftStance", TrainConfig(3, 1e-3, 4),
-                                  n_samples=2, latent=4, hidden=(32, 16, 8))
+    again, *_ = fit_primitive_vae(
+        dataset, layout, space, "walk_leftStance", TrainConfig(3, 1e-3, 4), n_samples=2, latent=4, hidden=(32, 16, 8)
+    )
     assert all(torch.equal(a, b) for a, b in zip(vae.state_dict().values(), again.state_dict().values()))
 
 
@@ -568,8 +658,15 @@ def test_evaluate_table5_1(style_run, layout):
     dataset, space, neutral, cvaes = style_run
     result = evaluate_table5_1(dataset, layout, space, neutral, cvaes, "walk_leftStance", n_samples=20, seed=0)
     t = result.table
-    assert list(t.columns) == ["model", "style_example_clip", "neutral", "proud", "old", "row_minimum_at",
-                               "published_row_minimum_at"]
+    assert list(t.columns) == [
+        "model",
+        "style_example_clip",
+        "neutral",
+        "proud",
+        "old",
+        "row_minimum_at",
+        "published_row_minimum_at",
+    ]
     assert list(t["model"]) == ["neutral", "proud", "old"] and list(t["published_row_minimum_at"]) == list(t["model"])
     assert t.loc[0, "style_example_clip"] == "mean of the neutral clips"
     assert (t[["neutral", "proud", "old"]].to_numpy() >= 0).all()
@@ -590,8 +687,9 @@ def test_evaluate_table5_2(style_run, layout):
     from motionvar.du2022.style.figures import draw_table5_2
 
     dataset, space, neutral, cvaes = style_run
-    result = evaluate_table5_2(dataset, layout, space, [neutral, *cvaes], ["walk_leftStance"], n_samples=30,
-                               seed=0, pose_sd_tolerance=0.05)
+    result = evaluate_table5_2(
+        dataset, layout, space, [neutral, *cvaes], ["walk_leftStance"], n_samples=30, seed=0, pose_sd_tolerance=0.05
+    )
     t = result.table
     assert list(t["model"]) == ["training data", "training data (autoencoder)", "neutral", "proud", "old"]
     assert list(t["n"]) == [6, 6, 30, 30, 30] and t["active_latents"].iloc[2:].between(0, 4).all()
@@ -610,8 +708,11 @@ def test_evaluate_table5_2(style_run, layout):
     assert tt.loc["proud", "training_step_sd"] == round(diversity(proud, 21)["step_sd"], 5)
     assert tt.loc[["neutral", "proud", "old"], "posterior_mean_pose_sd"].gt(0).all()
     ids = [c.claim_id.split(".")[-1] for c in result.claims]
-    assert ids == ["neutral_pose_sd_close_to_training", "neutral_step_sd_lower_than_training",
-                   "style_pose_sd_lower_than_neutral"]
+    assert ids == [
+        "neutral_pose_sd_close_to_training",
+        "neutral_step_sd_lower_than_training",
+        "style_pose_sd_lower_than_neutral",
+    ]
     # claim 1: full credit against the training data, half against its autoencoder round trip
     vae, data, ae = (tt.loc[m, "pose_sd"] for m in ("neutral", "training data", "training data (autoencoder)"))
     credit = 1.0 if abs(vae / data - 1) <= 0.05 else 0.5 if abs(vae / ae - 1) <= 0.05 else 0.0
@@ -647,7 +748,7 @@ def test_evaluate_fig5_4_and_its_animation(style_run, layout):
     assert list(result.table["model"]) == ["neutral", "proud", "old"] and (result.table["samples"] == 3).all()
     rows = result.figure["rows"]
     assert rows[0][1].shape == (3, 60, 21, 3) and rows[0][2] is None and rows[1][2].shape == (60, 21, 3)
-    (pos, fps, label), = result.figure["animations"]["neutral"]
+    ((pos, fps, label),) = result.figure["animations"]["neutral"]
     assert label == "walk_leftStance" and fps == pytest.approx(59 / (69 / 120.0))
     plt.close(draw_fig5_4(result))
     frames = animate_fig5_4(result, "styles", panel_px=60)
@@ -663,7 +764,10 @@ def test_draw_training():
     h = pd.DataFrame({"epoch": [1, 2], "loss": [2.0, 1.0]})
     fig = draw_training(h, {"walk_leftStance": h}, {("walk_leftStance", "proud"): h, ("walk_leftStance", "old"): h})
     assert [ax.get_title() for ax in fig.axes] == [
-        "conv autoencoder (Eq. 5.1-5.2)", "neutral VAEs (Eq. 5.6)", "CVAEs walk_leftStance (Eq. 5.11)"]
+        "conv autoencoder (Eq. 5.1-5.2)",
+        "neutral VAEs (Eq. 5.6)",
+        "CVAEs walk_leftStance (Eq. 5.11)",
+    ]
     assert [line.get_label() for line in fig.axes[2].lines] == ["walk_leftStance/proud", "walk_leftStance/old"]
     plt.close(fig)
     # with the latent dimensions in use per epoch: a second row of panels

@@ -178,6 +178,7 @@ def test_start_category_and_preferences():
 
 def test_subjects_can_be_told_apart():
     """Nearest-centroid identification from simple posture features (Egges 2004 Sec. 5.6)."""
+
     def features(motion, truth):
         p = motion.positions()
         sk = motion.skeleton
@@ -196,8 +197,10 @@ def test_subjects_can_be_told_apart():
     correct = 0
     for si in range(len(subjects)):
         for k in range(3):
-            others = [np.delete(feats[sj], k, axis=0).mean(axis=0) if sj == si else feats[sj].mean(axis=0)
-                      for sj in range(len(subjects))]
+            others = [
+                np.delete(feats[sj], k, axis=0).mean(axis=0) if sj == si else feats[sj].mean(axis=0)
+                for sj in range(len(subjects))
+            ]
             d = [np.linalg.norm((feats[si, k] - c) / scale) for c in others]
             correct += int(np.argmin(d) == si)
     assert correct >= 11

@@ -10,11 +10,23 @@ import pandas as pd
 import pytest
 
 from motionvar.core import cmu_joint_map
-from motionvar.core.quaternions import qinv, qmul, qrot
+from motionvar.core.quaternions import qinv, qrot
 from motionvar.prep.segmentation import segment_motion
 from motionvar.synth import (
-    CONTRACT_COLUMNS, Manner, RunParams, SidestepParams, SynthSpec, WalkParams, generate_dataset, generate_run,
-    generate_sidestep, generate_walk, make_subjects, sample_run_params, sample_sidestep_params, sample_walk_params,
+    CONTRACT_COLUMNS,
+    Manner,
+    RunParams,
+    SidestepParams,
+    SynthSpec,
+    WalkParams,
+    generate_dataset,
+    generate_run,
+    generate_sidestep,
+    generate_walk,
+    make_subjects,
+    sample_run_params,
+    sample_sidestep_params,
+    sample_walk_params,
 )
 from motionvar.synth.intervals import parse_intervals, parse_ranges
 
@@ -79,15 +91,26 @@ def test_generators_are_deterministic(subjects):
     assert a == b
 
 
-SMALL = dict(subjects=2, walks_per_style=1, turning_walks=1, runs=1, sidesteps=1, picks=1, places=1, idle_clips=1,
-             idle_duration_s=2.0)
+SMALL = dict(
+    subjects=2,
+    walks_per_style=1,
+    turning_walks=1,
+    runs=1,
+    sidesteps=1,
+    picks=1,
+    places=1,
+    idle_clips=1,
+    idle_duration_s=2.0,
+)
 
 
 def test_dataset_is_deterministic_and_follows_the_contract():
     m1, meta1 = generate_dataset(SynthSpec(**SMALL))
     m2, meta2 = generate_dataset(SynthSpec(**SMALL), workers=2)  # parallel: the same data
     pd.testing.assert_frame_equal(meta1, meta2)
-    assert all(np.array_equal(a.rotations, b.rotations) and np.array_equal(a.root_pos, b.root_pos) for a, b in zip(m1, m2))
+    assert all(
+        np.array_equal(a.rotations, b.rotations) and np.array_equal(a.root_pos, b.root_pos) for a, b in zip(m1, m2)
+    )
 
     assert list(meta1.columns[: len(CONTRACT_COLUMNS)]) == list(CONTRACT_COLUMNS)
     assert any(c.startswith("subj_") for c in meta1.columns)
@@ -208,7 +231,12 @@ def test_segments_and_contacts_are_consistent(clips):
         segs = parse_intervals(truth["segments"])
         starts = {s: {a for a, _ in parse_ranges(truth[s + "_contacts"])} for s in SIDES}
         if kind == "walk":
-            assert segs[0][0] == "walk_start" and segs[0][1] == 0 and segs[-1][0] == "walk_end" and segs[-1][2] == m.n_frames
+            assert (
+                segs[0][0] == "walk_start"
+                and segs[0][1] == 0
+                and segs[-1][0] == "walk_end"
+                and segs[-1][2] == m.n_frames
+            )
             assert all(a[2] == b[1] for a, b in zip(segs[:-1], segs[1:]))  # contiguous
             for side in SIDES:  # both feet down while standing at either end
                 r = parse_ranges(truth[side + "_contacts"])
@@ -274,14 +302,20 @@ def gait_measures(m, truth):
     head_pitch = np.degrees(np.arctan2(head_up[:, [0, 2]] @ fwd, head_up[:, 1])).mean()
     chest_up = qrot(chest, np.array([0.0, 1.0, 0.0]))
     lean = np.degrees(np.arctan2(chest_up[:, [0, 2]] @ fwd, chest_up[:, 1])).mean()
-    return dict(speed=speed, cadence=cadence, width=width, arm=np.mean(arm), elbow=np.mean(elbow), head=head_pitch, lean=lean)
+    return dict(
+        speed=speed, cadence=cadence, width=width, arm=np.mean(arm), elbow=np.mean(elbow), head=head_pitch, lean=lean
+    )
 
 
 def test_styles_differ_in_the_documented_directions(subjects):
     rng = np.random.default_rng(2)
     meas = {}
     for style in ("neutral", "proud", "depressed", "angry", "female", "childlike", "old"):
-        rows = [gait_measures(*generate_walk(s, sample_walk_params(s, rng, style, n_steps=6))) for s in subjects for _ in range(2)]
+        rows = [
+            gait_measures(*generate_walk(s, sample_walk_params(s, rng, style, n_steps=6)))
+            for s in subjects
+            for _ in range(2)
+        ]
         meas[style] = pd.DataFrame(rows).mean().to_dict()
     n, p, d, a, o = (meas[k] for k in ("neutral", "proud", "depressed", "angry", "old"))
     assert d["speed"] < 0.8 * p["speed"] and d["arm"] < 0.6 * p["arm"]
@@ -298,10 +332,16 @@ def test_subject_habits_persist_across_clips():
     means is larger than the spread of a subject's own clips."""
     subs = make_subjects(4, seed=11)
     rng = np.random.default_rng(4)
-    table = pd.DataFrame([
-        {"subject": s.subject_id, **gait_measures(*generate_walk(s, sample_walk_params(s, rng, "neutral", n_steps=5)))}
-        for s in subs for _ in range(3)
-    ])
+    table = pd.DataFrame(
+        [
+            {
+                "subject": s.subject_id,
+                **gait_measures(*generate_walk(s, sample_walk_params(s, rng, "neutral", n_steps=5))),
+            }
+            for s in subs
+            for _ in range(3)
+        ]
+    )
     for habit in ("arm", "lean"):
         between = table.groupby("subject")[habit].mean().var()
         within = table.groupby("subject")[habit].var().mean()
@@ -311,19 +351,22 @@ def test_subject_habits_persist_across_clips():
 # ---------------------------------------------------------------- bad input
 
 
-@pytest.mark.parametrize("make, name", [
-    (lambda s: WalkParams(stride_length_cm=-5.0), "stride_length_cm"),
-    (lambda s: WalkParams(n_steps=1), "n_steps"),
-    (lambda s: WalkParams(style="happy"), "style"),
-    (lambda s: WalkParams(first_foot="middle"), "first_foot"),
-    (lambda s: WalkParams(turn_deg=float("nan")), "turn_deg"),
-    (lambda s: WalkParams(speed_cm_s=300.0, stride_length_cm=60.0), "speed_cm_s"),
-    (lambda s: WalkParams(manner=Manner(knee_peak_deg=170.0)), "knee_peak_deg"),
-    (lambda s: RunParams(manner=Manner(stance_fraction=0.7)), "stance_fraction"),
-    (lambda s: SidestepParams(direction="up"), "direction"),
-    (lambda s: SidestepParams(n_cycles=1), "n_cycles"),
-    (lambda s: sample_walk_params(s, np.random.default_rng(0), "happy"), "style"),
-])
+@pytest.mark.parametrize(
+    "make, name",
+    [
+        (lambda s: WalkParams(stride_length_cm=-5.0), "stride_length_cm"),
+        (lambda s: WalkParams(n_steps=1), "n_steps"),
+        (lambda s: WalkParams(style="happy"), "style"),
+        (lambda s: WalkParams(first_foot="middle"), "first_foot"),
+        (lambda s: WalkParams(turn_deg=float("nan")), "turn_deg"),
+        (lambda s: WalkParams(speed_cm_s=300.0, stride_length_cm=60.0), "speed_cm_s"),
+        (lambda s: WalkParams(manner=Manner(knee_peak_deg=170.0)), "knee_peak_deg"),
+        (lambda s: RunParams(manner=Manner(stance_fraction=0.7)), "stance_fraction"),
+        (lambda s: SidestepParams(direction="up"), "direction"),
+        (lambda s: SidestepParams(n_cycles=1), "n_cycles"),
+        (lambda s: sample_walk_params(s, np.random.default_rng(0), "happy"), "style"),
+    ],
+)
 def test_bad_params_raise_value_error_naming_the_parameter(subjects, make, name):
     gens = {WalkParams: generate_walk, RunParams: generate_run, SidestepParams: generate_sidestep}
     with pytest.raises(ValueError, match=name):

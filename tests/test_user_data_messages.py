@@ -26,8 +26,15 @@ JM = cmu_joint_map()
 
 def walks(path, n_cycles, n_clips=2, contacts=False):
     motions = [toy_walk(hip_amp=0.3 + 0.03 * i, n_cycles=n_cycles) for i in range(n_clips)]
-    meta = pd.DataFrame({"clip_id": [f"w{i}" for i in range(n_clips)], "subject": [f"{i:02d}" for i in range(n_clips)],
-                         "behaviour": "walk", "style": "neutral", "variant": "forward"})
+    meta = pd.DataFrame(
+        {
+            "clip_id": [f"w{i}" for i in range(n_clips)],
+            "subject": [f"{i:02d}" for i in range(n_clips)],
+            "behaviour": "walk",
+            "style": "neutral",
+            "variant": "forward",
+        }
+    )
     if contacts:  # as the generator writes them: its ground truth
         c = [detect_foot_contacts(m, JM) for m in motions]
         meta["left_contacts"] = [format_intervals(x.left_intervals) for x in c]
@@ -63,17 +70,23 @@ def test_fig3_says_where_the_foot_strikes_come_from(tmp_path, contacts, label):
 
 
 def test_walk_cycles_say_what_the_walks_lack(tmp_path):
-    with pytest.raises(ValueError, match="meta.csv: no complete gait cycle in the 2 walk clips \\(they last "
-                                         "[0-9.]+-[0-9.]+ s, median [0-9.]+ s\\); need at least 3.*"
-                                         "two foot strikes of each foot"):
+    with pytest.raises(
+        ValueError,
+        match="meta.csv: no complete gait cycle in the 2 walk clips \\(they last "
+        "[0-9.]+-[0-9.]+ s, median [0-9.]+ s\\); need at least 3.*"
+        "two foot strikes of each foot",
+    ):
         walk_cycles(walks(tmp_path, n_cycles=0.3), JM, ["neutral"], ["forward"], n_frames=24, what="meta.csv")
 
 
 def test_sec7_4_needs_cycles_of_two_subjects(tmp_path):
     clips, table = walk_cycles(walks(tmp_path, n_cycles=3, n_clips=2), JM, ["neutral"], ["forward"], n_frames=24)
     one = WalkCycles(clips, ["solo"] * clips.n_clips, JM, source="my walks")
-    with pytest.raises(NotApplicable, match=f"my walks: 1 subject\\(s\\) among the {clips.n_clips} walking cycles; Sec. "
-                                         "7.4 takes its example cycles one per subject.*at least 2 subjects"):
+    with pytest.raises(
+        NotApplicable,
+        match=f"my walks: 1 subject\\(s\\) among the {clips.n_clips} walking cycles; Sec. "
+        "7.4 takes its example cycles one per subject.*at least 2 subjects",
+    ):
         sec7_4_comparison(one)
 
 
@@ -83,14 +96,23 @@ def test_sec7_4_needs_cycles_of_two_subjects(tmp_path):
 def primitives_with_a_sliver(path):
     m = toy_walk(n_cycles=0.5)
     motions = [m, m.slice(0, 40), m.slice(3, 4), m.slice(0, 50)]
-    meta = pd.DataFrame({"clip_id": ["p0", "p1", "sliver_07", "p3"], "subject": "s", "behaviour": "walk",
-                         "style": "neutral", "primitive": "walk_leftStance"})
+    meta = pd.DataFrame(
+        {
+            "clip_id": ["p0", "p1", "sliver_07", "p3"],
+            "subject": "s",
+            "behaviour": "walk",
+            "style": "neutral",
+            "primitive": "walk_leftStance",
+        }
+    )
     save_dataset(path, motions, meta)
     return load_dataset(path)
 
 
-@pytest.mark.parametrize("time_warping, message", [("dtw", "warp_to_median: clips sliver_07 \\(1 frame"),
-                                                   ("linear", "resample_motion: clip sliver_07 has 1 frame")])
+@pytest.mark.parametrize(
+    "time_warping, message",
+    [("dtw", "warp_to_median: clips sliver_07 \\(1 frame"), ("linear", "resample_motion: clip sliver_07 has 1 frame")],
+)
 def test_fda_canonical_primitives_name_the_clip(tmp_path, time_warping, message):
     from motionvar.du2022.fda.primitives import canonical_primitives
 
@@ -99,12 +121,16 @@ def test_fda_canonical_primitives_name_the_clip(tmp_path, time_warping, message)
 
 
 def test_graph_and_style_clips_name_the_clip(tmp_path):
-    from motionvar.du2022.graph import MotionPrimitive, primitive_clips as graph_clips
+    from motionvar.du2022.graph import MotionPrimitive
+    from motionvar.du2022.graph import primitive_clips as graph_clips
     from motionvar.du2022.style.data import primitive_clips as style_clips
 
     data = primitives_with_a_sliver(tmp_path)
-    with pytest.raises(ValueError, match="prep/clips.npz: clips sliver_07 \\(1 frame\\(s\\)\\) of primitive "
-                                         "'walk_leftStance' have fewer than 2 frames"):
+    with pytest.raises(
+        ValueError,
+        match="prep/clips.npz: clips sliver_07 \\(1 frame\\(s\\)\\) of primitive "
+        "'walk_leftStance' have fewer than 2 frames",
+    ):
         graph_clips(data, "walk_leftStance", source="prep/clips.npz")
     with pytest.raises(ValueError, match="warp_to_median: clips walk_leftStance #2 \\(1 frame"):
         MotionPrimitive.fit([data.motion(i) for i in range(4)], "walk_leftStance")

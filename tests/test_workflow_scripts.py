@@ -33,7 +33,10 @@ def test_claims_merge_and_summary(tmp_path):
 
     html_out = tmp_path / "summary.html"
     fake = FakeSnakemake(
-        tmp_path, "claims_summary", input=Named(claims=str(out)), output=Named([str(html_out)]),
+        tmp_path,
+        "claims_summary",
+        input=Named(claims=str(out)),
+        output=Named([str(html_out)]),
         params=Named(categories={"ma2010": "Ma et al. 2010", "du2022": "Du 2022"}, stability=""),
     )
     run(fake, script("claims_summary").main)
@@ -44,8 +47,15 @@ def test_claims_merge_and_summary(tmp_path):
     assert "statement 3" in html and "&lt; 1 cm" in html and "across seeds" not in html
     # with a stability run's table, each verdict says whether the seeds agree on it
     stab = tmp_path / "claims_stability.csv"
-    pd.DataFrame({"claim_id": ["du2022.c1", "ma2010.c3"], "verdict": ["reproduced", "partial"], "n_agree": [5, 3],
-                  "n_seeds": [5, 5], "stable": [True, False]}).to_csv(stab, index=False)
+    pd.DataFrame(
+        {
+            "claim_id": ["du2022.c1", "ma2010.c3"],
+            "verdict": ["reproduced", "partial"],
+            "n_agree": [5, 3],
+            "n_seeds": [5, 5],
+            "stable": [True, False],
+        }
+    ).to_csv(stab, index=False)
     fake.params = Named(categories={}, stability=str(stab))
     run(fake, script("claims_summary").main)
     html = html_out.read_text()
@@ -58,8 +68,13 @@ def test_claims_merge_of_no_evaluations_is_an_empty_table(tmp_path):
     run(FakeSnakemake(tmp_path, "claims", input=Named(claims=[]), output=Named([str(out)])), script("claims").main)
     assert out.read_text().strip() == ",".join(CLAIM_COLUMNS)
     html_out = tmp_path / "summary.html"
-    fake = FakeSnakemake(tmp_path, "claims_summary", input=Named(claims=str(out)), output=Named([str(html_out)]),
-                         params=Named(categories={}, stability=""))
+    fake = FakeSnakemake(
+        tmp_path,
+        "claims_summary",
+        input=Named(claims=str(out)),
+        output=Named([str(html_out)]),
+        params=Named(categories={}, stability=""),
+    )
     run(fake, script("claims_summary").main)
     assert "No claims yet" in html_out.read_text()
 
@@ -69,8 +84,10 @@ def test_claims_merge_of_no_evaluations_is_an_empty_table(tmp_path):
     [
         ("{not json", "not a valid claims file"),
         (json.dumps([{"claim_id": "du2022.x", "paper": "du2022"}]), "not a valid claims file"),
-        (json.dumps([{**dict(zip(CLAIM_COLUMNS, ["du2022.x"] + ["du2022"] + ["s"] * 6)), "verdict": "great"}]),
-         "verdict 'great'"),
+        (
+            json.dumps([{**dict(zip(CLAIM_COLUMNS, ["du2022.x"] + ["du2022"] + ["s"] * 6)), "verdict": "great"}]),
+            "verdict 'great'",
+        ),
     ],
 )
 def test_claims_merge_rejects_a_malformed_claims_file(tmp_path, capsys, content, expected):
@@ -95,8 +112,12 @@ def test_claims_merge_rejects_duplicate_claim_ids(tmp_path, capsys):
     write_claims(tmp_path / "a.json", [claim(1)])
     write_claims(tmp_path / "b.json", [claim(1)])
     out = tmp_path / "claims.csv"
-    fake = FakeSnakemake(tmp_path, "claims", input=Named(claims=[str(tmp_path / "a.json"), str(tmp_path / "b.json")]),
-                         output=Named([str(out)]))
+    fake = FakeSnakemake(
+        tmp_path,
+        "claims",
+        input=Named(claims=[str(tmp_path / "a.json"), str(tmp_path / "b.json")]),
+        output=Named([str(out)]),
+    )
     with pytest.raises(SystemExit):
         run(fake, script("claims").main)
     assert "du2022.c1" in capsys.readouterr().err and not out.exists()
@@ -104,11 +125,17 @@ def test_claims_merge_rejects_duplicate_claim_ids(tmp_path, capsys):
 
 def test_claims_summary_rejects_a_table_with_unknown_verdicts(tmp_path, capsys):
     table = tmp_path / "claims.csv"
-    pd.DataFrame([dict(zip(CLAIM_COLUMNS, ["du2022.x", "du2022", "s", "s", "s", "s", "maybe", "", "", "", "", ""]))]).to_csv(
-        table, index=False)
+    pd.DataFrame(
+        [dict(zip(CLAIM_COLUMNS, ["du2022.x", "du2022", "s", "s", "s", "s", "maybe", "", "", "", "", ""]))]
+    ).to_csv(table, index=False)
     out = tmp_path / "summary.html"
-    fake = FakeSnakemake(tmp_path, "claims_summary", input=Named(claims=str(table)), output=Named([str(out)]),
-                         params=Named(categories={}, stability=""))
+    fake = FakeSnakemake(
+        tmp_path,
+        "claims_summary",
+        input=Named(claims=str(table)),
+        output=Named([str(out)]),
+        params=Named(categories={}, stability=""),
+    )
     with pytest.raises(SystemExit):
         run(fake, script("claims_summary").main)
     err = capsys.readouterr().err
@@ -129,14 +156,24 @@ def bvh_folder(tmp_path, labels):
 def data_fake(tmp_path, entry):
     out = tmp_path / "results" / "data"
     return out, FakeSnakemake(
-        tmp_path, "data", output=Named(clips=str(out / "clips.npz"), metadata=str(out / "metadata.csv")),
-        params=Named(entry=entry), wildcards=Named(dataset="mine"),
+        tmp_path,
+        "data",
+        output=Named(clips=str(out / "clips.npz"), metadata=str(out / "metadata.csv")),
+        params=Named(entry=entry),
+        wildcards=Named(dataset="mine"),
     )
 
 
 def bvh_entry(folder, **kw):
-    return {"source": "bvh", "path": str(folder), "labels": "labels.csv", "unit_cm": 1.0,
-            "drop_first_frame": False, "joint_map": None, **kw}
+    return {
+        "source": "bvh",
+        "path": str(folder),
+        "labels": "labels.csv",
+        "unit_cm": 1.0,
+        "drop_first_frame": False,
+        "joint_map": None,
+        **kw,
+    }
 
 
 def test_data_script_imports_a_bvh_folder(tmp_path):
@@ -150,7 +187,11 @@ def test_data_script_imports_a_bvh_folder(tmp_path):
 @pytest.mark.parametrize(
     "labels, entry_kw, expected",
     [
-        ("file,subject,behaviour,style\nmissing.bvh,s1,walk,neutral\n", {}, "labels.csv:2: labelled file 'missing.bvh'"),
+        (
+            "file,subject,behaviour,style\nmissing.bvh,s1,walk,neutral\n",
+            {},
+            "labels.csv:2: labelled file 'missing.bvh'",
+        ),
         ("file,subject,style\nwalk_01.bvh,s1,neutral\n", {}, "missing required column 'behaviour'"),
         ("file,subject,behaviour,style\nwalk_01.bvh,s1,walk,neutral\n", {"joint_map": "nope.yaml"}, "nope.yaml"),
     ],
@@ -208,8 +249,10 @@ def test_data_script_stops_when_the_hips_is_a_floor_point(tmp_path, capsys):
     with pytest.raises(SystemExit):
         run(fake, script("data").main)
     err = capsys.readouterr().err.strip()
-    assert err.startswith("ERROR rule data: datasets.mine: pelvis (joint map hips = Ground) is ") and len(
-        err.splitlines()) == 1
+    assert (
+        err.startswith("ERROR rule data: datasets.mine: pelvis (joint map hips = Ground) is ")
+        and len(err.splitlines()) == 1
+    )
     assert "1/1 clips outside 60-130 cm" in err and f"check the joint map's 'hips' ({folder / 'rig.yaml'})" in err
     assert not out.exists() or not any(out.iterdir())
     fake.params.entry["plausibility_check"] = False  # expert switch: the same data goes through

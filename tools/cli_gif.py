@@ -45,9 +45,16 @@ def main(argv: list[str] | None = None) -> int:
         print(f"cli_gif: error: {len(labels)} labels for {len(motions)} files", file=sys.stderr)
         return 2
     clips = [m.slice(min(int(round(args.start * m.fps)), m.n_frames - 2), m.n_frames) for m in motions]
-    frames = render_frames([m.positions() for m in clips], [m.skeleton.parents for m in clips], [m.fps for m in clips],
-                           names=[m.skeleton.names for m in clips], labels=labels, out_fps=args.fps,
-                           max_seconds=args.seconds, panel_px=args.panel_px)
+    frames = render_frames(
+        [m.positions() for m in clips],
+        [m.skeleton.parents for m in clips],
+        [m.fps for m in clips],
+        names=[m.skeleton.names for m in clips],
+        labels=labels,
+        out_fps=args.fps,
+        max_seconds=args.seconds,
+        panel_px=args.panel_px,
+    )
     try:
         size = write_gif(args.out, frames, fps=args.fps, max_bytes=args.max_kb * 1000)
     except ValueError as exc:

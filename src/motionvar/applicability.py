@@ -89,14 +89,18 @@ def unmet(need: Need, meta: pd.DataFrame) -> str | None:
     if need.min_subjects > 1:
         n_subjects = rows["subject"].nunique() if "subject" in rows else 0
         if n_subjects < need.min_subjects:
-            return (f"needs {need.what} from at least {need.min_subjects} subjects, the dataset has "
-                    f"{n_subjects}: {need.why}")
+            return (
+                f"needs {need.what} from at least {need.min_subjects} subjects, the dataset has "
+                f"{n_subjects}: {need.why}"
+            )
     for column, minimum in need.min_distinct.items():
         values = rows[column].replace("", pd.NA).dropna().astype(str) if column in rows else pd.Series([], dtype=str)
         if values.nunique() < minimum:
             have = sorted(values.unique())
-            return (f"needs {need.what} with at least {minimum} different {column} values, the dataset has "
-                    f"{len(have)}{' (' + ', '.join(have) + ')' if have else ''}: {need.why}")
+            return (
+                f"needs {need.what} with at least {minimum} different {column} values, the dataset has "
+                f"{len(have)}{' (' + ', '.join(have) + ')' if have else ''}: {need.why}"
+            )
     return None
 
 
@@ -112,6 +116,14 @@ def applicability_table(requirements: Sequence[Requirement], metadata: Mapping[s
     rows = []
     for req in requirements:
         reason = unmet_reason(req, metadata)
-        rows.append({"evaluation": req.evaluation, "paper": req.paper, "source": req.source, "checks": req.checks,
-                     "applicable": reason is None, "reason": reason or ""})
+        rows.append(
+            {
+                "evaluation": req.evaluation,
+                "paper": req.paper,
+                "source": req.source,
+                "checks": req.checks,
+                "applicable": reason is None,
+                "reason": reason or "",
+            }
+        )
     return pd.DataFrame(rows, columns=["evaluation", "paper", "source", "checks", "applicable", "reason"])

@@ -106,8 +106,8 @@ def evaluation_source(evaluation: str) -> str:
     parts = evaluation.split("_")[1:]
     for i, part in enumerate(parts):
         for prefix, label in _SOURCE_KINDS.items():
-            if part.startswith(prefix) and part[len(prefix):].isdigit():
-                return f"{label} {'.'.join([part[len(prefix):], *parts[i + 1:]])}"
+            if part.startswith(prefix) and part[len(prefix) :].isdigit():
+                return f"{label} {'.'.join([part[len(prefix) :], *parts[i + 1 :]])}"
     return evaluation
 
 
@@ -121,12 +121,19 @@ def not_applicable_result(evaluation: str, reason: str, checks: str = "", source
     source = source or evaluation_source(evaluation)
     statement = checks or f"The checks of {source}."
     claim = Claim(
-        claim_id=f"{paper}.{rest or evaluation}.not_applicable", paper=paper, source=source, statement=statement,
-        published="-", measured="-", verdict="not applicable", note=reason,
+        claim_id=f"{paper}.{rest or evaluation}.not_applicable",
+        paper=paper,
+        source=source,
+        statement=statement,
+        published="-",
+        measured="-",
+        verdict="not applicable",
+        note=reason,
     )
     table = pd.DataFrame([{"evaluation": evaluation, "source": source, "verdict": "not applicable", "reason": reason}])
-    return EvaluationResult(table=table, claims=[claim], figure={"title": f"{paper} {source}", "reason": reason,
-                                                                 "not_applicable": True})
+    return EvaluationResult(
+        table=table, claims=[claim], figure={"title": f"{paper} {source}", "reason": reason, "not_applicable": True}
+    )
 
 
 def verdict_from_bool(ok: bool) -> str:

@@ -31,5 +31,8 @@ def models(paths) -> dict:
 
 def model_bytes(paths) -> dict:
     """Bytes on disk (npz + json) of the models at the ``.npz`` files among ``paths``, by name."""
-    return {Path(p).stem: sum(Path(p).with_suffix(s).stat().st_size for s in (".npz", ".json"))
-            for p in paths if str(p).endswith(".npz")}
+    return {
+        Path(p).stem: sum(Path(p).with_suffix(s).stat().st_size for s in (".npz", ".json"))
+        for p in paths
+        if str(p).endswith(".npz")
+    }

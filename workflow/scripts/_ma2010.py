@@ -26,7 +26,15 @@ def load_walks(snakemake):
     clips = ClipSet.from_arrays(load_model(snakemake.input.clips, kind=CLIPSET_KIND)[0])
     table = pd.read_csv(snakemake.input.table, dtype=WALKS_DTYPES)
     if len(table) != clips.n_clips or list(table["clip_id"]) != clips.clip_ids:
-        raise ValueError(f"{snakemake.input.table} does not list the cycles of {snakemake.input.clips}; rerun ma2010_clips")
+        raise ValueError(
+            f"{snakemake.input.table} does not list the cycles of {snakemake.input.clips}; rerun ma2010_clips"
+        )
     root_group = snakemake.params.options.get("root_group", "legs")  # config ma2010.root_group
-    return WalkCycles(clips, table["subject"].tolist(), joint_map(snakemake), source=snakemake.input.table,
-                      root_group=root_group, source_clips=table["source_clip"].tolist())
+    return WalkCycles(
+        clips,
+        table["subject"].tolist(),
+        joint_map(snakemake),
+        source=snakemake.input.table,
+        root_group=root_group,
+        source_clips=table["source_clip"].tolist(),
+    )

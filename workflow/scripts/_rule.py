@@ -43,8 +43,10 @@ def run(snakemake, main) -> None:
     _file_backend()
     with open(snakemake.log[0], "w") as log:
         logging.basicConfig(
-            level=logging.INFO, format="%(asctime)s %(levelname)s %(message)s",
-            handlers=[logging.StreamHandler(log)], force=True,
+            level=logging.INFO,
+            format="%(asctime)s %(levelname)s %(message)s",
+            handlers=[logging.StreamHandler(log)],
+            force=True,
         )
         logging.captureWarnings(True)
         warnings.simplefilter("default")
@@ -76,8 +78,14 @@ def log_job_cpu() -> None:
 
     own, kids = resource.getrusage(resource.RUSAGE_SELF), resource.getrusage(resource.RUSAGE_CHILDREN)
     user, system = own.ru_utime + kids.ru_utime, own.ru_stime + kids.ru_stime
-    logging.info("%s %.3f s (user %.3f, system %.3f), peak rss %.0f MB", JOB_CPU, user + system, user, system,
-                 max(own.ru_maxrss, kids.ru_maxrss) / 1024)
+    logging.info(
+        "%s %.3f s (user %.3f, system %.3f), peak rss %.0f MB",
+        JOB_CPU,
+        user + system,
+        user,
+        system,
+        max(own.ru_maxrss, kids.ru_maxrss) / 1024,
+    )
 
 
 def _file_backend() -> None:
@@ -125,8 +133,10 @@ def _profiled(snakemake, main) -> None:
         profiler.dump_stats(str(out / f"{stem}.prof"))
         text = io.StringIO()
         pstats.Stats(profiler, stream=text).sort_stats("cumulative").print_stats(30)
-        header = (f"rule {snakemake.rule} ({stem}): main {wall:.2f} s wall; "
-                  f"torch imported: {'yes' if 'torch' in sys.modules else 'no'}\n")
+        header = (
+            f"rule {snakemake.rule} ({stem}): main {wall:.2f} s wall; "
+            f"torch imported: {'yes' if 'torch' in sys.modules else 'no'}\n"
+        )
         (out / f"{stem}.txt").write_text(header + text.getvalue())
         logging.info("profile written to %s", out / f"{stem}.prof")
 

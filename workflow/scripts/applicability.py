@@ -14,13 +14,20 @@ def main(snakemake) -> None:
 
     p, g = snakemake.params, snakemake.params.graph
     walks = [q for q in g["primitives"] if q.startswith("walk_")]  # Fig. 4.10's walking primitives
-    reqs = [*ma2010(**p.ma2010), *fda_requirements(**p.fda), *style_requirements(**p.style), *egges2004(**p.idle),
-            *graph_requirements(g["primitives"], p.graph_search["primitives"], walks, g["reach_primitive"])]
+    reqs = [
+        *ma2010(**p.ma2010),
+        *fda_requirements(**p.fda),
+        *style_requirements(**p.style),
+        *egges2004(**p.idle),
+        *graph_requirements(g["primitives"], p.graph_search["primitives"], walks, g["reach_primitive"]),
+    ]
     meta = {stage: pd.read_csv(snakemake.input[stage], dtype=str, keep_default_na=False) for stage in ("data", "prep")}
     table = applicability_table([r for r in reqs if r.evaluation in p.evaluations], meta)
     missing = sorted(set(p.evaluations) - set(table["evaluation"]))
     if missing:
-        raise ValueError(f"evaluations without declared requirements: {missing} (add them to the paper's requirements.py)")
+        raise ValueError(
+            f"evaluations without declared requirements: {missing} (add them to the paper's requirements.py)"
+        )
     table.to_csv(snakemake.output[0], index=False)
     for row in table[~table["applicable"]].itertuples():
         logging.info("not applicable: %s (%s): %s", row.evaluation, row.source, row.reason)

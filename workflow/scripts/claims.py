@@ -4,7 +4,6 @@ results/{dataset}/claims.csv (an empty table when none is registered)."""
 
 def main(snakemake) -> None:
     import logging
-
     from pathlib import Path
 
     from motionvar.claims import merge_claims, read_claims

@@ -12,8 +12,12 @@ def main(snakemake) -> None:
 
     table = read_claims_table(snakemake.input.claims)
     stability = pd.read_csv(snakemake.params.stability) if snakemake.params.stability else None
-    html = claims_html(table, paper_titles=snakemake.params.categories,
-                       title=f"Claims checked on dataset '{snakemake.wildcards.dataset}'", stability=stability)
+    html = claims_html(
+        table,
+        paper_titles=snakemake.params.categories,
+        title=f"Claims checked on dataset '{snakemake.wildcards.dataset}'",
+        stability=stability,
+    )
     Path(snakemake.output[0]).write_text(html, encoding="utf-8")
 
 

@@ -15,6 +15,7 @@ def load(entry: dict, workers: int = 1):
     """(motions, metadata, joint map) of a config.datasets entry; ``workers``: the generator's processes."""
     if entry["source"] == "synthetic":
         from motionvar.synth import SynthSpec, generate_dataset  # imported only for synthetic data
+
         spec = SynthSpec(**{k: v for k, v in entry.items() if k != "source"})
         return (*generate_dataset(spec, workers=workers), cmu_joint_map())
     jm = load_joint_map(entry["joint_map"]) if entry["joint_map"] else cmu_joint_map()

@@ -13,8 +13,12 @@ def main(snakemake) -> None:
     behaviours, _ = overview_clips(dataset.metadata)
     chosen = behaviours[: p.clips]
     size = animate_motions(
-        snakemake.output[0], [dataset.motion(i) for _, i in chosen], labels=[label for label, _ in chosen],
-        out_fps=p.fps, max_seconds=p.seconds, panel_px=p.panel_px,
+        snakemake.output[0],
+        [dataset.motion(i) for _, i in chosen],
+        labels=[label for label, _ in chosen],
+        out_fps=p.fps,
+        max_seconds=p.seconds,
+        panel_px=p.panel_px,
     )
     logging.info("%d clips, %.2f MB", len(chosen), size / 1e6)
 

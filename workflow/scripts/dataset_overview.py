@@ -11,7 +11,8 @@ def main(snakemake) -> None:
 
     dataset = load_dataset(Path(snakemake.input.clips).parent)
     fig = dataset_overview(
-        dataset, n_keys=snakemake.params.key_frames,
+        dataset,
+        n_keys=snakemake.params.key_frames,
         title=f"Dataset '{snakemake.wildcards.dataset}': one clip per behaviour (left) and per walking style (right)",
     )
     fig.savefig(snakemake.output[0], dpi=110)

@@ -5,6 +5,7 @@ chosen per primitive (n_basis.csv, read by the other Du 2022 ch. 3 rules)."""
 
 def main(snakemake) -> None:
     from _du2022_fda import canonical
+
     from motionvar.du2022.fda import choose_basis_sizes
 
     o = snakemake.params.options

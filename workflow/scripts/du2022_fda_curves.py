@@ -8,8 +8,8 @@ dimension is read from rule du2022_fda_sfpca's file instead of fitted again."""
 def main(snakemake) -> None:
     import numpy as np
     import pandas as pd
-
     from _du2022_fda import canonical, load_sfpca, setup_threads
+
     from motionvar.du2022.fda import functional_primitive, n_basis_of
     from motionvar.du2022.fda.evaluations import reconstruction_curves
 
@@ -17,9 +17,18 @@ def main(snakemake) -> None:
     o, primitive = snakemake.params.options, snakemake.wildcards.primitive
     n_basis = n_basis_of(pd.read_csv(snakemake.input.n_basis), primitive, snakemake.input.n_basis)
     fd, meta = functional_primitive(canonical(snakemake), primitive, n_basis)
-    curves = reconstruction_curves(fd, meta["variant"], primitive, snakemake.params.methods, o["dims"],
-                                   o["n_components"], o["seed"], o["sfpca"], o["gplvm"],
-                                   load_sfpca(getattr(snakemake.input, "sfpca", [])).values())
+    curves = reconstruction_curves(
+        fd,
+        meta["variant"],
+        primitive,
+        snakemake.params.methods,
+        o["dims"],
+        o["n_components"],
+        o["seed"],
+        o["sfpca"],
+        o["gplvm"],
+        load_sfpca(getattr(snakemake.input, "sfpca", [])).values(),
+    )
     with open(snakemake.output.curves, "wb") as fh:
         np.savez(fh, **curves)
 

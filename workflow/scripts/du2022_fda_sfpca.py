@@ -5,8 +5,8 @@ read by du2022_fda_curves and du2022_table3_1 (the same fit, at the same dimensi
 
 def main(snakemake) -> None:
     import pandas as pd
-
     from _du2022_fda import canonical, setup_threads
+
     from motionvar.du2022.fda import functional_primitive, n_basis_of
     from motionvar.du2022.fda.evaluations.table3_1 import fit_reference_sfpca
 

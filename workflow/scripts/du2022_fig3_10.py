@@ -6,12 +6,14 @@ du2022_fda_curves files; motionvar.du2022.fda.evaluations.fig3_10."""
 def main(snakemake) -> None:
     from _du2022_fda import load_curves
     from _rule import write_evaluation
+
     from motionvar.du2022.fda.evaluations import evaluate_fig3_10
     from motionvar.du2022.fda.figures import draw_fig3_10
 
     o = snakemake.params.options
-    result = evaluate_fig3_10(load_curves(snakemake.input.curves), snakemake.params.methods, o["primitives"],
-                              o["pick_primitive"])
+    result = evaluate_fig3_10(
+        load_curves(snakemake.input.curves), snakemake.params.methods, o["primitives"], o["pick_primitive"]
+    )
     write_evaluation(snakemake, result, draw_fig3_10, float_format="%.6g")
 
 

@@ -6,12 +6,20 @@ the du2022_fda_curves files; motionvar.du2022.fda.evaluations.fig3_11."""
 def main(snakemake) -> None:
     from _du2022_fda import load_curves
     from _rule import write_evaluation
+
     from motionvar.du2022.fda.evaluations import evaluate_fig3_11
     from motionvar.du2022.fda.figures import draw_fig3_11
 
     o = snakemake.params.options
-    result = evaluate_fig3_11(load_curves(snakemake.input.curves), snakemake.params.methods, o["primitives"],
-                              o["pick_primitive"], o["knn"], o["tsne_perplexity"], o["seed"])
+    result = evaluate_fig3_11(
+        load_curves(snakemake.input.curves),
+        snakemake.params.methods,
+        o["primitives"],
+        o["pick_primitive"],
+        o["knn"],
+        o["tsne_perplexity"],
+        o["seed"],
+    )
     write_evaluation(snakemake, result, draw_fig3_11, float_format="%.6g")
 
 

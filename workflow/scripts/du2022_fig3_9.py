@@ -4,8 +4,8 @@ basis functions K (from du2022_fda_basis); motionvar.du2022.fda.evaluations.fig3
 
 def main(snakemake) -> None:
     import pandas as pd
-
     from _rule import write_evaluation
+
     from motionvar.du2022.fda.evaluations import evaluate_fig3_9
     from motionvar.du2022.fda.figures import draw_fig3_9
 

@@ -8,12 +8,14 @@ together (Algorithm 1, line 9). The table lists the constraint errors that remai
 def main(snakemake) -> None:
     from _graph import dataset, joint_map, models
     from _rule import write_evaluation
+
     from motionvar.du2022.graph.evaluations import evaluate_fig4_10
     from motionvar.du2022.graph.figures import animate_fig4_10, draw_fig4_10
 
     clips = snakemake.input.clips
-    result = evaluate_fig4_10(models(snakemake.input.models), dataset(clips), joint_map(snakemake), source=clips,
-                              **snakemake.params.options)
+    result = evaluate_fig4_10(
+        models(snakemake.input.models), dataset(clips), joint_map(snakemake), source=clips, **snakemake.params.options
+    )
     write_evaluation(snakemake, result, draw_fig4_10, float_format="%.6g")
     animate_fig4_10(result, snakemake.output.gif)
 

@@ -5,8 +5,8 @@ mean evaluations, and the claims of Sec. 4.6.2."""
 
 def main(snakemake) -> None:
     import pandas as pd
-
     from _rule import write_evaluation
+
     from motionvar.du2022.graph.evaluations import evaluate_fig4_12
     from motionvar.du2022.graph.figures import draw_fig4_12
 

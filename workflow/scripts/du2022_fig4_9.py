@@ -6,12 +6,14 @@ training clips, as 2-D kernel densities in three projections, with a coverage nu
 def main(snakemake) -> None:
     from _graph import dataset, joint_map, models
     from _rule import write_evaluation
+
     from motionvar.du2022.graph.evaluations import evaluate_fig4_9
     from motionvar.du2022.graph.figures import draw_fig4_9
 
     clips = snakemake.input.clips
-    result = evaluate_fig4_9(models(snakemake.input.models), dataset(clips), joint_map(snakemake), source=clips,
-                             **snakemake.params.options)
+    result = evaluate_fig4_9(
+        models(snakemake.input.models), dataset(clips), joint_map(snakemake), source=clips, **snakemake.params.options
+    )
     write_evaluation(snakemake, result, draw_fig4_9, float_format="%.6g")
 
 

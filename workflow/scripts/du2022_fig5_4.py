@@ -4,17 +4,23 @@ characters started side by side in a line) and as GIF animations."""
 
 
 def main(snakemake) -> None:
+    from _rule import write_evaluation
+    from _style import load_inputs
+
     from motionvar.du2022.style import evaluate_fig5_4, load_vae
     from motionvar.du2022.style.figures import animate_fig5_4, draw_fig5_4
     from motionvar.plots import write_gif
-    from _rule import write_evaluation
-    from _style import load_inputs
 
     dataset, layout, space = load_inputs(snakemake)
     p = snakemake.params.options
     result = evaluate_fig5_4(
-        dataset, layout, space, [load_vae(f) for f in [*snakemake.input.vaes, *snakemake.input.cvaes]],
-        n_frames=p["canonical_frames"], n_samples=p["figure_samples"], seed=p["seed"],
+        dataset,
+        layout,
+        space,
+        [load_vae(f) for f in [*snakemake.input.vaes, *snakemake.input.cvaes]],
+        n_frames=p["canonical_frames"],
+        n_samples=p["figure_samples"],
+        seed=p["seed"],
     )
     write_evaluation(snakemake, result, draw_fig5_4)
     for group, out in (("neutral", snakemake.output.gif_neutral), ("styles", snakemake.output.gif_styles)):

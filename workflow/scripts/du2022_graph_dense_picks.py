@@ -8,6 +8,7 @@ def main(snakemake) -> None:
     from pathlib import Path
 
     from _graph import joint_map
+
     from motionvar.io import save_dataset
     from motionvar.prep import PrepOptions, align_motions
     from motionvar.synth.dense_picks import dense_pick_segments
@@ -15,8 +16,9 @@ def main(snakemake) -> None:
     entry, o = snakemake.params.entry, snakemake.params.options
     if entry["source"] != "synthetic":
         raise ValueError(f"dataset {snakemake.wildcards.dataset}: dense picks need the synthetic generator")
-    pieces, meta = dense_pick_segments(entry["subjects"], entry["seed"], o["dense_picks_per_subject"],
-                                       grid_spacing_cm=o["dense_grid_spacing_cm"])
+    pieces, meta = dense_pick_segments(
+        entry["subjects"], entry["seed"], o["dense_picks_per_subject"], grid_spacing_cm=o["dense_grid_spacing_cm"]
+    )
     motions = align_motions(pieces, joint_map(snakemake), PrepOptions.from_dict(snakemake.params.prep))
     save_dataset(Path(snakemake.output.clips).parent, motions, meta)
     logging.info("%d dense-grid pick_reach clips", len(motions))

@@ -6,6 +6,7 @@ def main(snakemake) -> None:
     import logging
 
     from _graph import dataset
+
     from motionvar.du2022.graph import MotionPrimitive, PrimitiveOptions, primitive_clips
 
     name, o = snakemake.wildcards.primitive, dict(snakemake.params.options)
@@ -15,8 +16,15 @@ def main(snakemake) -> None:
     motions, _ = primitive_clips(dataset(clips), name.removesuffix("_dense"), source=clips)
     model = MotionPrimitive.fit(motions, name, options)
     model.save(snakemake.output.model)
-    logging.info("%s: %d clips, %d latent dimensions, %d Gaussians (scores %s), canonical %d frames",
-                 name, len(motions), model.n_latent, model.gmm_.n_components, model.gmm_scores_, model.n_frames)
+    logging.info(
+        "%s: %d clips, %d latent dimensions, %d Gaussians (scores %s), canonical %d frames",
+        name,
+        len(motions),
+        model.n_latent,
+        model.gmm_.n_components,
+        model.gmm_scores_,
+        model.n_frames,
+    )
 
 
 if "snakemake" in globals():

@@ -8,6 +8,7 @@ def main(snakemake) -> None:
     import logging
 
     from _graph import joint_map, models
+
     from motionvar.du2022.graph.evaluations import SearchSettings, search_primitive
 
     p = snakemake.params
@@ -16,9 +17,14 @@ def main(snakemake) -> None:
     queries.to_csv(snakemake.output.queries, index=False)
     trees.to_csv(snakemake.output.trees, index=False)
     km = queries[queries["method"] == "kmeans"]
-    logging.info("%s: %d queries; trees %s; k-means mean evaluations by beam %s, verdict beam %s", model.name,
-                 len(queries), trees.to_dict("records"), km.groupby("beam")["n_evals"].mean().round(1).to_dict(),
-                 sorted(set(km.loc[km["selected"], "beam"])))
+    logging.info(
+        "%s: %d queries; trees %s; k-means mean evaluations by beam %s, verdict beam %s",
+        model.name,
+        len(queries),
+        trees.to_dict("records"),
+        km.groupby("beam")["n_evals"].mean().round(1).to_dict(),
+        sorted(set(km.loc[km["selected"], "beam"])),
+    )
 
 
 if "snakemake" in globals():

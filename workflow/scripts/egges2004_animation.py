@@ -6,6 +6,7 @@ def main(snakemake) -> None:
     import logging
 
     from _egges2004 import model
+
     from motionvar.egges2004.evaluations import idle_animation
     from motionvar.plots import animate_motions
 

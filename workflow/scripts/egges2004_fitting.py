@@ -6,6 +6,7 @@ at p and end at q exactly, and the pieces of a generated sequence join smoothly
 def main(snakemake) -> None:
     from _egges2004 import model
     from _rule import write_evaluation
+
     from motionvar.egges2004.evaluations import FittingParams, fitting
     from motionvar.egges2004.figures import draw_fitting
 

@@ -5,6 +5,7 @@ identify its person? (motionvar.egges2004.evaluations.sec8_identification)"""
 def main(snakemake) -> None:
     from _egges2004 import joint_map, model, recordings
     from _rule import write_evaluation
+
     from motionvar.egges2004.evaluations import IdentificationParams, identification
     from motionvar.egges2004.figures import draw_identification
 

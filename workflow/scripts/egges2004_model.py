@@ -8,6 +8,7 @@ def main(snakemake) -> None:
     import logging
 
     from _egges2004 import joint_map, prep, save_figure
+
     from motionvar.egges2004 import IdleSettings
     from motionvar.egges2004.evaluations import category_check
     from motionvar.egges2004.figures import draw_categories

@@ -6,6 +6,7 @@ and a PC curve with its extrema (Fig. 7-8, evaluations.fig7_8_extrema)."""
 def main(snakemake) -> None:
     from _egges2004 import model, recordings, save_figure
     from _rule import write_evaluation
+
     from motionvar.egges2004.evaluations import RepetitionParams, pc_extrema, repetition
     from motionvar.egges2004.figures import draw_pc_extrema, draw_repetition
 

@@ -5,6 +5,7 @@ against the playback rate (motionvar.egges2004.evaluations.sec8_speed)."""
 def main(snakemake) -> None:
     from _egges2004 import model
     from _rule import write_evaluation
+
     from motionvar.egges2004.evaluations import SpeedParams, speed
     from motionvar.egges2004.figures import draw_speed
 

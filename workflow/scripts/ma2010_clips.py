@@ -9,14 +9,20 @@ def main(snakemake) -> None:
     from pathlib import Path
 
     from _ma2010 import joint_map
+
     from motionvar.io import load_dataset
     from motionvar.io.model_file import save_model
     from motionvar.ma2010.examples import CLIPSET_KIND, walk_cycles
 
     o = snakemake.params.options
     clips, table = walk_cycles(
-        load_dataset(Path(snakemake.input.clips).parent), joint_map(snakemake), o["walk_styles"], o["walk_variants"],
-        o["n_frames"], o["keyframe_prominence"], o["keyframe_min_separation_s"],
+        load_dataset(Path(snakemake.input.clips).parent),
+        joint_map(snakemake),
+        o["walk_styles"],
+        o["walk_variants"],
+        o["n_frames"],
+        o["keyframe_prominence"],
+        o["keyframe_min_separation_s"],
         what=f"{snakemake.input.metadata} (config ma2010.walk_styles / walk_variants)",
     )
     save_model(snakemake.output.clips, clips.to_arrays(), {"kind": CLIPSET_KIND, **o})

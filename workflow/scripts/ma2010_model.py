@@ -7,15 +7,28 @@ def main(snakemake) -> None:
     import logging
 
     from _ma2010 import load_walks
+
     from motionvar.ma2010.storage import save_style_variation_model
 
     o = snakemake.params.options
     walks = load_walks(snakemake)
     model = walks.fit_model(o["structure"], o["variogram_model"])
-    save_style_variation_model(snakemake.output.model, model, walks.joint_map, walks.clips.clip_ids, walks.subjects,
-                               settings={k: o[k] for k in ("structure", "variogram_model", "root_group") if k in o})
-    logging.info("%d cycles of %d subjects; structure %s; style range %s - %s", walks.clips.n_clips,
-                 len(set(walks.subjects)), model.network_.structure, model.style_.min(axis=0), model.style_.max(axis=0))
+    save_style_variation_model(
+        snakemake.output.model,
+        model,
+        walks.joint_map,
+        walks.clips.clip_ids,
+        walks.subjects,
+        settings={k: o[k] for k in ("structure", "variogram_model", "root_group") if k in o},
+    )
+    logging.info(
+        "%d cycles of %d subjects; structure %s; style range %s - %s",
+        walks.clips.n_clips,
+        len(set(walks.subjects)),
+        model.network_.structure,
+        model.style_.min(axis=0),
+        model.style_.max(axis=0),
+    )
 
 
 if "snakemake" in globals():

@@ -6,6 +6,7 @@ residuals per joint group and for Kriging on style alone, with the fitted variog
 def main(snakemake) -> None:
     from _ma2010 import load_walks
     from _rule import write_evaluation
+
     from motionvar.ma2010.evaluations.variogram import variogram_fits
     from motionvar.ma2010.figures import draw_variogram
 

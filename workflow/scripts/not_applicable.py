@@ -4,8 +4,8 @@ cannot support, with the reason from checkpoint applicability."""
 
 def main(snakemake) -> None:
     import pandas as pd
-
     from _rule import write_evaluation
+
     from motionvar.claims import not_applicable_result
     from motionvar.plots.notice import draw_notice
 
@@ -14,8 +14,12 @@ def main(snakemake) -> None:
     if ev not in table.index or table.loc[ev, "applicable"] == "True":
         raise ValueError(f"{snakemake.input[0]}: {ev} is not a not-applicable evaluation of this dataset")
     row = table.loc[ev]
-    result = not_applicable_result(ev, f"Not applicable to dataset {snakemake.wildcards.dataset}: {row.reason}",
-                                   checks=row.checks, source=row.source)
+    result = not_applicable_result(
+        ev,
+        f"Not applicable to dataset {snakemake.wildcards.dataset}: {row.reason}",
+        checks=row.checks,
+        source=row.source,
+    )
     write_evaluation(snakemake, result, lambda r: draw_notice(f"{row.source} ({ev}): not applicable", row.reason))
 
 

@@ -8,15 +8,20 @@ def main(snakemake) -> None:
     import logging
 
     from _style import load_inputs
+
+    from motionvar.core import cmu_joint_map
     from motionvar.du2022.style.generate import fit_rig, save_rig
     from motionvar.io.joint_map_file import load_joint_map
-    from motionvar.core import cmu_joint_map
 
     dataset, _, _ = load_inputs(snakemake)
     path = snakemake.params.joint_map
-    rig = fit_rig(dataset, load_joint_map(path) if path else cmu_joint_map(), snakemake.params.options["canonical_frames"])
+    rig = fit_rig(
+        dataset, load_joint_map(path) if path else cmu_joint_map(), snakemake.params.options["canonical_frames"]
+    )
     save_rig(snakemake.output.model, rig)
-    logging.info("%d joints, %d feature joints; fps per primitive %s", rig.skeleton.n_joints, rig.layout.n_joints, rig.fps)
+    logging.info(
+        "%d joints, %d feature joints; fps per primitive %s", rig.skeleton.n_joints, rig.layout.n_joints, rig.fps
+    )
 
 
 if "snakemake" in globals():

@@ -49,8 +49,10 @@ class ResultsDir:
         if not self.root.is_dir():
             have = sorted(p.name for p in self.results.iterdir() if p.is_dir()) if self.results.is_dir() else []
             where = f"datasets there: {', '.join(have)}" if have else "no datasets there"
-            raise CLIError(f"no results for dataset {self.dataset!r} in {self.results} ({where}); run "
-                           f"`snakemake --cores 2` first, or pass --results DIR")
+            raise CLIError(
+                f"no results for dataset {self.dataset!r} in {self.results} ({where}); run "
+                f"`snakemake --cores 2` first, or pass --results DIR"
+            )
 
     def unsupported(self, evaluations: Sequence[str]) -> str | None:
         """Why the dataset supports none of ``evaluations`` (whose models a command reads),
@@ -77,10 +79,14 @@ class ResultsDir:
             if not p.is_file():
                 reason = self.unsupported(evaluations)
                 if reason:
-                    raise CLIError(f"{what} for dataset {self.dataset!r} is missing ({p}): the dataset does not "
-                                   f"support it: {reason}")
-                raise CLIError(f"{what} for dataset {self.dataset!r} is missing ({p}): run "
-                               f"`snakemake --cores 2 {self.target(paths[0])}` first")
+                    raise CLIError(
+                        f"{what} for dataset {self.dataset!r} is missing ({p}): the dataset does not "
+                        f"support it: {reason}"
+                    )
+                raise CLIError(
+                    f"{what} for dataset {self.dataset!r} is missing ({p}): run "
+                    f"`snakemake --cores 2 {self.target(paths[0])}` first"
+                )
         return paths
 
 
@@ -114,10 +120,13 @@ def dataset_rig(rd: ResultsDir) -> RigLayout | None:
         with np.load(path, allow_pickle=False) as z:  # reads only the arrays named
             ends = z["end_site_joints"]
             offsets = z["end_site_offsets"]
-            return RigLayout(tuple(str(n) for n in z["names"]), np.asarray(z["parents"]),
-                             tuple(str(o) for o in z["rotation_orders"]),
-                             tuple(bool(p) for p in z["position_channels"]),
-                             {int(j): offsets[:, k].mean(axis=0) for k, j in enumerate(ends)})
+            return RigLayout(
+                tuple(str(n) for n in z["names"]),
+                np.asarray(z["parents"]),
+                tuple(str(o) for o in z["rotation_orders"]),
+                tuple(bool(p) for p in z["position_channels"]),
+                {int(j): offsets[:, k].mean(axis=0) for k, j in enumerate(ends)},
+            )
     except (OSError, ValueError, KeyError) as exc:
         raise CLIError(f"{path}: not a readable packed dataset ({exc})") from exc
 
@@ -131,11 +140,18 @@ def on_rig(motion: Motion, rig: RigLayout | None) -> Motion:
         return motion
     sk = motion.skeleton
     if sk.names != rig.names or not np.array_equal(sk.parents, rig.parents):
-        raise CLIError(f"the model's skeleton ({sk.n_joints} joints) is not the dataset's rig ({len(rig.names)} joints "
-                       f"in {DATA_CLIPS}); rerun the pipeline so that models and data agree")
-    out = Skeleton(names=sk.names, parents=sk.parents, offsets=sk.offsets,
-                   end_sites=sk.end_sites if sk.end_sites else rig.end_sites,
-                   rotation_orders=rig.rotation_orders, position_channels=rig.position_channels)
+        raise CLIError(
+            f"the model's skeleton ({sk.n_joints} joints) is not the dataset's rig ({len(rig.names)} joints "
+            f"in {DATA_CLIPS}); rerun the pipeline so that models and data agree"
+        )
+    out = Skeleton(
+        names=sk.names,
+        parents=sk.parents,
+        offsets=sk.offsets,
+        end_sites=sk.end_sites if sk.end_sites else rig.end_sites,
+        rotation_orders=rig.rotation_orders,
+        position_channels=rig.position_channels,
+    )
     return replace(motion, skeleton=out)
 
 

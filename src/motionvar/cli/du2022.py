@@ -9,7 +9,17 @@ import re
 from pathlib import Path
 
 from .common import (
-    CLIError, ResultsDir, dataset_rig, load_or_fail, note, on_rig, out_dir, out_file, parse_numbers, say, write_motions,
+    CLIError,
+    ResultsDir,
+    dataset_rig,
+    load_or_fail,
+    note,
+    on_rig,
+    out_dir,
+    out_file,
+    parse_numbers,
+    say,
+    write_motions,
 )
 from .progress import Progress
 
@@ -25,23 +35,33 @@ STYLE_EVALUATIONS = ("du2022_table5_1", "du2022_table5_2", "du2022_fig5_4")  # b
 
 
 def add_parser(sub: argparse._SubParsersAction, common) -> None:
-    p = sub.add_parser("du2022", help="Morphable Graph walks and stylistic samples (Du 2022)",
-                       description="Du 2022: `walk` follows a floor path with the Morphable Graph (ch. 4); `style` "
-                                   "decodes samples of a style's CVAE (ch. 5).")
+    p = sub.add_parser(
+        "du2022",
+        help="Morphable Graph walks and stylistic samples (Du 2022)",
+        description="Du 2022: `walk` follows a floor path with the Morphable Graph (ch. 4); `style` "
+        "decodes samples of a style's CVAE (ch. 5).",
+    )
     kinds = p.add_subparsers(dest="kind", metavar="{walk,style}", required=True)
     w = kinds.add_parser(
-        "walk", parents=[common()], help="a walk along a floor path (Morphable Graph, Algorithm 1)",
+        "walk",
+        parents=[common()],
+        help="a walk along a floor path (Morphable Graph, Algorithm 1)",
         description="A graph walk following the path: each step seeded from a k-means tree of GMM samples and "
-                    "optimised by Levenberg-Marquardt on Eq. 4.9 (settings: config graph.synthesis of the run).")
-    w.add_argument("--path", required=True,
-                   help='floor points x,z in cm, separated by spaces or ";", e.g. "0,0 300,0 400,100"')
+        "optimised by Levenberg-Marquardt on Eq. 4.9 (settings: config graph.synthesis of the run).",
+    )
+    w.add_argument(
+        "--path", required=True, help='floor points x,z in cm, separated by spaces or ";", e.g. "0,0 300,0 400,100"'
+    )
     w.add_argument("--max-steps", type=int, default=None, help="at most this many steps (default: enough for the path)")
     w.add_argument("--out", required=True, help="output BVH file")
     w.set_defaults(run=run_walk)
     s = kinds.add_parser(
-        "style", parents=[common()], help="samples of a style's CVAE decoded to motion",
+        "style",
+        parents=[common()],
+        help="samples of a style's CVAE decoded to motion",
         description="Random samples of the CVAE of a style (or the neutral VAE: --style neutral) of one primitive, "
-                    "decoded by the motion decoder into joint positions and put on the dataset's rig. One BVH per sample.")
+        "decoded by the motion decoder into joint positions and put on the dataset's rig. One BVH per sample.",
+    )
     s.add_argument("--style", required=True, help="style name (`motionvar models` lists them), or neutral")
     s.add_argument("--primitive", default=None, help="motion primitive (default: the first with a model of the style)")
     s.add_argument("--n", type=int, default=1, help="number of samples (default 1)")
@@ -97,12 +117,18 @@ def run_walk(args: argparse.Namespace) -> int:
     cyclic = list(settings.cyclic)
     primitives = graph_primitives(rd, [settings.start, *cyclic, settings.end])
     if not any(n in primitives for n in cyclic):
-        rd.require(f"the walking primitive {cyclic[0]} (Du 2022 ch. 4)", f"{GRAPH}/{cyclic[0]}.npz",
-                   f"{GRAPH}/{cyclic[0]}.json", evaluations=WALK_EVALUATIONS)
+        rd.require(
+            f"the walking primitive {cyclic[0]} (Du 2022 ch. 4)",
+            f"{GRAPH}/{cyclic[0]}.npz",
+            f"{GRAPH}/{cyclic[0]}.json",
+            evaluations=WALK_EVALUATIONS,
+        )
     if not has_steps(saved.graph, [settings.start, *cyclic]):
-        raise CLIError(f"the Morphable Graph of dataset {args.dataset!r} has no transitions between its walking "
-                       "primitives (each clip of its prep data is one primitive, so no clip shows one step following "
-                       "another): a walk cannot go beyond one step")
+        raise CLIError(
+            f"the Morphable Graph of dataset {args.dataset!r} has no transitions between its walking "
+            "primitives (each clip of its prep data is one primitive, so no clip shows one step following "
+            "another): a walk cannot go beyond one step"
+        )
     max_steps = args.max_steps or steps_for_path(primitives, path, saved.joint_map, settings)
     settings = walk_settings(saved.settings, max_steps)
     samples = int(saved.settings.get("tree_samples", 10000))
@@ -113,11 +139,15 @@ def run_walk(args: argparse.Namespace) -> int:
     gap = walk.end_gap_cm(hips)
     step = walk.path.length / max(len(walk.steps), 1)
     if gap > step:
-        note(f"warning: {out}: the walk ends {gap:.0f} cm from the path's end, more than a step (--max-steps "
-             f"{settings.max_steps})")
+        note(
+            f"warning: {out}: the walk ends {gap:.0f} cm from the path's end, more than a step (--max-steps "
+            f"{settings.max_steps})"
+        )
     names = " ".join(s.primitive.removeprefix("walk_") for s in walk.steps)
-    say(f"{out}: {walk.motion.n_frames} frames at {walk.motion.fps:g} fps ({walk.motion.duration:.2f} s); "
-        f"{len(walk.steps)} steps ({names}); path {path.length:.0f} cm, the walk ends {gap:.1f} cm from its end")
+    say(
+        f"{out}: {walk.motion.n_frames} frames at {walk.motion.fps:g} fps ({walk.motion.duration:.2f} s); "
+        f"{len(walk.steps)} steps ({names}); path {path.length:.0f} cm, the walk ends {gap:.1f} cm from its end"
+    )
     return 0
 
 
@@ -146,8 +176,10 @@ def run_style(args: argparse.Namespace) -> int:
     if args.style not in styles:
         have = ", ".join(styles) if styles else "none"
         target = rd.target(rd.model(f"{STYLE}/cvae/walk_leftStance/{args.style}.pt"))
-        raise CLIError(f"style {args.style!r} has no model for dataset {args.dataset!r}; styles with models: {have} "
-                       f"(a configured style is built by `snakemake --cores 2 {target}`)")
+        raise CLIError(
+            f"style {args.style!r} has no model for dataset {args.dataset!r}; styles with models: {have} "
+            f"(a configured style is built by `snakemake --cores 2 {target}`)"
+        )
     prims = sorted(p for p, s in models if s == args.style)
     primitive = args.primitive or prims[0]
     if primitive not in prims:
@@ -167,6 +199,8 @@ def run_style(args: argparse.Namespace) -> int:
     write_motions(paths, [on_rig(m, layout) for m in motions], args.unit_cm)
     for p, m in zip(paths, motions):
         travel = float(((m.root_pos[-1] - m.root_pos[0])[[0, 2]] ** 2).sum() ** 0.5)
-        say(f"{p}: {m.n_frames} frames at {m.fps:.4g} fps ({m.duration:.2f} s), {args.style} {primitive} "
-            f"(the hips travel {travel:.0f} cm)")
+        say(
+            f"{p}: {m.n_frames} frames at {m.fps:.4g} fps ({m.duration:.2f} s), {args.style} {primitive} "
+            f"(the hips travel {travel:.0f} cm)"
+        )
     return 0

@@ -6,7 +6,18 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
-from .common import CLIError, ResultsDir, dataset_rig, load_or_fail, note, on_rig, out_file, positive, say, write_motions
+from .common import (
+    CLIError,
+    ResultsDir,
+    dataset_rig,
+    load_or_fail,
+    note,
+    on_rig,
+    out_file,
+    positive,
+    say,
+    write_motions,
+)
 from .progress import Progress
 
 MODEL = "egges2004/idle_model.npz"
@@ -17,10 +28,15 @@ EVALUATIONS = ("egges2004_speed", "egges2004_identification", "egges2004_repetit
 
 def add_parser(sub: argparse._SubParsersAction, common) -> None:
     p = sub.add_parser(
-        "egges2004", parents=[common()], help="personalised idle motion (Egges et al. 2004)",
+        "egges2004",
+        parents=[common()],
+        help="personalised idle motion (Egges et al. 2004)",
         description="Idle motion of one subject: balance shifts from their category graph and fitted animations "
-                    "(Sec. 5.4) with small posture variations (Sec. 6), on their own skeleton.")
-    p.add_argument("--subject", default=None, help="whose idle motion (default: the first; `motionvar models` lists them)")
+        "(Sec. 5.4) with small posture variations (Sec. 6), on their own skeleton.",
+    )
+    p.add_argument(
+        "--subject", default=None, help="whose idle motion (default: the first; `motionvar models` lists them)"
+    )
     p.add_argument("--seconds", type=float, default=60.0, help="length (s; default 60)")
     p.add_argument("--no-variations", action="store_true", help="balance shifts only (leave out Sec. 6)")
     p.add_argument("--out", required=True, help="output BVH file")
@@ -47,6 +63,8 @@ def run(args: argparse.Namespace) -> int:
         motion = idle_motion(model, subject, seconds, args.seed, variations=not args.no_variations)
         bar.update(1)
     write_motions([out], [on_rig(motion, dataset_rig(rd))], args.unit_cm)
-    say(f"{out}: {motion.n_frames} frames at {motion.fps:g} fps ({motion.duration:.2f} s), idle motion of subject "
-        f"{subject}")
+    say(
+        f"{out}: {motion.n_frames} frames at {motion.fps:g} fps ({motion.duration:.2f} s), idle motion of subject "
+        f"{subject}"
+    )
     return 0

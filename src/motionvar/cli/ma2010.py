@@ -7,7 +7,17 @@ import argparse
 from pathlib import Path
 
 from .common import (
-    CLIError, ResultsDir, dataset_rig, load_or_fail, note, on_rig, out_dir, parse_numbers, positive, say, write_motions,
+    CLIError,
+    ResultsDir,
+    dataset_rig,
+    load_or_fail,
+    note,
+    on_rig,
+    out_dir,
+    parse_numbers,
+    positive,
+    say,
+    write_motions,
 )
 from .progress import Progress
 
@@ -21,24 +31,37 @@ EVALUATIONS = ("ma2010_fig6",)  # the model is built where these are supported
 
 def add_parser(sub: argparse._SubParsersAction, common) -> None:
     p = sub.add_parser(
-        "ma2010", parents=[common()], help="style-and-variation walks (Ma et al. 2010)",
+        "ma2010",
+        parents=[common()],
+        help="style-and-variation walks (Ma et al. 2010)",
         description="Walks of the given style with latent variation drawn from the parameter propagation network "
-                    "(Eq. 10) once per variant, or fixed with --xi; cycles predicted by Eq. 11-13, joined by "
-                    "transitions (Eq. 14-15), root from footskate cleanup (Sec. 6.3), by default followed by pinning "
-                    "the feet in contact with leg IK (Kovar et al. 2002; --cleanup root: the paper's alone). One BVH "
-                    "per variant.")
-    p.add_argument("--style", required=True,
-                   help="the style parameters: the strides (cm) of the left and right support phase; one number "
-                        "for both or two comma-separated (`motionvar models` shows the range)")
-    p.add_argument("--xi", default=None,
-                   help="fix the latent variation of joint groups: A=..,B=..,C=..,D=.. (A legs, B left arm, C right "
-                        "arm, D upper body; any subset) or 4 numbers A,B,C,D; the others are drawn from Eq. 10")
+        "(Eq. 10) once per variant, or fixed with --xi; cycles predicted by Eq. 11-13, joined by "
+        "transitions (Eq. 14-15), root from footskate cleanup (Sec. 6.3), by default followed by pinning "
+        "the feet in contact with leg IK (Kovar et al. 2002; --cleanup root: the paper's alone). One BVH "
+        "per variant.",
+    )
+    p.add_argument(
+        "--style",
+        required=True,
+        help="the style parameters: the strides (cm) of the left and right support phase; one number "
+        "for both or two comma-separated (`motionvar models` shows the range)",
+    )
+    p.add_argument(
+        "--xi",
+        default=None,
+        help="fix the latent variation of joint groups: A=..,B=..,C=..,D=.. (A legs, B left arm, C right "
+        "arm, D upper body; any subset) or 4 numbers A,B,C,D; the others are drawn from Eq. 10",
+    )
     p.add_argument("--seconds", type=float, default=10.0, help="length of each walk (s; default 10)")
     p.add_argument("--variants", type=int, default=1, help="number of walks, each with its own xi (default 1)")
-    p.add_argument("--cleanup", choices=CLEANUPS, default="root+feet",
-                   help="footskate cleanup: 'root' the paper's (Sec. 6.3: the support foot is fixed and the root "
-                        "follows; the other foot of a double support slides, 1-3 cm/s), 'root+feet' (default) that "
-                        "root, then every foot in contact held still by leg IK (Kovar et al. 2002)")
+    p.add_argument(
+        "--cleanup",
+        choices=CLEANUPS,
+        default="root+feet",
+        help="footskate cleanup: 'root' the paper's (Sec. 6.3: the support foot is fixed and the root "
+        "follows; the other foot of a double support slides, 1-3 cm/s), 'root+feet' (default) that "
+        "root, then every foot in contact held still by leg IK (Kovar et al. 2002)",
+    )
     p.add_argument("--out", required=True, help="output folder (ma2010_<style>_v<k>.bvh)")
     p.set_defaults(run=run)
 
@@ -87,8 +110,9 @@ def run(args: argparse.Namespace) -> int:
     solver = root_solver(model.skeleton_, saved.joint_map)
     rig = dataset_rig(rd)
     with Progress("ma2010 walks", args.variants, enabled=not args.quiet) as bar:
-        walks = generate_walks(model, solver, style, seconds, args.variants, args.seed, xi, progress=bar,
-                               cleanup=args.cleanup)
+        walks = generate_walks(
+            model, solver, style, seconds, args.variants, args.seed, xi, progress=bar, cleanup=args.cleanup
+        )
     tag = "_".join(f"{v:g}" for v in style)
     paths = [folder / f"ma2010_{tag}_v{k + 1}.bvh" for k in range(len(walks))]
     write_motions(paths, [on_rig(w.motion, rig) for w in walks], args.unit_cm)
@@ -96,11 +120,15 @@ def run(args: argparse.Namespace) -> int:
         m = w.measures
         xi_text = ", ".join(f"{g} {v:.3g}" for g, v in w.xi.items())
         drawn = "" if w.draws == 1 else f" (xi drawn {w.draws} times: strides off by > {STRIDE_TOLERANCE:.0%} redrawn)"
-        say(f"{p}: {w.motion.n_frames} frames at {w.motion.fps:g} fps ({w.motion.duration:.2f} s); style "
+        say(
+            f"{p}: {w.motion.n_frames} frames at {w.motion.fps:g} fps ({w.motion.duration:.2f} s); style "
             f"{', '.join(f'{v:g}' for v in style)} {saved.style_unit}; measured strides "
             f"{m['left_support_stride_cm']:.1f}, {m['right_support_stride_cm']:.1f} cm; foot skating "
-            f"{m['foot_skating_cm_s']:.2f} cm/s (cleanup {args.cleanup}); xi: {xi_text}{drawn}")
+            f"{m['foot_skating_cm_s']:.2f} cm/s (cleanup {args.cleanup}); xi: {xi_text}{drawn}"
+        )
         if not w.accepted:
-            note(f"warning: {p}: no draw of xi in {w.draws} gave the requested strides within {STRIDE_TOLERANCE:.0%}; "
-                 f"this is the closest (try another --seed or --xi)")
+            note(
+                f"warning: {p}: no draw of xi in {w.draws} gave the requested strides within {STRIDE_TOLERANCE:.0%}; "
+                f"this is the closest (try another --seed or --xi)"
+            )
     return 0

@@ -28,8 +28,12 @@ def _common() -> argparse.ArgumentParser:
     g.add_argument("--dataset", default="synthetic", help="dataset name under --results (default synthetic)")
     g.add_argument("--results", default="results", help="results folder of a pipeline run (default results)")
     g.add_argument("--seed", type=int, default=0, help="random seed: the same seed gives the same output (default 0)")
-    g.add_argument("--unit-cm", type=float, default=1.0,
-                   help="centimetres per BVH length unit of the output (default 1: cm; 100: metres, 0.1: mm)")
+    g.add_argument(
+        "--unit-cm",
+        type=float,
+        default=1.0,
+        help="centimetres per BVH length unit of the output (default 1: cm; 100: metres, 0.1: mm)",
+    )
     g.add_argument("--quiet", action="store_true", help="no progress bar")
     return c
 
@@ -38,10 +42,11 @@ def build_parser() -> argparse.ArgumentParser:
     p = argparse.ArgumentParser(
         prog="motionvar",
         description="Generate BVH motion with the models a motionvar pipeline run saved under "
-                    "results/<dataset>/models/ (Ma et al. 2010, Egges et al. 2004, Du 2022).")
+        "results/<dataset>/models/ (Ma et al. 2010, Egges et al. 2004, Du 2022).",
+    )
     sub = p.add_subparsers(dest="command", metavar="{models,ma2010,egges2004,du2022}", required=True)
     for part in (models, ma2010, egges2004, du2022):  # each its own copy of the common options (set_defaults
-        part.add_parser(sub, _common)               # on a subparser changes the default of a shared action)
+        part.add_parser(sub, _common)  # on a subparser changes the default of a shared action)
     return p
 
 

@@ -11,9 +11,13 @@ from .common import CLIError, ResultsDir, say
 
 
 def add_parser(sub: argparse._SubParsersAction, common) -> None:
-    p = sub.add_parser("models", parents=[common()], help="list the fitted models and what each command needs",
-                       description="Which model files a pipeline run left for the dataset, which are missing (with "
-                                   "the Snakemake target that builds them), and what each command accepts.")
+    p = sub.add_parser(
+        "models",
+        parents=[common()],
+        help="list the fitted models and what each command needs",
+        description="Which model files a pipeline run left for the dataset, which are missing (with "
+        "the Snakemake target that builds them), and what each command accepts.",
+    )
     p.set_defaults(run=run, dataset=None)
 
 
@@ -49,10 +53,16 @@ def _ma2010(rd: ResultsDir) -> list[str]:
         lo, hi = style_range(m)
         ex_lo, ex_hi = style_range(m, 0.0)
         for k, name in enumerate(saved.style_names):
-            rule = (f", widened by {STYLE_MARGIN:.0%} of it on each side; the strides must stay as close to each "
-                    "other as the examples'" if k == 0 else "")
-            out.append(f"    style {range_text(lo[k:k + 1], hi[k:k + 1], [name], saved.style_unit)} (examples "
-                       f"{ex_lo[k]:.1f}-{ex_hi[k]:.1f}{rule})")
+            rule = (
+                f", widened by {STYLE_MARGIN:.0%} of it on each side; the strides must stay as close to each "
+                "other as the examples'"
+                if k == 0
+                else ""
+            )
+            out.append(
+                f"    style {range_text(lo[k : k + 1], hi[k : k + 1], [name], saved.style_unit)} (examples "
+                f"{ex_lo[k]:.1f}-{ex_hi[k]:.1f}{rule})"
+            )
         letters = {g: k for k, g in GROUP_LETTERS.items()}
         out.append("    xi: " + "; ".join(f"{letters[g]} ({g}) {a:.3g}-{b:.3g}" for g, (a, b) in xi_range(m).items()))
         out.append(f"    {m.style_.shape[0]} example cycles of {len(set(saved.subjects))} subjects, {m.fps_:g} fps")
@@ -87,17 +97,23 @@ def _du2022_walk(rd: ResultsDir) -> list[str]:
         names = [settings.start, *settings.cyclic, settings.end]
         have = [n for n in names if rd.model(f"{du2022.GRAPH}/{n}.npz").is_file()]
         missing = [n for n in names if n not in have]
-        out.append(f"    walking primitives: {', '.join(have) or 'none'}"
-                   + (f" (not modelled: {', '.join(missing)})" if missing else ""))
+        out.append(
+            f"    walking primitives: {', '.join(have) or 'none'}"
+            + (f" (not modelled: {', '.join(missing)})" if missing else "")
+        )
         graph = load_graph(rd.model(du2022.EDGES)).graph
         if not du2022.has_steps(graph, [settings.start, *settings.cyclic]):
-            out.append("    no transitions between walking primitives: a walk stops after one step (each clip of "
-                       "the prep data is one primitive)")
+            out.append(
+                "    no transitions between walking primitives: a walk stops after one step (each clip of "
+                "the prep data is one primitive)"
+            )
         if not any(n in have for n in settings.cyclic):
             reason = rd.unsupported(du2022.WALK_EVALUATIONS)
             target = rd.target(rd.model(f"{du2022.GRAPH}/{settings.cyclic[0]}.npz"))
-            out.append("    MISSING a stepping primitive   <- "
-                       + (f"not applicable: {reason}" if reason else f"snakemake --cores 2 {target}"))
+            out.append(
+                "    MISSING a stepping primitive   <- "
+                + (f"not applicable: {reason}" if reason else f"snakemake --cores 2 {target}")
+            )
     return out
 
 
@@ -112,8 +128,14 @@ def _du2022_style(rd: ResultsDir) -> list[str]:
         out += [f"    style {s}: primitives {', '.join(sorted(ps))}" for s, ps in sorted(by_style.items())]
     else:
         reason = rd.unsupported(du2022.STYLE_EVALUATIONS)
-        out.append("    no VAE or CVAE   <- " + (f"not applicable: {reason}" if reason else
-                                               f"snakemake --cores 2 {rd.target(rd.model(du2022.STYLE + '/vae'))}/<primitive>.pt"))
+        out.append(
+            "    no VAE or CVAE   <- "
+            + (
+                f"not applicable: {reason}"
+                if reason
+                else f"snakemake --cores 2 {rd.target(rd.model(du2022.STYLE + '/vae'))}/<primitive>.pt"
+            )
+        )
     return out
 
 
@@ -122,7 +144,9 @@ def run(args: argparse.Namespace) -> int:
     if args.dataset is None:
         found = sorted(p.name for p in results.iterdir() if (p / "models").is_dir()) if results.is_dir() else []
         if not found:
-            raise CLIError(f"no dataset with models in {results}: run `snakemake --cores 2` first, or pass --results DIR")
+            raise CLIError(
+                f"no dataset with models in {results}: run `snakemake --cores 2` first, or pass --results DIR"
+            )
         datasets = found
     else:
         datasets = [args.dataset]

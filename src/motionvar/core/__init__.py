@@ -13,6 +13,14 @@ _EXPORTS = {
 __getattr__, __dir__ = lazy_exports(__name__, _EXPORTS)
 
 __all__ = [
-    "CMU_UNIT_CM", "JOINT_GROUPS", "SEMANTIC_JOINTS", "JointMap", "Motion", "Skeleton",
-    "cmu_joint_map", "cmu_skeleton", "fk", "fk_torch",
+    "CMU_UNIT_CM",
+    "JOINT_GROUPS",
+    "SEMANTIC_JOINTS",
+    "JointMap",
+    "Motion",
+    "Skeleton",
+    "cmu_joint_map",
+    "cmu_skeleton",
+    "fk",
+    "fk_torch",
 ]

@@ -21,11 +21,25 @@ import numpy as np
 from .skeleton import Skeleton
 
 SEMANTIC_JOINTS = (
-    "hips", "spine", "chest", "neck", "head",
-    "left_shoulder", "left_elbow", "left_hand",
-    "right_shoulder", "right_elbow", "right_hand",
-    "left_hip", "left_knee", "left_ankle", "left_toe",
-    "right_hip", "right_knee", "right_ankle", "right_toe",
+    "hips",
+    "spine",
+    "chest",
+    "neck",
+    "head",
+    "left_shoulder",
+    "left_elbow",
+    "left_hand",
+    "right_shoulder",
+    "right_elbow",
+    "right_hand",
+    "left_hip",
+    "left_knee",
+    "left_ankle",
+    "left_toe",
+    "right_hip",
+    "right_knee",
+    "right_ankle",
+    "right_toe",
 )
 JOINT_GROUPS = ("legs", "left_arm", "right_arm", "upper_body")
 
@@ -75,26 +89,66 @@ class JointMap:
 
     @classmethod
     def from_dict(cls, d: dict, origin: str = "") -> "JointMap":
-        return cls(joints=dict(d["joints"]), groups={k: tuple(v) for k, v in d.get("groups", {}).items()},
-                   origin=origin)
+        return cls(
+            joints=dict(d["joints"]), groups={k: tuple(v) for k, v in d.get("groups", {}).items()}, origin=origin
+        )
 
 
 def cmu_joint_map() -> JointMap:
     """The joint map of the CMU 31-joint rig (:func:`motionvar.core.skeleton.cmu_skeleton`)."""
     joints = {
-        "hips": "Hips", "spine": "Spine", "chest": "Spine1", "neck": "Neck1", "head": "Head",
-        "left_shoulder": "LeftArm", "left_elbow": "LeftForeArm", "left_hand": "LeftHand",
-        "right_shoulder": "RightArm", "right_elbow": "RightForeArm", "right_hand": "RightHand",
-        "left_hip": "LeftUpLeg", "left_knee": "LeftLeg", "left_ankle": "LeftFoot", "left_toe": "LeftToeBase",
-        "right_hip": "RightUpLeg", "right_knee": "RightLeg", "right_ankle": "RightFoot", "right_toe": "RightToeBase",
+        "hips": "Hips",
+        "spine": "Spine",
+        "chest": "Spine1",
+        "neck": "Neck1",
+        "head": "Head",
+        "left_shoulder": "LeftArm",
+        "left_elbow": "LeftForeArm",
+        "left_hand": "LeftHand",
+        "right_shoulder": "RightArm",
+        "right_elbow": "RightForeArm",
+        "right_hand": "RightHand",
+        "left_hip": "LeftUpLeg",
+        "left_knee": "LeftLeg",
+        "left_ankle": "LeftFoot",
+        "left_toe": "LeftToeBase",
+        "right_hip": "RightUpLeg",
+        "right_knee": "RightLeg",
+        "right_ankle": "RightFoot",
+        "right_toe": "RightToeBase",
     }
     groups = {
-        "legs": ("Hips", "LHipJoint", "LeftUpLeg", "LeftLeg", "LeftFoot", "LeftToeBase",
-                 "RHipJoint", "RightUpLeg", "RightLeg", "RightFoot", "RightToeBase"),
-        "left_arm": ("LeftShoulder", "LeftArm", "LeftForeArm", "LeftHand",
-                     "LeftFingerBase", "LeftHandIndex1", "LThumb"),
-        "right_arm": ("RightShoulder", "RightArm", "RightForeArm", "RightHand",
-                      "RightFingerBase", "RightHandIndex1", "RThumb"),
+        "legs": (
+            "Hips",
+            "LHipJoint",
+            "LeftUpLeg",
+            "LeftLeg",
+            "LeftFoot",
+            "LeftToeBase",
+            "RHipJoint",
+            "RightUpLeg",
+            "RightLeg",
+            "RightFoot",
+            "RightToeBase",
+        ),
+        "left_arm": (
+            "LeftShoulder",
+            "LeftArm",
+            "LeftForeArm",
+            "LeftHand",
+            "LeftFingerBase",
+            "LeftHandIndex1",
+            "LThumb",
+        ),
+        "right_arm": (
+            "RightShoulder",
+            "RightArm",
+            "RightForeArm",
+            "RightHand",
+            "RightFingerBase",
+            "RightHandIndex1",
+            "RThumb",
+        ),
         "upper_body": ("LowerBack", "Spine", "Spine1", "Neck", "Neck1", "Head"),
     }
     return JointMap(joints=joints, groups=groups)

@@ -12,7 +12,6 @@ from __future__ import annotations
 import numpy as np
 
 
-
 def _qmul_rows(a: np.ndarray, b: np.ndarray, out: np.ndarray) -> None:
     """:func:`~.quaternions.qmul` on quaternions stored components first, (4, M) rows,
     written into ``out``."""

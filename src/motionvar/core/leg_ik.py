@@ -59,7 +59,11 @@ def bend_direction(line: np.ndarray, pole: np.ndarray, fallback: np.ndarray | No
 
 
 def knee_and_ankle(
-    hip: np.ndarray, target: np.ndarray, thigh: np.ndarray, shin: np.ndarray, pole: np.ndarray,
+    hip: np.ndarray,
+    target: np.ndarray,
+    thigh: np.ndarray,
+    shin: np.ndarray,
+    pole: np.ndarray,
     fallback: np.ndarray | None = None,
 ) -> tuple[np.ndarray, np.ndarray]:
     """Knee and ankle positions (..., 3) of a leg with bone lengths ``thigh`` and ``shin``
@@ -140,8 +144,9 @@ def two_bone_ik(
     # The current bend: the knee's side of the hip-ankle line (a unit vector across it).
     bend = bend_direction(ankle - hip, thigh, fallback_pole)
     pole = bend if pole is None else np.broadcast_to(np.asarray(pole, dtype=float), hip.shape)
-    knee_new, ankle_new = knee_and_ankle(hip, target, np.linalg.norm(thigh, axis=-1), np.linalg.norm(shin, axis=-1),
-                                         pole, fallback_pole)
+    knee_new, ankle_new = knee_and_ankle(
+        hip, target, np.linalg.norm(thigh, axis=-1), np.linalg.norm(shin, axis=-1), pole, fallback_pole
+    )
     # The bend plane's normal, old and new, on the same side: (hip -> ankle) x (towards the knee).
     n_old = np.cross(_unit(ankle - hip), bend)
     n_new = np.cross(_unit(target - hip), bend_direction(target - hip, pole, fallback_pole))

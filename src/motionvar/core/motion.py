@@ -35,9 +35,7 @@ class Motion:
         self.rotations = np.asarray(self.rotations, dtype=float)
         T, J = self.rotations.shape[:2] if self.rotations.ndim == 3 else (None, None)
         if self.rotations.ndim != 3 or self.rotations.shape[2] != 4 or J != self.skeleton.n_joints:
-            raise ValueError(
-                f"Motion: rotations must be (T, {self.skeleton.n_joints}, 4); got {self.rotations.shape}"
-            )
+            raise ValueError(f"Motion: rotations must be (T, {self.skeleton.n_joints}, 4); got {self.rotations.shape}")
         if self.root_pos.shape != (T, 3):
             raise ValueError(f"Motion: root_pos must be ({T}, 3); got {self.root_pos.shape}")
         if self.translations is not None and np.shape(self.translations) != (T, J, 3):
@@ -61,8 +59,12 @@ class Motion:
     def global_rotations(self) -> np.ndarray:
         """(T, J, 4) global joint rotations."""
         _, rot = fk(
-            self.rotations, self.root_pos, self.skeleton.offsets, self.skeleton.parents,
-            self.translations, return_rotations=True,
+            self.rotations,
+            self.root_pos,
+            self.skeleton.offsets,
+            self.skeleton.parents,
+            self.translations,
+            return_rotations=True,
         )
         return rot
 
@@ -70,7 +72,10 @@ class Motion:
         """Frames [start, stop) as a new Motion."""
         tr = None if self.translations is None else self.translations[start:stop].copy()
         return replace(
-            self, root_pos=self.root_pos[start:stop].copy(), rotations=self.rotations[start:stop].copy(), translations=tr
+            self,
+            root_pos=self.root_pos[start:stop].copy(),
+            rotations=self.rotations[start:stop].copy(),
+            translations=tr,
         )
 
     def continuous(self) -> "Motion":

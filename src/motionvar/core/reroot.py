@@ -71,8 +71,12 @@ def reroot_skeleton(skeleton: Skeleton, joint: int) -> tuple[Skeleton, np.ndarra
     pos_ch = (True,) + tuple(skeleton.position_channels[j] for j in kept[1:])
     end_sites = {int(new_index[j]): o.copy() for j, o in skeleton.end_sites.items() if new_index[j] >= 0}
     new = Skeleton(
-        names=tuple(skeleton.names[j] for j in kept), parents=parents, offsets=offsets,
-        end_sites=end_sites, rotation_orders=orders, position_channels=pos_ch,
+        names=tuple(skeleton.names[j] for j in kept),
+        parents=parents,
+        offsets=offsets,
+        end_sites=end_sites,
+        rotation_orders=orders,
+        position_channels=pos_ch,
     )
     return new, kept
 
@@ -94,5 +98,4 @@ def reroot(motion: Motion, joint: int | str) -> Motion:
         translations[:, 0] = np.nan  # the root's position is root_pos
         if np.all(np.isnan(translations)):
             translations = None
-    return replace(motion, skeleton=skeleton, root_pos=pos[:, j].copy(), rotations=rotations,
-                   translations=translations)
+    return replace(motion, skeleton=skeleton, root_pos=pos[:, j].copy(), rotations=rotations, translations=translations)

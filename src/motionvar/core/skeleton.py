@@ -124,9 +124,7 @@ class Skeleton:
         (J, 3) factor: the per-subject bone scaling of the synthetic subjects."""
         scale = np.asarray(scale, dtype=float)
         per_joint = scale if scale.ndim == 0 else (scale[:, None] if scale.ndim == 1 else scale)
-        end = {
-            j: o * (per_joint if per_joint.ndim == 0 else per_joint[j]) for j, o in self.end_sites.items()
-        }
+        end = {j: o * (per_joint if per_joint.ndim == 0 else per_joint[j]) for j, o in self.end_sites.items()}
         return replace(self, offsets=self.offsets * per_joint, end_sites=end)
 
     def with_offsets(self, offsets: np.ndarray) -> "Skeleton":

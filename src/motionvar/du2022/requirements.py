@@ -18,72 +18,157 @@ def _primitives(primitives: Sequence[str], min_count: int, why: str, **where) ->
     )
 
 
-def fda_requirements(behaviours: Sequence[str], min_clips: int, primitives: Sequence[str],
-                     pick_primitive: str) -> list[Requirement]:
+def fda_requirements(
+    behaviours: Sequence[str], min_clips: int, primitives: Sequence[str], pick_primitive: str
+) -> list[Requirement]:
     """Ch. 3 (config fda): the primitives of ``behaviours`` for the basis and Table 3.1;
     the ``primitives`` of Fig. 3.10; ``pick_primitive`` with two or more variants for
     Fig. 3.11's separation."""
     why = "Du 2022 ch. 3 fits functional models to the segmented primitives (at least fda.min_clips of each)"
-    canonical = Need(what=f"{'/'.join(behaviours)} primitives", stage="prep",
-                     where={"behaviour": tuple(behaviours)}, min_count=min_clips, why=why)
+    canonical = Need(
+        what=f"{'/'.join(behaviours)} primitives",
+        stage="prep",
+        where={"behaviour": tuple(behaviours)},
+        min_count=min_clips,
+        why=why,
+    )
     recon = _primitives(primitives, min_clips, why)
-    labelled = Need(what=f"{pick_primitive} primitives", stage="prep", where={"primitive": (pick_primitive,)},
-                    min_count=min_clips, min_distinct={"variant": 2},
-                    why="Fig. 3.11 colours the latent space by the clips' variant (e.g. the picked object's "
-                        "height) and measures how well the methods separate them")
+    labelled = Need(
+        what=f"{pick_primitive} primitives",
+        stage="prep",
+        where={"primitive": (pick_primitive,)},
+        min_count=min_clips,
+        min_distinct={"variant": 2},
+        why="Fig. 3.11 colours the latent space by the clips' variant (e.g. the picked object's "
+        "height) and measures how well the methods separate them",
+    )
     return [
-        Requirement("du2022_fig3_9", PAPER, "Fig. 3.9", "The B-spline fit error falls as basis functions are added; "
-                    "the cut-off K.", (canonical,)),
-        Requirement("du2022_fig3_10", PAPER, "Fig. 3.10", "Reconstruction error vs latent dimensions: FPCA lowest in "
-                    "feature space, SFPCA lowest in observation space.", recon),
-        Requirement("du2022_fig3_11", PAPER, "Fig. 3.11", "SFPCA's latent space separates the labelled variants best.",
-                    recon + (labelled,)),
-        Requirement("du2022_table3_1", PAPER, "Table 3.1", "Latent dimensions needed for 1 cm observation error, per "
-                    "primitive.", (canonical,)),
+        Requirement(
+            "du2022_fig3_9",
+            PAPER,
+            "Fig. 3.9",
+            "The B-spline fit error falls as basis functions are added; the cut-off K.",
+            (canonical,),
+        ),
+        Requirement(
+            "du2022_fig3_10",
+            PAPER,
+            "Fig. 3.10",
+            "Reconstruction error vs latent dimensions: FPCA lowest in "
+            "feature space, SFPCA lowest in observation space.",
+            recon,
+        ),
+        Requirement(
+            "du2022_fig3_11",
+            PAPER,
+            "Fig. 3.11",
+            "SFPCA's latent space separates the labelled variants best.",
+            recon + (labelled,),
+        ),
+        Requirement(
+            "du2022_table3_1",
+            PAPER,
+            "Table 3.1",
+            "Latent dimensions needed for 1 cm observation error, per primitive.",
+            (canonical,),
+        ),
     ]
 
 
-def graph_requirements(primitives: Sequence[str], search_primitives: Sequence[str], walk_primitives: Sequence[str],
-                       reach_primitive: str, min_clips: int = 3) -> list[Requirement]:
+def graph_requirements(
+    primitives: Sequence[str],
+    search_primitives: Sequence[str],
+    walk_primitives: Sequence[str],
+    reach_primitive: str,
+    min_clips: int = 3,
+) -> list[Requirement]:
     """Ch. 4 (config graph): the graph's ``primitives`` (Sec. 4.6.1 compactness), the
     ``search_primitives`` (Fig. 4.12), walk leftStance and pick reach (Fig. 4.9), and
     the walking and reaching primitives of Fig. 4.10's path-and-reach synthesis."""
     why = "Du 2022 ch. 4 fits a motion primitive (SFPCA + GMM) to the clips of each primitive"
     return [
-        Requirement("du2022_fig4_12", PAPER, "Fig. 4.12", "k-means tree search halves random sampling's constraint "
-                    "error; median trees are close to random.", _primitives(search_primitives, min_clips, why)),
-        Requirement("du2022_fig4_9", PAPER, "Fig. 4.9", "Samples of a primitive cover the training clips' end "
-                    "positions (walk leftStance ankle, pick reach hands).",
-                    _primitives(["walk_leftStance", "pick_reach"], min_clips,
-                                why + "; Fig. 4.9 shows walk leftStance and pick reach")),
-        Requirement("du2022_fig4_10", PAPER, "Fig. 4.10", "A Morphable Graph walk follows a path and reaches targets.",
-                    _primitives([*walk_primitives, reach_primitive], min_clips,
-                                why + "; Fig. 4.10 walks along a path, then reaches")),
-        Requirement("du2022_sec4_6_1", PAPER, "Sec. 4.6.1", "The primitive models are far smaller than the motion "
-                    "data they model.", _primitives(primitives, min_clips, why)),
+        Requirement(
+            "du2022_fig4_12",
+            PAPER,
+            "Fig. 4.12",
+            "k-means tree search halves random sampling's constraint error; median trees are close to random.",
+            _primitives(search_primitives, min_clips, why),
+        ),
+        Requirement(
+            "du2022_fig4_9",
+            PAPER,
+            "Fig. 4.9",
+            "Samples of a primitive cover the training clips' end positions (walk leftStance ankle, pick reach hands).",
+            _primitives(
+                ["walk_leftStance", "pick_reach"], min_clips, why + "; Fig. 4.9 shows walk leftStance and pick reach"
+            ),
+        ),
+        Requirement(
+            "du2022_fig4_10",
+            PAPER,
+            "Fig. 4.10",
+            "A Morphable Graph walk follows a path and reaches targets.",
+            _primitives(
+                [*walk_primitives, reach_primitive], min_clips, why + "; Fig. 4.10 walks along a path, then reaches"
+            ),
+        ),
+        Requirement(
+            "du2022_sec4_6_1",
+            PAPER,
+            "Sec. 4.6.1",
+            "The primitive models are far smaller than the motion data they model.",
+            _primitives(primitives, min_clips, why),
+        ),
     ]
 
 
-def style_requirements(styles: Sequence[str], vae_primitives: Sequence[str], style_primitives: Sequence[str],
-                       distance_primitive: str, min_clips: int = 2) -> list[Requirement]:
+def style_requirements(
+    styles: Sequence[str],
+    vae_primitives: Sequence[str],
+    style_primitives: Sequence[str],
+    distance_primitive: str,
+    min_clips: int = 2,
+) -> list[Requirement]:
     """Ch. 5 (config style): neutral clips of every VAE primitive and clips of every
     style for the stylised primitives (CVAE)."""
     why_vae = "Du 2022 ch. 5 trains a VAE per primitive on its neutral clips"
-    why_cvae = ("Du 2022 ch. 5 trains a CVAE per style on that style's clips; set style.styles to styles your "
-                "data has (and neutral_style in the dataset entry if it calls neutral otherwise)")
+    why_cvae = (
+        "Du 2022 ch. 5 trains a CVAE per style on that style's clips; set style.styles to styles your "
+        "data has (and neutral_style in the dataset entry if it calls neutral otherwise)"
+    )
     neutral = _primitives(vae_primitives, min_clips, why_vae, style=("neutral",))
     stylised = tuple(
-        Need(what=f"{s} {p} primitives", stage="prep", where={"primitive": (p,), "style": (s,)}, min_count=1,
-             why=why_cvae)
-        for p in dict.fromkeys(style_primitives) for s in styles
+        Need(
+            what=f"{s} {p} primitives",
+            stage="prep",
+            where={"primitive": (p,), "style": (s,)},
+            min_count=1,
+            why=why_cvae,
+        )
+        for p in dict.fromkeys(style_primitives)
+        for s in styles
     )
     distance = tuple(n for n in stylised if n.where["primitive"] == (distance_primitive,))
     return [
-        Requirement("du2022_table5_1", PAPER, "Table 5.1", "Each style's samples are closest (Gram-matrix style "
-                    "distance) to that style's example.",
-                    _primitives([distance_primitive], min_clips, why_vae, style=("neutral",)) + distance),
-        Requirement("du2022_table5_2", PAPER, "Tables 5.2-5.3", "Samples keep the training data's diversity "
-                    "(pose, velocity and step SDs).", neutral + stylised),
-        Requirement("du2022_fig5_4", PAPER, "Fig. 5.4-5.5", "Random samples of the neutral and the stylised models.",
-                    neutral + stylised),
+        Requirement(
+            "du2022_table5_1",
+            PAPER,
+            "Table 5.1",
+            "Each style's samples are closest (Gram-matrix style distance) to that style's example.",
+            _primitives([distance_primitive], min_clips, why_vae, style=("neutral",)) + distance,
+        ),
+        Requirement(
+            "du2022_table5_2",
+            PAPER,
+            "Tables 5.2-5.3",
+            "Samples keep the training data's diversity (pose, velocity and step SDs).",
+            neutral + stylised,
+        ),
+        Requirement(
+            "du2022_fig5_4",
+            PAPER,
+            "Fig. 5.4-5.5",
+            "Random samples of the neutral and the stylised models.",
+            neutral + stylised,
+        ),
     ]

@@ -168,13 +168,11 @@ def frame_labels(intervals: list[tuple[str, int, int]], n_frames: int) -> np.nda
     """(T,) name per frame from intervals, '' where none applies."""
     labels = np.full(n_frames, "", dtype=object)
     for name, start, stop in intervals:
-        labels[max(start, 0): min(stop, n_frames)] = name
+        labels[max(start, 0) : min(stop, n_frames)] = name
     return labels
 
 
-def segment_agreement(
-    segments: np.ndarray, predicted: list[str], truth: np.ndarray
-) -> tuple[float, float]:
+def segment_agreement(segments: np.ndarray, predicted: list[str], truth: np.ndarray) -> tuple[float, float]:
     """Agreement of named static segments with per-frame ground-truth names:
     (share of segments whose name is the majority true name over the segment, adjusted
     Rand index between predicted names and those majority names)."""

@@ -17,7 +17,13 @@ import numpy as np
 from ..core.joint_map import JointMap
 from ..core.motion import Motion
 from .categories import (
-    CategoryModel, find_categories, merge_close_rests, posture_speed, rest_spread, static_segments, support_ratio,
+    CategoryModel,
+    find_categories,
+    merge_close_rests,
+    posture_speed,
+    rest_spread,
+    static_segments,
+    support_ratio,
 )
 from .category_graph import CategoryGraph
 from .pca import PosturePCA
@@ -167,9 +173,7 @@ def build_database(
     segs = [merge_close_rests(s, r.pcs, weights, settings.min_shift_rms * spread) for r, s in zip(recordings, segs)]
     means = np.concatenate([[r.pcs[a:b].mean(axis=0) for a, b in s] for r, s in zip(recordings, segs) if len(s)])
     supp = np.concatenate([[r.support[a:b].mean() for a, b in s] for r, s in zip(recordings, segs) if len(s)])
-    cat_model, seg_cat = find_categories(
-        means, supp, weights, settings.max_categories, settings.support_margin, seed
-    )
+    cat_model, seg_cat = find_categories(means, supp, weights, settings.max_categories, settings.support_margin, seed)
     k = len(cat_model.names)
     per_rec = np.split(seg_cat, np.cumsum([len(s) for s in segs])[:-1])
 
@@ -183,7 +187,7 @@ def build_database(
         sequences.append(cats)
         stays.append(np.where(inner, dur, np.nan))
         for i in range(len(s) - 1):
-            anim = rec.pcs[s[i, 1] - 1: s[i + 1, 0] + 1]
+            anim = rec.pcs[s[i, 1] - 1 : s[i + 1, 0] + 1]
             animations.append(remove_translation_offset(anim, pca))
             a_from.append(cats[i])
             a_to.append(cats[i + 1])
@@ -196,7 +200,9 @@ def build_database(
     a_from, a_to = np.array(a_from, dtype=np.int64), np.array(a_to, dtype=np.int64)
     postures = []
     for c in range(k):
-        ends = [a[0] for a, f in zip(animations, a_from) if f == c] + [a[-1] for a, t in zip(animations, a_to) if t == c]
+        ends = [a[0] for a, f in zip(animations, a_from) if f == c] + [
+            a[-1] for a, t in zip(animations, a_to) if t == c
+        ]
         alone = np.array(rest_mid[c]).reshape(-1, pca.n_dims)
         if ends and len(alone):  # stand-alone postures take the mean translation of the others (Sec. 5.3)
             target = pca.root_translation(np.array(ends)).mean(axis=0)
@@ -208,9 +214,17 @@ def build_database(
         rests, np.arange(n_var), fps, settings.extrema_eps_sd, settings.variation_clusters, seed
     )
     return IdleDatabase(
-        subject=subject, fps=fps, weights=weights, categories=cat_model, graph=graph,
-        animations=animations, anim_from=a_from, anim_to=a_to, postures=postures,
-        variations=variations, rest_speed=float(threshold),
+        subject=subject,
+        fps=fps,
+        weights=weights,
+        categories=cat_model,
+        graph=graph,
+        animations=animations,
+        anim_from=a_from,
+        anim_to=a_to,
+        postures=postures,
+        variations=variations,
+        rest_speed=float(threshold),
         segments={r.name: (s, c) for r, s, c in zip(recordings, segs, per_rec)},
     )
 

@@ -31,8 +31,11 @@ def plot_pc_extrema(
     for k in range(1, min(len(idx), n_labels + 1)):
         d_ms = (idx[k] - idx[k - 1]) * 1000.0 / fps
         ax.annotate(
-            f"({d_ms:.0f} ms, {x[idx[k]] - mean:+.2g})", (t[idx[k]], x[idx[k]]), textcoords="offset points",
-            xytext=(4, 8 if is_max[k] else -14), fontsize=8,
+            f"({d_ms:.0f} ms, {x[idx[k]] - mean:+.2g})",
+            (t[idx[k]], x[idx[k]]),
+            textcoords="offset points",
+            xytext=(4, 8 if is_max[k] else -14),
+            fontsize=8,
         )
     ax.set_xlabel("time (s)")
     ax.set_ylabel("PC value")
@@ -50,7 +53,8 @@ def plot_category_graph(ax: Axes, graph: CategoryGraph, title: str = "") -> None
         ax.add_patch(Circle(pos[c], r, facecolor="#dde8f5", edgecolor="0.2", lw=1.2))
         t = (
             f"{graph.t_min[c] * 1000:.0f} ms\n- {graph.t_max[c] * 1000:.0f} ms"
-            if np.isfinite(graph.t_min[c]) else "no stay"
+            if np.isfinite(graph.t_min[c])
+            else "no stay"
         )
         ax.text(*pos[c], f"{graph.names[c]}\n{t}", ha="center", va="center", fontsize=8)
     for a in range(k):
@@ -61,22 +65,38 @@ def plot_category_graph(ax: Axes, graph: CategoryGraph, title: str = "") -> None
             if a == b:
                 out = pos[a] / (np.linalg.norm(pos[a]) or 1.0)
                 ax.annotate(
-                    "", xy=pos[a] + out * r * 1.02 + [0.15, 0], xytext=pos[a] + out * r * 1.02 - [0.15, 0],
+                    "",
+                    xy=pos[a] + out * r * 1.02 + [0.15, 0],
+                    xytext=pos[a] + out * r * 1.02 - [0.15, 0],
                     arrowprops=dict(arrowstyle="->", connectionstyle="arc3,rad=-1.6", color="0.25"),
                 )
-                ax.text(*(pos[a] + out * (r + 0.45)), f"{p:.2f}", ha="center", va="center", fontsize=9,
-                        color="tab:red")
+                ax.text(*(pos[a] + out * (r + 0.45)), f"{p:.2f}", ha="center", va="center", fontsize=9, color="tab:red")
                 continue
             u = (pos[b] - pos[a]) / np.linalg.norm(pos[b] - pos[a])
             start, end = pos[a] + u * r, pos[b] - u * r
             rad = 0.4
-            ax.add_patch(FancyArrowPatch(
-                start, end, arrowstyle="-|>", mutation_scale=14, connectionstyle=f"arc3,rad={rad}", color="0.25", lw=1.2,
-            ))
+            ax.add_patch(
+                FancyArrowPatch(
+                    start,
+                    end,
+                    arrowstyle="-|>",
+                    mutation_scale=14,
+                    connectionstyle=f"arc3,rad={rad}",
+                    color="0.25",
+                    lw=1.2,
+                )
+            )
             d = end - start  # the label sits on the arc's midpoint (matplotlib's Arc3 control point)
             mid = 0.5 * (start + end) + 0.5 * rad * np.array([d[1], -d[0]])
-            ax.text(*mid, f"{p:.2f}", ha="center", va="center", fontsize=9, color="tab:red",
-                    bbox=dict(boxstyle="round,pad=0.15", fc="white", ec="tab:red", lw=0.5))
+            ax.text(
+                *mid,
+                f"{p:.2f}",
+                ha="center",
+                va="center",
+                fontsize=9,
+                color="tab:red",
+                bbox=dict(boxstyle="round,pad=0.15", fc="white", ec="tab:red", lw=0.5),
+            )
     ax.set_xlim(-2.6, 2.6)
     ax.set_ylim(-1.7, 2.4)
     ax.set_aspect("equal")
@@ -146,7 +166,9 @@ def plot_repetition(ax: Axes, pooled: dict[str, np.ndarray]) -> None:
 def plot_speed(ax: Axes, table) -> None:
     """Frames generated per second per subject against the playback rate (log scale)."""
     x = np.arange(len(table))
-    bars = ax.bar(x, table["frames_per_second"], color="tab:blue", label="generated (balance + variations + PC -> rotations)")
+    bars = ax.bar(
+        x, table["frames_per_second"], color="tab:blue", label="generated (balance + variations + PC -> rotations)"
+    )
     ax.bar_label(bars, labels=[f"{r:.0f}x" for r in table["realtime_ratio"]], fontsize=8)
     ax.axhline(float(table["playback_fps"].iloc[0]), color="tab:red", ls="--", label="playback rate")
     ax.set_yscale("log")
@@ -163,8 +185,9 @@ def draw_categories(result: EvaluationResult) -> Figure:
     fig, axes = plt.subplots(1, len(graphs), figsize=(4.2 * len(graphs), 4.4), squeeze=False)
     for ax, (s, graph) in zip(axes[0], graphs.items()):
         plot_category_graph(ax, graph, f"subject {s}")
-    fig.suptitle("Category transition graphs: P(c1 => c2) on the arrows, T_min - T_max in the nodes (Fig. 3)",
-                 fontsize=10)
+    fig.suptitle(
+        "Category transition graphs: P(c1 => c2) on the arrows, T_min - T_max in the nodes (Fig. 3)", fontsize=10
+    )
     fig.tight_layout()
     return fig
 
@@ -183,8 +206,9 @@ def draw_fitting(result: EvaluationResult) -> Figure:
         axes[1].axvspan(start, stop, color="tab:orange", alpha=0.3, lw=0)
     axes[1].set_xlabel("time (s)")
     axes[1].set_ylabel("PC 1")
-    axes[1].set_title(f"{f['balance_s']:g} s of balance shifting: rests and fitted shifts (shaded) join without jumps",
-                      fontsize=9)
+    axes[1].set_title(
+        f"{f['balance_s']:g} s of balance shifting: rests and fitted shifts (shaded) join without jumps", fontsize=9
+    )
     sub = table[table.test.str.startswith("fitAnim")]
     for ramp, off in (("linear", -0.2), ("smoothstep", 0.2)):
         rows = sub[sub.ramp == ramp]
@@ -217,8 +241,10 @@ def draw_repetition(result: EvaluationResult) -> Figure:
     f = result.figure
     fig, ax = plt.subplots(figsize=(10, 4.6))
     plot_repetition(ax, f["pooled"])
-    ax.set_title(f"Repetition within {f['sequence_s']:g}-s sequences ({f['window_s']:g}-s windows, "
-                 f"first {f['n_pcs']} PCs)", fontsize=10)
+    ax.set_title(
+        f"Repetition within {f['sequence_s']:g}-s sequences ({f['window_s']:g}-s windows, first {f['n_pcs']} PCs)",
+        fontsize=10,
+    )
     fig.tight_layout()
     return fig
 
@@ -230,8 +256,10 @@ def draw_pc_extrema(data: dict) -> Figure:
     fig, axes = plt.subplots(len(panels), 1, figsize=(10, 3.2 * len(panels)), squeeze=False)
     for ax, p in zip(axes[:, 0], panels):
         plot_pc_extrema(ax, p["x"], p["fps"], p["extrema"], p["is_max"], data["pc"])
-        ax.set_title(f"subject {p['subject']}, clip {p['clip']}: longest resting segment, "
-                     f"epsilon = {data['eps_sd']:g} SD", fontsize=9)
+        ax.set_title(
+            f"subject {p['subject']}, clip {p['clip']}: longest resting segment, epsilon = {data['eps_sd']:g} SD",
+            fontsize=9,
+        )
     fig.tight_layout()
     return fig
 

@@ -45,9 +45,7 @@ def _ramp(u: np.ndarray, ramp: str) -> np.ndarray:
     raise ValueError(f"ramp must be one of {RAMPS}, got {ramp!r}")
 
 
-def fit_anim_part(
-    a: np.ndarray, fi: int, fj: int, pi: np.ndarray, pj: np.ndarray, ramp: str = "linear"
-) -> np.ndarray:
+def fit_anim_part(a: np.ndarray, fi: int, fj: int, pi: np.ndarray, pj: np.ndarray, ramp: str = "linear") -> np.ndarray:
     """``fitAnim_part`` of Fig. 5: a copy of ``a`` (T, D) whose frames fi..fj are offset so
     that frame fi equals ``pi`` and frame fj equals ``pj``.
 
@@ -63,7 +61,7 @@ def fit_anim_part(
         raise ValueError(f"fit_anim_part: need 0 <= fi < fj < {len(a)}; got fi={fi}, fj={fj}")
     oi, oj = np.asarray(pi) - a[fi], np.asarray(pj) - a[fj]
     u = _ramp((np.arange(fi, fj + 1) - fi) / (fj - fi), ramp)[:, None]
-    a[fi: fj + 1] += oi * (1.0 - u) + oj * u
+    a[fi : fj + 1] += oi * (1.0 - u) + oj * u
     return a
 
 

@@ -20,8 +20,9 @@ def check_subject(model: IdleModel, subject: str) -> str:
     """``subject`` if the model has a database for it; ValueError listing those it has."""
     subject = str(subject)
     if subject not in model.databases:
-        raise ValueError(f"subject {subject!r} has no idle database; the model has subjects "
-                         f"{', '.join(sorted(model.databases))}")
+        raise ValueError(
+            f"subject {subject!r} has no idle database; the model has subjects {', '.join(sorted(model.databases))}"
+        )
     return subject
 
 
@@ -32,5 +33,6 @@ def idle_motion(model: IdleModel, subject: str, seconds: float, seed: int = 0, v
     if not (np.isfinite(seconds) and seconds > 0):
         raise ValueError(f"seconds must be a positive number; got {seconds}")
     db = model.databases[subject]
-    return generate_idle(db, model.pca, model.skeletons[subject], float(seconds), np.random.default_rng(seed),
-                         variations=variations)
+    return generate_idle(
+        db, model.pca, model.skeletons[subject], float(seconds), np.random.default_rng(seed), variations=variations
+    )

@@ -95,7 +95,7 @@ class PosturePCA:
         variance[: pca.n_components_] = pca.explained_variance_
         if pca.n_components_ < D:  # fewer frames than dimensions: complete the basis
             q, _ = np.linalg.qr(np.concatenate([pca.components_.T, np.eye(D)], axis=1))
-            components[pca.n_components_:] = q[:, pca.n_components_: D].T
+            components[pca.n_components_ :] = q[:, pca.n_components_ : D].T
         left_out = np.setdiff1d(np.arange(n_joints), joints)
         base = np.zeros((n_joints, 4))
         base[:, 0] = 1.0
@@ -148,7 +148,7 @@ class PosturePCA:
         T, m = v.shape[0], self.joints.size
         rot = np.broadcast_to(self.base_rotations, (T, *self.base_rotations.shape)).copy()
         rot[:, self.joints] = rotvec_to_quat(v[:, : 3 * m].reshape(T, m, 3))
-        return rot, v[:, 3 * m:] / self.translation_scale
+        return rot, v[:, 3 * m :] / self.translation_scale
 
     def reconstruct(self, pcs: np.ndarray, skeleton: Skeleton, fps: float) -> Motion:
         """A Motion on ``skeleton`` from PC values (T, k)."""

@@ -58,7 +58,7 @@ def split_clips(
             f"subjects {short} have {held_out} or fewer idle clips; need more than idle.held_out_clips = {held_out}"
         )
     train = {s: c[: len(c) - held_out] for s, c in clips.items()}
-    test = {s: c[len(c) - held_out:] for s, c in clips.items()}
+    test = {s: c[len(c) - held_out :] for s, c in clips.items()}
     return train, test
 
 
@@ -102,7 +102,9 @@ def model_recordings(
     def analyse(ids: dict[str, list[str]]) -> dict[str, list[Recording]]:
         missing = [c for cs in ids.values() for c in cs if c not in clips]
         if missing:
-            raise ValueError(f"{source}: idle clips {missing[:5]} of the model are not in the dataset; rerun egges2004_model")
+            raise ValueError(
+                f"{source}: idle clips {missing[:5]} of the model are not in the dataset; rerun egges2004_model"
+            )
         return {s: [analyse_recording(clips[c], model.pca, joint_map, c) for c in cs] for s, cs in ids.items()}
 
     return analyse(model.train_clips), analyse(model.test_clips)

@@ -71,8 +71,11 @@ def save_idle_model(path: str | Path, model: IdleModel) -> list[Path]:
     returns both paths. A failed write leaves no file."""
     pca = model.pca
     arrays = {
-        "pca.joints": pca.joints, "pca.mean": pca.mean_, "pca.components": pca.components_,
-        "pca.explained_variance": pca.explained_variance_, "pca.base_rotations": pca.base_rotations,
+        "pca.joints": pca.joints,
+        "pca.mean": pca.mean_,
+        "pca.components": pca.components_,
+        "pca.explained_variance": pca.explained_variance_,
+        "pca.base_rotations": pca.base_rotations,
     }
     subjects = []
     for i, (s, db) in enumerate(model.databases.items()):
@@ -80,29 +83,44 @@ def save_idle_model(path: str | Path, model: IdleModel) -> list[Path]:
             raise ValueError(f"idle model: the database of subject {s} is inconsistent (subject or category names)")
         sk = model.skeletons[s]
         arrays.update(_database_arrays(db, sk, f"s{i}."))
-        subjects.append({
-            "subject": s, "fps": db.fps, "rest_speed": db.rest_speed, "categories": list(db.categories.names),
-            "recordings": list(db.segments),
-            "skeleton": {
-                "names": list(sk.names), "rotation_orders": list(sk.rotation_orders),
-                "position_channels": list(sk.position_channels),
-            },
-        })
+        subjects.append(
+            {
+                "subject": s,
+                "fps": db.fps,
+                "rest_speed": db.rest_speed,
+                "categories": list(db.categories.names),
+                "recordings": list(db.segments),
+                "skeleton": {
+                    "names": list(sk.names),
+                    "rotation_orders": list(sk.rotation_orders),
+                    "position_channels": list(sk.position_channels),
+                },
+            }
+        )
     settings = {
-        "kind": KIND, "version": VERSION, "translation_scale": pca.translation_scale, "subjects": subjects,
-        "train_clips": model.train_clips, "test_clips": model.test_clips,
+        "kind": KIND,
+        "version": VERSION,
+        "translation_scale": pca.translation_scale,
+        "subjects": subjects,
+        "train_clips": model.train_clips,
+        "test_clips": model.test_clips,
     }
     return save_model(path, arrays, settings)
 
 
 def _database(a: dict[str, np.ndarray], entry: dict, p: str) -> tuple[IdleDatabase, Skeleton]:
     cats = CategoryModel(
-        tuple(entry["categories"]), a[f"{p}categories.centroids"], a[f"{p}categories.centroid_category"],
+        tuple(entry["categories"]),
+        a[f"{p}categories.centroids"],
+        a[f"{p}categories.centroid_category"],
         a[f"{p}categories.scale"],
     )
     graph = CategoryGraph(
-        tuple(entry["categories"]), a[f"{p}graph.counts"], a[f"{p}graph.probabilities"],
-        a[f"{p}graph.t_min"], a[f"{p}graph.t_max"],
+        tuple(entry["categories"]),
+        a[f"{p}graph.counts"],
+        a[f"{p}graph.probabilities"],
+        a[f"{p}graph.t_min"],
+        a[f"{p}graph.t_max"],
     )
     variations = VariationModel(
         *(a[f"{p}variations.{k}"] for k in ("pcs", "points", "counts", "transition", "n_clusters"))
@@ -110,18 +128,27 @@ def _database(a: dict[str, np.ndarray], entry: dict, p: str) -> tuple[IdleDataba
     segs = _split(a[f"{p}segments"], a[f"{p}segment_counts"])
     seg_cats = _split(a[f"{p}segment_categories"], a[f"{p}segment_counts"])
     db = IdleDatabase(
-        subject=entry["subject"], fps=entry["fps"], weights=a[f"{p}weights"], categories=cats, graph=graph,
+        subject=entry["subject"],
+        fps=entry["fps"],
+        weights=a[f"{p}weights"],
+        categories=cats,
+        graph=graph,
         animations=_split(a[f"{p}animations"], a[f"{p}animation_lengths"]),
-        anim_from=a[f"{p}anim_from"], anim_to=a[f"{p}anim_to"],
+        anim_from=a[f"{p}anim_from"],
+        anim_to=a[f"{p}anim_to"],
         postures=_split(a[f"{p}postures"], a[f"{p}posture_counts"]),
-        variations=variations, rest_speed=entry["rest_speed"],
+        variations=variations,
+        rest_speed=entry["rest_speed"],
         segments={name: (s, c) for name, s, c in zip(entry["recordings"], segs, seg_cats, strict=True)},
     )
     sk = entry["skeleton"]
     skeleton = Skeleton(
-        names=tuple(sk["names"]), parents=a[f"{p}skeleton.parents"], offsets=a[f"{p}skeleton.offsets"],
+        names=tuple(sk["names"]),
+        parents=a[f"{p}skeleton.parents"],
+        offsets=a[f"{p}skeleton.offsets"],
         end_sites={int(j): o for j, o in zip(a[f"{p}skeleton.end_site_joints"], a[f"{p}skeleton.end_site_offsets"])},
-        rotation_orders=tuple(sk["rotation_orders"]), position_channels=tuple(bool(c) for c in sk["position_channels"]),
+        rotation_orders=tuple(sk["rotation_orders"]),
+        position_channels=tuple(bool(c) for c in sk["position_channels"]),
     )
     return db, skeleton
 
@@ -133,14 +160,20 @@ def load_idle_model(path: str | Path) -> IdleModel:
     source = model_base(path)
     try:
         pca = PosturePCA(
-            arrays["pca.joints"], settings["translation_scale"], arrays["pca.mean"], arrays["pca.components"],
-            arrays["pca.explained_variance"], arrays["pca.base_rotations"],
+            arrays["pca.joints"],
+            settings["translation_scale"],
+            arrays["pca.mean"],
+            arrays["pca.components"],
+            arrays["pca.explained_variance"],
+            arrays["pca.base_rotations"],
         )
         databases, skeletons = {}, {}
         for i, entry in enumerate(settings["subjects"]):
             databases[entry["subject"]], skeletons[entry["subject"]] = _database(arrays, entry, f"s{i}.")
         return IdleModel(
-            pca=pca, databases=databases, skeletons=skeletons,
+            pca=pca,
+            databases=databases,
+            skeletons=skeletons,
             train_clips={s: list(c) for s, c in settings["train_clips"].items()},
             test_clips={s: list(c) for s, c in settings["test_clips"].items()},
         )

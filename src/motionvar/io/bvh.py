@@ -139,20 +139,28 @@ def _parse_channels(t: _Tokens, h: _Hierarchy, joint: str, line: int) -> tuple[s
     for _ in range(n):
         tok, ln2 = t.peek()
         if not _is_channel(tok):
-            raise t.error(ln2, f"joint {joint}: bad CHANNELS count: CHANNELS {n} at line {ln} lists {len(names)} "
-                               f"channel names, then {tok!r}")
+            raise t.error(
+                ln2,
+                f"joint {joint}: bad CHANNELS count: CHANNELS {n} at line {ln} lists {len(names)} "
+                f"channel names, then {tok!r}",
+            )
         names.append(tok)
         t.advance()
     tok, ln2 = t.peek()
     if _is_channel(tok):
-        raise t.error(ln2, f"joint {joint}: bad CHANNELS count: CHANNELS {n} at line {ln} is followed by "
-                           f"more channel names ({tok!r})")
+        raise t.error(
+            ln2,
+            f"joint {joint}: bad CHANNELS count: CHANNELS {n} at line {ln} is followed by more channel names ({tok!r})",
+        )
     lower = [c.lower() for c in names]
     rot = [(i, _ROT_CHANNELS[c]) for i, c in enumerate(lower) if c in _ROT_CHANNELS]
     pos = [(i, _POS_CHANNELS[c]) for i, c in enumerate(lower) if c in _POS_CHANNELS]
     if len(rot) != 3 or len({a for _, a in rot}) != 3 or len(pos) not in (0, 3) or len({a for _, a in pos}) != len(pos):
-        raise t.error(ln, f"joint {joint}: unsupported CHANNELS {n} {' '.join(names)}: each joint needs three "
-                          f"rotation channels (one per axis, any order) and optionally three position channels")
+        raise t.error(
+            ln,
+            f"joint {joint}: unsupported CHANNELS {n} {' '.join(names)}: each joint needs three "
+            f"rotation channels (one per axis, any order) and optionally three position channels",
+        )
     base = h.n_channels
     h.n_channels += n
     order = "".join(a for _, a in rot)
@@ -233,7 +241,9 @@ def _parse_joints(t: _Tokens, h: _Hierarchy, root: str, line: int) -> None:
 def _parse_hierarchy(t: _Tokens) -> _Hierarchy:
     tok, ln = t.next()
     if tok != "HIERARCHY":
-        raise t.error(ln, "missing HIERARCHY (" + ("the file is empty)" if tok is None else f"the file starts with {tok!r})"))
+        raise t.error(
+            ln, "missing HIERARCHY (" + ("the file is empty)" if tok is None else f"the file starts with {tok!r})")
+        )
     tok, ln = t.next()
     if tok != "ROOT":
         raise t.error(ln, f"expected ROOT after HIERARCHY; got {tok!r}")
@@ -248,7 +258,9 @@ def _parse_hierarchy(t: _Tokens) -> _Hierarchy:
     if tok == "ROOT":
         raise t.error(ln, "a second ROOT is not supported")
     if tok != "MOTION":
-        raise t.error(ln, "missing MOTION after the hierarchy (found " + ("end of file)" if tok is None else f"{tok!r})"))
+        raise t.error(
+            ln, "missing MOTION after the hierarchy (found " + ("end of file)" if tok is None else f"{tok!r})")
+        )
     return h
 
 
@@ -274,7 +286,9 @@ def _locate_frame_error(lines: list[str], first: int, n_frames: int, n_channels:
         if count > n_frames:
             return BVHError(path, i + 1, f"more frame lines than 'Frames: {n_frames}'")
         if len(toks) != n_channels:
-            return BVHError(path, i + 1, f"frame {count} has {len(toks)} values; the hierarchy has {n_channels} channels")
+            return BVHError(
+                path, i + 1, f"frame {count} has {len(toks)} values; the hierarchy has {n_channels} channels"
+            )
         for tok in toks:
             try:
                 v = float(tok)
@@ -308,8 +322,12 @@ def _parse_frames(lines: list[str], motion_idx: int, n_channels: int, path: Path
         raise BVHError(path, k + 1, f"bad 'Frame Time:' value {val!r} (expected a positive number of seconds)")
     fps = 1.0 / frame_time
     if not (FPS_RANGE[0] <= fps <= FPS_RANGE[1]):
-        raise BVHError(path, k + 1, f"'Frame Time: {val}' means {fps:.4g} frames per second, outside "
-                                    f"{FPS_RANGE[0]:g}-{FPS_RANGE[1]:,.0f} (the value is in seconds per frame)")
+        raise BVHError(
+            path,
+            k + 1,
+            f"'Frame Time: {val}' means {fps:.4g} frames per second, outside "
+            f"{FPS_RANGE[0]:g}-{FPS_RANGE[1]:,.0f} (the value is in seconds per frame)",
+        )
     first = k + 1
     body = lines[first:]
     try:
@@ -371,8 +389,12 @@ def read_bvh(path: str | Path, scale: float = 1.0, encoding: str = "utf-8") -> M
         text = raw.decode(encoding)
     except UnicodeDecodeError as exc:
         line = raw.count(b"\n", 0, exc.start) + 1
-        raise BVHError(path, line, f"byte 0x{raw[exc.start]:02x} is not valid {encoding} text (re-save the file "
-                                   f"as UTF-8, or read it with the encoding it was written in)") from None
+        raise BVHError(
+            path,
+            line,
+            f"byte 0x{raw[exc.start]:02x} is not valid {encoding} text (re-save the file "
+            f"as UTF-8, or read it with the encoding it was written in)",
+        ) from None
     except LookupError as exc:
         raise BVHError(path, None, f"unknown text encoding {encoding!r}") from exc
     text = text.removeprefix("\ufeff").replace("\r\n", "\n").replace("\r", "\n")
@@ -381,7 +403,7 @@ def read_bvh(path: str | Path, scale: float = 1.0, encoding: str = "utf-8") -> M
     lines = text.split("\n")
     if lines[-1] == "":
         lines.pop()  # the final newline does not start a line
-    header = lines if header_end is None else lines[:header_end + 1]
+    header = lines if header_end is None else lines[: header_end + 1]
     t = _Tokens(header, path, eof_line=max(1, len(header)))
     h = _parse_hierarchy(t)
     _, motion_line = t.peek()
@@ -421,7 +443,9 @@ def _hierarchy_text(skeleton: Skeleton, scale: float, fmt: str) -> list[str]:
         for c in children[j]:
             joint(c, depth + 1)
         if j in skeleton.end_sites:
-            out.extend([f"{ind}\tEnd Site", f"{ind}\t{{", f"{ind}\t\tOFFSET {vec(skeleton.end_sites[j])}", f"{ind}\t}}"])
+            out.extend(
+                [f"{ind}\tEnd Site", f"{ind}\t{{", f"{ind}\t\tOFFSET {vec(skeleton.end_sites[j])}", f"{ind}\t}}"]
+            )
         out.append(f"{ind}}}")
 
     joint(0, 0)
@@ -473,9 +497,11 @@ def write_bvh(path: str | Path, motion: Motion, scale: float = 1.0, fmt: str = "
     path = Path(path)
     _check_writable(motion, path)
     motion = motion.copy()
-    motion.rotations = Rotation.from_quat(motion.rotations.reshape(-1, 4), scalar_first=True).as_quat(
-        scalar_first=True
-    ).reshape(motion.rotations.shape)  # normalised; raises on zero quaternions
+    motion.rotations = (
+        Rotation.from_quat(motion.rotations.reshape(-1, 4), scalar_first=True)
+        .as_quat(scalar_first=True)
+        .reshape(motion.rotations.shape)
+    )  # normalised; raises on zero quaternions
     data = _channel_data(motion, scale)
     lines = _hierarchy_text(motion.skeleton, scale, fmt)
     lines += ["MOTION", f"Frames: {motion.n_frames}", f"Frame Time: {1.0 / motion.fps:.10g}"]

@@ -51,8 +51,15 @@ log = logging.getLogger(__name__)
 
 REQUIRED_COLUMNS = ("file", "subject", "behaviour", "style")
 METADATA_COLUMNS = (
-    "clip_id", "subject", "behaviour", "style", "variant", "primitive", "source_file",
-    "source_behaviour", "source_style",
+    "clip_id",
+    "subject",
+    "behaviour",
+    "style",
+    "variant",
+    "primitive",
+    "source_file",
+    "source_behaviour",
+    "source_style",
 )
 #: The behaviours the papers use (the segmenters of motionvar.prep.segmentation.SEGMENTERS;
 #: tests check that the two agree).
@@ -88,14 +95,20 @@ def _alias_target(word: str, alias: BehaviourAlias) -> tuple[str, str]:
     """(behaviour, variant) of one behaviour alias; ValueError naming it if malformed."""
     if isinstance(alias, str):
         behaviour, variant = alias, ""
-    elif isinstance(alias, Mapping) and isinstance(alias.get("behaviour"), str) and set(alias) <= {"behaviour", "variant"}:
+    elif (
+        isinstance(alias, Mapping)
+        and isinstance(alias.get("behaviour"), str)
+        and set(alias) <= {"behaviour", "variant"}
+    ):
         behaviour, variant = alias["behaviour"], str(alias.get("variant", ""))
     else:
-        raise DatasetError(f"behaviour_aliases: {word}: expected a behaviour or {{behaviour: ..., variant: ...}}; "
-                           f"got {alias!r}")
+        raise DatasetError(
+            f"behaviour_aliases: {word}: expected a behaviour or {{behaviour: ..., variant: ...}}; got {alias!r}"
+        )
     if behaviour not in BEHAVIOURS:
-        raise DatasetError(f"behaviour_aliases: {word} -> {behaviour!r} is not a behaviour the papers use "
-                           f"({', '.join(BEHAVIOURS)})")
+        raise DatasetError(
+            f"behaviour_aliases: {word} -> {behaviour!r} is not a behaviour the papers use ({', '.join(BEHAVIOURS)})"
+        )
     return behaviour, variant
 
 
@@ -113,8 +126,10 @@ def apply_label_aliases(
     style_aliases = dict(style_aliases or {})
     if neutral_style:
         if style_aliases.get(neutral_style, "neutral") != "neutral":
-            raise DatasetError(f"neutral_style {neutral_style!r} is also in style_aliases "
-                               f"(-> {style_aliases[neutral_style]!r}); keep one")
+            raise DatasetError(
+                f"neutral_style {neutral_style!r} is also in style_aliases "
+                f"(-> {style_aliases[neutral_style]!r}); keep one"
+            )
         style_aliases[neutral_style] = "neutral"
     out = labels.copy()
     out["source_behaviour"] = out["behaviour"].str.strip()
@@ -126,8 +141,10 @@ def apply_label_aliases(
     clash = (alias_variant != "") & (own != "") & (own != alias_variant)
     if clash.any():
         line = clash.idxmax()
-        raise DatasetError(f"{labels_csv}:{line}: variant {own[line]!r} contradicts behaviour_aliases "
-                           f"({out.at[line, 'source_behaviour']} -> variant {alias_variant[line]!r})")
+        raise DatasetError(
+            f"{labels_csv}:{line}: variant {own[line]!r} contradicts behaviour_aliases "
+            f"({out.at[line, 'source_behaviour']} -> variant {alias_variant[line]!r})"
+        )
     out["variant"] = own.where(own != "", alias_variant)
     out["style"] = out["source_style"].map(lambda w: style_aliases.get(w, w))
     unused = [w for w in behaviour_aliases if w not in set(out["source_behaviour"])]
@@ -143,12 +160,17 @@ def keep_paper_behaviours(labels: pd.DataFrame, labels_csv: str | Path = "labels
     keep = labels["behaviour"].isin(BEHAVIOURS)
     if not keep.any():
         found = ", ".join(sorted(set(labels["behaviour"])))
-        raise DatasetError(f"{labels_csv}: no clip has a behaviour the papers use ({', '.join(BEHAVIOURS)}); "
-                           f"found {found}: map the source's words with behaviour_aliases")
+        raise DatasetError(
+            f"{labels_csv}: no clip has a behaviour the papers use ({', '.join(BEHAVIOURS)}); "
+            f"found {found}: map the source's words with behaviour_aliases"
+        )
     if not keep.all():
         counts = labels.loc[~keep, "behaviour"].value_counts().sort_index()
-        log.warning("left out %d clips of behaviours no paper uses: %s", int((~keep).sum()),
-                    ", ".join(f"{b} {n}" for b, n in counts.items()))
+        log.warning(
+            "left out %d clips of behaviours no paper uses: %s",
+            int((~keep).sum()),
+            ", ".join(f"{b} {n}" for b, n in counts.items()),
+        )
     return labels[keep]
 
 
@@ -156,8 +178,9 @@ def _primitive_label_map(primitive_labels: PrimitiveLabels) -> tuple[str, dict[s
     """(column, {label value: primitive name}) of a ``primitive_labels`` option; label
     values as text (YAML's 0 and "0" agree). DatasetError naming the key if malformed."""
     if not isinstance(primitive_labels, Mapping) or set(primitive_labels) != {"column", "names"}:
-        raise DatasetError(f"primitive_labels: expected {{column: ..., names: {{label: primitive, ...}}}}; "
-                           f"got {primitive_labels!r}")
+        raise DatasetError(
+            f"primitive_labels: expected {{column: ..., names: {{label: primitive, ...}}}}; got {primitive_labels!r}"
+        )
     column, names = primitive_labels["column"], primitive_labels["names"]
     if not isinstance(column, str) or not column.strip():
         raise DatasetError(f"primitive_labels.column: expected a labels column name; got {column!r}")
@@ -178,20 +201,24 @@ def primitive_names(
     that also has a ``segments`` column or a filled ``primitive`` column of its own."""
     column, names = _primitive_label_map(primitive_labels)
     if column not in labels.columns:
-        raise DatasetError(f"{labels_csv}: primitive_labels.column {column!r} is not a column "
-                           f"(has {list(labels.columns)})")
+        raise DatasetError(
+            f"{labels_csv}: primitive_labels.column {column!r} is not a column (has {list(labels.columns)})"
+        )
     if "segments" in labels.columns:
         raise DatasetError(f"{labels_csv}: has a 'segments' column and primitive_labels sets it; keep one")
     if column != "primitive" and "primitive" in labels.columns and labels["primitive"].str.strip().ne("").any():
-        raise DatasetError(f"{labels_csv}: has a filled 'primitive' column and primitive_labels sets it "
-                           f"from {column!r}; keep one")
+        raise DatasetError(
+            f"{labels_csv}: has a filled 'primitive' column and primitive_labels sets it from {column!r}; keep one"
+        )
     values = labels[column].str.strip()
     unmapped = ~values.isin(list(names))
     if unmapped.any():
         line = unmapped.idxmax()
         mapping = ", ".join(f"{k} -> {v}" for k, v in names.items())
-        raise DatasetError(f"{labels_csv}:{line}: {column} {values[line]!r} is not in primitive_labels.names "
-                           f"({mapping}); {int(unmapped.sum())} rows unmapped")
+        raise DatasetError(
+            f"{labels_csv}:{line}: {column} {values[line]!r} is not in primitive_labels.names "
+            f"({mapping}); {int(unmapped.sum())} rows unmapped"
+        )
     return values.map(names)
 
 
@@ -232,20 +259,29 @@ def _one_rig(motions: list[Motion], paths: list[Path], mixed_rigs: str) -> list[
     if mixed_rigs == "error":
         for k, p in zip(keys, paths):
             if k != keys[0]:
-                raise DatasetError(f"{p}: skeleton topology or channel layout differs from {paths[0]} (all clips "
-                                   f"must share one; mixed_rigs: skip_minority leaves the minority out)")
+                raise DatasetError(
+                    f"{p}: skeleton topology or channel layout differs from {paths[0]} (all clips "
+                    f"must share one; mixed_rigs: skip_minority leaves the minority out)"
+                )
         return list(range(len(motions)))
     counts = Counter(keys).most_common()
     if len(counts) > 1 and counts[0][1] == counts[1][1]:
         a, b = (paths[keys.index(k)] for k, _ in counts[:2])
-        raise DatasetError(f"{b}: skeleton topology or channel layout differs from {a}, and no rig holds a "
-                           f"majority of the clips ({counts[0][1]} and {counts[1][1]}): label one rig per dataset")
+        raise DatasetError(
+            f"{b}: skeleton topology or channel layout differs from {a}, and no rig holds a "
+            f"majority of the clips ({counts[0][1]} and {counts[1][1]}): label one rig per dataset"
+        )
     kept = [i for i, k in enumerate(keys) if k == counts[0][0]]
     if len(kept) < len(motions):
         ref = motions[kept[0]].skeleton
         left = [i for i in range(len(motions)) if keys[i] != counts[0][0]]
-        log.warning("left out %d clips on another rig than the other %d (%s): %s", len(left), len(kept),
-                    _describe_difference(motions[left[0]].skeleton, ref), ", ".join(paths[i].name for i in left))
+        log.warning(
+            "left out %d clips on another rig than the other %d (%s): %s",
+            len(left),
+            len(kept),
+            _describe_difference(motions[left[0]].skeleton, ref),
+            ", ".join(paths[i].name for i in left),
+        )
     return kept
 
 
@@ -267,10 +303,13 @@ def _fit_joint_map(joint_map: JointMap, skeleton: Skeleton, source: str) -> int:
         raise DatasetError(f"{where}: hips = {skeleton.names[hips]} is not the BVH ROOT and {exc}") from exc
     above = [n for g, ns in joint_map.groups.items() for n in ns if n not in new.names]
     if above:
-        raise DatasetError(f"{where}: groups list {above}, above the hips {skeleton.names[hips]}; the clips are "
-                           f"re-rooted at the hips, which removes them: delete them from the groups")
-    log.info("re-rooting every clip at the joint map's hips %s (the BVH ROOT is %s)",
-             skeleton.names[hips], skeleton.names[0])
+        raise DatasetError(
+            f"{where}: groups list {above}, above the hips {skeleton.names[hips]}; the clips are "
+            f"re-rooted at the hips, which removes them: delete them from the groups"
+        )
+    log.info(
+        "re-rooting every clip at the joint map's hips %s (the BVH ROOT is %s)", skeleton.names[hips], skeleton.names[0]
+    )
     return hips
 
 
@@ -321,17 +360,19 @@ def import_bvh_folder(
     if joint_map is not None:
         hips = _fit_joint_map(joint_map, motions[0].skeleton, source=f"joint map for {paths[0]}")
         motions = [reroot(m, hips) for m in motions]
-    meta = pd.DataFrame({
-        "clip_id": [p.stem for p in paths],
-        "subject": labels["subject"].to_numpy(),
-        "behaviour": labels["behaviour"].to_numpy(),
-        "style": labels["style"].to_numpy(),
-        "variant": labels["variant"].to_numpy(),
-        "primitive": labels["primitive"].to_numpy() if "primitive" in labels else "",
-        "source_file": [str(p) for p in paths],
-        "source_behaviour": labels["source_behaviour"].to_numpy(),
-        "source_style": labels["source_style"].to_numpy(),
-    })
+    meta = pd.DataFrame(
+        {
+            "clip_id": [p.stem for p in paths],
+            "subject": labels["subject"].to_numpy(),
+            "behaviour": labels["behaviour"].to_numpy(),
+            "style": labels["style"].to_numpy(),
+            "variant": labels["variant"].to_numpy(),
+            "primitive": labels["primitive"].to_numpy() if "primitive" in labels else "",
+            "source_file": [str(p) for p in paths],
+            "source_behaviour": labels["source_behaviour"].to_numpy(),
+            "source_style": labels["source_style"].to_numpy(),
+        }
+    )
     extra = [c for c in labels.columns if c not in METADATA_COLUMNS and c != "file"]
     for c in extra:
         meta[c] = labels[c].to_numpy()

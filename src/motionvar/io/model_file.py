@@ -16,6 +16,7 @@ import numpy as np
 
 from .atomic import atomic_write
 
+
 def model_base(path: str | Path) -> Path:
     """``path`` without a model suffix (``.npz``, ``.json``, ``.pt``)."""
     path = Path(path)

@@ -70,13 +70,28 @@ def clip_measures(motion: Motion, joint_map: JointMap) -> dict[str, float]:
     pos = motion.positions()
     finite = bool(np.isfinite(pos).all() and np.isfinite(motion.rotations).all())
     pos = np.nan_to_num(pos)
-    j = {s: joint_map.index(sk, s) for s in ("hips", "left_hip", "left_knee", "left_ankle", "left_toe",
-                                              "right_hip", "right_knee", "right_ankle", "right_toe")}
+    j = {
+        s: joint_map.index(sk, s)
+        for s in (
+            "hips",
+            "left_hip",
+            "left_knee",
+            "left_ankle",
+            "left_toe",
+            "right_hip",
+            "right_knee",
+            "right_ankle",
+            "right_toe",
+        )
+    }
     feet = pos[:, [j["left_ankle"], j["left_toe"], j["right_ankle"], j["right_toe"]], 1]
     floor = np.percentile(feet.min(axis=1), FLOOR_PERCENTILE)
     hips = pos[:, j["hips"]]
-    legs = [np.linalg.norm(pos[:, j[f"{s}_hip"]] - pos[:, j[f"{s}_knee"]], axis=-1)
-            + np.linalg.norm(pos[:, j[f"{s}_knee"]] - pos[:, j[f"{s}_ankle"]], axis=-1) for s in ("left", "right")]
+    legs = [
+        np.linalg.norm(pos[:, j[f"{s}_hip"]] - pos[:, j[f"{s}_knee"]], axis=-1)
+        + np.linalg.norm(pos[:, j[f"{s}_knee"]] - pos[:, j[f"{s}_ankle"]], axis=-1)
+        for s in ("left", "right")
+    ]
     ankles = 0.5 * (pos[:, j["left_ankle"]] + pos[:, j["right_ankle"]])
     off = np.linalg.norm((hips - ankles)[:, [0, 2]], axis=-1)
     step = max(1, int(round(motion.fps / PATH_RATE_HZ)))
@@ -107,8 +122,12 @@ class PlausibilityReport:
         """One line per gate: median and range over the clips (per behaviour for speeds)."""
         m = self.measures
         lines = [f"plausibility over {len(m)} clips: median (min-max)"]
-        for col, unit in (("pelvis_height_cm", "cm"), ("leg_length_cm", "cm"), ("pelvis_off_centre_cm", "cm"),
-                          ("fps", "fps")):
+        for col, unit in (
+            ("pelvis_height_cm", "cm"),
+            ("leg_length_cm", "cm"),
+            ("pelvis_off_centre_cm", "cm"),
+            ("fps", "fps"),
+        ):
             lines.append(f"  {col}: {m[col].median():.1f} {unit} ({m[col].min():.1f}-{m[col].max():.1f})")
         for b, g in m.groupby("behaviour", sort=True):
             s = g["speed_m_s"]
@@ -148,13 +167,16 @@ def check_plausibility(
     n = len(meas)
     bad = meas.loc[~meas["finite"], "clip_id"].tolist()
     if bad:
-        problems.append(f"NaN or infinite positions in {len(bad)}/{n} clips ({', '.join(bad[:5])}): "
-                        f"check those BVH files")
+        problems.append(
+            f"NaN or infinite positions in {len(bad)}/{n} clips ({', '.join(bad[:5])}): check those BVH files"
+        )
     bad = meas.loc[(meas["fps"] < FPS[0]) | (meas["fps"] > FPS[1])]
     if len(bad):
-        problems.append(f"frame rate {bad['fps'].iloc[0]:.4g} fps in {len(bad)}/{n} clips ({bad['clip_id'].iloc[0]}, "
-                        f"...); motion capture runs at {FPS[0]:g}-{FPS[1]:,.0f} fps: check the BVH 'Frame Time' "
-                        f"(seconds per frame)")
+        problems.append(
+            f"frame rate {bad['fps'].iloc[0]:.4g} fps in {len(bad)}/{n} clips ({bad['clip_id'].iloc[0]}, "
+            f"...); motion capture runs at {FPS[0]:g}-{FPS[1]:,.0f} fps: check the BVH 'Frame Time' "
+            f"(seconds per frame)"
+        )
     leg = meas["leg_length_cm"].median()
     leg_ok = LEG_LENGTH_CM[0] <= leg <= LEG_LENGTH_CM[1]
     hips_name = joint_map.joints["hips"]
@@ -164,7 +186,8 @@ def check_plausibility(
             f"leg (joint map {joint_map.joints['left_hip']} to {joint_map.joints['left_ankle']}) is {leg:.1f} cm long "
             f"(median; {_outside(meas['leg_length_cm'], lo, hi)}/{n} clips outside {lo:g}-{hi:g} cm); a human leg "
             f"is {lo:g}-{hi:g} cm from hip to ankle: {_unit_hint(leg, unit_cm)}, and the joint map's hip, knee "
-            f"and ankle joints ({_where(joint_map)})")
+            f"and ankle joints ({_where(joint_map)})"
+        )
     height = meas["pelvis_height_cm"].median()
     lo, hi = PELVIS_HEIGHT_CM
     if not lo <= height <= hi:
@@ -172,14 +195,16 @@ def check_plausibility(
         problems.append(
             f"pelvis (joint map hips = {hips_name}) is {height:.1f} cm above the floor (median; "
             f"{_outside(meas['pelvis_height_cm'], lo, hi)}/{n} clips outside {lo:g}-{hi:g} cm); a standing human "
-            f"pelvis is {lo:g}-{hi:g} cm high: {fix}")
+            f"pelvis is {lo:g}-{hi:g} cm high: {fix}"
+        )
     off = meas["pelvis_off_centre_cm"].median()
     if not off <= PELVIS_OFF_CENTRE_CM:
         n_out = int((meas["pelvis_off_centre_cm"] > PELVIS_OFF_CENTRE_CM).sum())
         problems.append(
             f"pelvis (joint map hips = {hips_name}) is {off:.1f} cm away from the feet horizontally (median; "
             f"{n_out}/{n} clips over {PELVIS_OFF_CENTRE_CM:g} cm); a human pelvis stands over the mean of the "
-            f"ankles, within {PELVIS_OFF_CENTRE_CM:g} cm: check the joint map's 'hips' and ankles ({_where(joint_map)})")
+            f"ankles, within {PELVIS_OFF_CENTRE_CM:g} cm: check the joint map's 'hips' and ankles ({_where(joint_map)})"
+        )
     if problems:  # speeds follow from the unit, the frame time and the hips: fix those first
         return PlausibilityReport(meas, problems)
     for behaviour, (lo, hi) in SPEED_M_S.items():
@@ -189,7 +214,8 @@ def check_plausibility(
                 f"{behaviour} clips move at {s.median():.2f} m/s (median of the root path speed; "
                 f"{_outside(s, lo, hi)}/{len(s)} clips outside {lo:g}-{hi:g} m/s); a human {behaviour} moves at "
                 f"{lo:g}-{hi:g} m/s: check the labels' behaviour column (and behaviour_aliases) and the BVH "
-                f"'Frame Time'")
+                f"'Frame Time'"
+            )
     return PlausibilityReport(meas, problems)
 
 
@@ -213,6 +239,8 @@ def plausibility_gate(
     report = check_plausibility(motions, metadata, joint_map, unit_cm)
     log.info("%s", report.summary())
     if report.problems:
-        raise PlausibilityError("; ".join(report.problems) + " (if the data is right after all, "
-                                "plausibility_check: false skips these checks)")
+        raise PlausibilityError(
+            "; ".join(report.problems) + " (if the data is right after all, "
+            "plausibility_check: false skips these checks)"
+        )
     return report

@@ -36,8 +36,23 @@ _EXPORTS = {
 __getattr__, __dir__ = lazy_exports(__name__, _EXPORTS)
 
 __all__ = [
-    "ClipCodec", "ClipPrediction", "ClipSet", "PropagationNetwork", "RootSolver", "StyleVariationModel",
-    "UniversalKriging", "Variogram", "build_clipset", "choose_structure", "cut", "extract_cycles",
-    "fit_variogram", "normalized_strides", "resolve_structure", "root_solver", "sequence_motion", "structure_evidence",
+    "ClipCodec",
+    "ClipPrediction",
+    "ClipSet",
+    "PropagationNetwork",
+    "RootSolver",
+    "StyleVariationModel",
+    "UniversalKriging",
+    "Variogram",
+    "build_clipset",
+    "choose_structure",
+    "cut",
+    "extract_cycles",
+    "fit_variogram",
+    "normalized_strides",
+    "resolve_structure",
+    "root_solver",
+    "sequence_motion",
+    "structure_evidence",
     "support_strides",
 ]

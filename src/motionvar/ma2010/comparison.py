@@ -19,24 +19,30 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .baselines.dbn import LauDBN
-from .baselines.gplvm import helix_trajectory
-from .baselines.mukai_kuriyama import StyleClipInterpolation, mk05_kriging, rose98_rbf
-from .baselines.perlin import add_rotation_noise
 from ..core.motion import Motion
-from ..models.bayesian_gplvm import BayesianGPLVM
 from ..metrics.discontinuities import count_discontinuities, peak_acceleration
 from ..metrics.foot_skating import foot_skating, low_joint_speed
 from ..metrics.jerk import mean_jerk, root_free_jerk
 from ..metrics.pose_distance import nearest_pose_distance, pose_features, pose_set_distance
+from ..models.bayesian_gplvm import BayesianGPLVM
+from .baselines.dbn import LauDBN
+from .baselines.gplvm import helix_trajectory
+from .baselines.mukai_kuriyama import StyleClipInterpolation, mk05_kriging, rose98_rbf
+from .baselines.perlin import add_rotation_noise
 from .examples import foot_contacts
 from .representation import ClipSet, PoseCodec
 from .svi import ClipPrediction, StyleVariationModel
 from .synthesis import RootSolver, realtime_clips, sequence_motion, stitch
 
 METHODS = ("ours", "perlin", "gplvm", "rbf", "kriging", "dbn")
-LABELS = {"ours": "ours (Ma 2010)", "perlin": "Perlin noise", "gplvm": "Bayesian GPLVM helix", "rbf": "RBF",
-          "kriging": "Kriging (MK05)", "dbn": "DBN (Lau 2009)"}
+LABELS = {
+    "ours": "ours (Ma 2010)",
+    "perlin": "Perlin noise",
+    "gplvm": "Bayesian GPLVM helix",
+    "rbf": "RBF",
+    "kriging": "Kriging (MK05)",
+    "dbn": "DBN (Lau 2009)",
+}
 #: How often ours draws xi (Sec. 7.4 does not say): "sequence" once per sequence (one
 #: person walks the whole sequence; the sequences differ), "clip" anew for every cycle.
 XI_DRAWS = ("sequence", "clip")
@@ -80,22 +86,33 @@ def ours_sequence(
     """Ours: n_clips cycles at one style (:func:`ours_clips`), retimed, stitched and
     root-solved."""
     pred = ours_clips(model, style, n_clips, rng, xi_per)
-    return sequence_motion(pred.rotations, pred.key_times, model.reference_keys_, solver, model.fps_, pred.root_height,
-                           landing_rule)
+    return sequence_motion(
+        pred.rotations, pred.key_times, model.reference_keys_, solver, model.fps_, pred.root_height, landing_rule
+    )
 
 
 def interpolation_sequence(
-    interp: StyleClipInterpolation, style: np.ndarray, n_clips: int, solver: RootSolver, fps: float,
+    interp: StyleClipInterpolation,
+    style: np.ndarray,
+    n_clips: int,
+    solver: RootSolver,
+    fps: float,
     landing_rule: str = "significant_maximum",
 ) -> Motion:
     """RBF or plain Kriging: the same clip (one style) repeated n_clips times."""
     pred = interp.predict(np.tile(np.atleast_2d(style), (n_clips, 1)))
-    return sequence_motion(pred.rotations, pred.key_times, interp.reference_keys_, solver, fps, pred.root_height,
-                           landing_rule)
+    return sequence_motion(
+        pred.rotations, pred.key_times, interp.reference_keys_, solver, fps, pred.root_height, landing_rule
+    )
 
 
 def perlin_sequence(
-    clips: ClipSet, n_clips: int, solver: RootSolver, rng: np.random.Generator, amplitude: float, frequency_hz: float,
+    clips: ClipSet,
+    n_clips: int,
+    solver: RootSolver,
+    rng: np.random.Generator,
+    amplitude: float,
+    frequency_hz: float,
     landing_rule: str = "significant_maximum",
 ) -> Motion:
     """Perlin noise [Per95] on the rotations of the examples concatenated in random order."""
@@ -112,14 +129,23 @@ def example_pose_sequences(clips: ClipSet) -> list[np.ndarray]:
 
 
 def gplvm_sequence(
-    gplvm: BayesianGPLVM, codec: PoseCodec, n_frames: int, n_turns: float, solver: RootSolver, fps: float, phase: float = 0.0, radius_scale: float = 1.0
+    gplvm: BayesianGPLVM,
+    codec: PoseCodec,
+    n_frames: int,
+    n_turns: float,
+    solver: RootSolver,
+    fps: float,
+    phase: float = 0.0,
+    radius_scale: float = 1.0,
 ) -> Motion:
     """GPLVM [Law03]: poses along a helix in its latent space (Sec. 7.4)."""
     path = helix_trajectory(gplvm.latent_mean_, n_frames, n_turns, phase, radius_scale)
     return solver.motion(codec.decode(gplvm.predict(path)), fps)
 
 
-def dbn_sequence(dbn: LauDBN, codec: PoseCodec, n_frames: int, solver: RootSolver, fps: float, rng: np.random.Generator) -> Motion:
+def dbn_sequence(
+    dbn: LauDBN, codec: PoseCodec, n_frames: int, solver: RootSolver, fps: float, rng: np.random.Generator
+) -> Motion:
     """DBN [LBJK09]: the transition network unrolled for n_frames frames. When the
     unrolled process diverges (a tangent vector beyond pi, i.e. no rotation any more, or
     not finite) the motion stops at the last valid frame: callers compare its length with
@@ -169,17 +195,32 @@ def method_sequences(
     seqs = example_pose_sequences(five)
     codec = PoseCodec.fit(np.concatenate(seqs))
     gplvm = BayesianGPLVM(gplvm_latent_dim, max_iter=gplvm_iterations, random_state=seed).fit(
-        np.concatenate([codec.encode(r) for r in seqs])[::gplvm_frame_step])
+        np.concatenate([codec.encode(r) for r in seqs])[::gplvm_frame_step]
+    )
     dbn = LauDBN(dbn_max_parents).fit([codec.encode(r) for r in seqs])
     turns = seconds / float(np.mean(five.key_times[:, -1]))
     out: dict[str, list[Motion]] = {m: [] for m in METHODS}
     for s in range(k):  # n_sequences sequences per method
         rng = np.random.default_rng([seed, s])
         out["ours"].append(trim(ours_sequence(ours, style, n_clips, solver, rng, xi_per, landing_rule), seconds))
-        out["perlin"].append(trim(perlin_sequence(five, n_clips, solver, rng, perlin_amplitude, perlin_frequency_hz,
-                                                  landing_rule), seconds))
-        out["gplvm"].append(gplvm_sequence(gplvm, codec, n_frames, turns, solver, fps, phase=2 * np.pi * s / k,
-                                           radius_scale=float(rng.uniform(0.9, 1.1))))
+        out["perlin"].append(
+            trim(
+                perlin_sequence(five, n_clips, solver, rng, perlin_amplitude, perlin_frequency_hz, landing_rule),
+                seconds,
+            )
+        )
+        out["gplvm"].append(
+            gplvm_sequence(
+                gplvm,
+                codec,
+                n_frames,
+                turns,
+                solver,
+                fps,
+                phase=2 * np.pi * s / k,
+                radius_scale=float(rng.uniform(0.9, 1.1)),
+            )
+        )
         out["rbf"].append(trim(interpolation_sequence(rbf, style, n_clips, solver, fps, landing_rule), seconds))
         out["kriging"].append(trim(interpolation_sequence(krig, style, n_clips, solver, fps, landing_rule), seconds))
         out["dbn"].append(dbn_sequence(dbn, codec, n_frames, solver, fps, rng))
@@ -213,7 +254,9 @@ class NaturalnessReference:
         poses = np.concatenate([pose_features(p) for p in positions])
         heights = np.concatenate([p[:, foot_joints, 1] for p in positions])
         peak = max(float(peak_acceleration(p, m.fps).max()) for p, m in zip(positions, motions))
-        return cls(poses, solver, foot_joints, np.percentile(heights, 5, axis=0), contact_height, threshold_factor * peak)
+        return cls(
+            poses, solver, foot_joints, np.percentile(heights, 5, axis=0), contact_height, threshold_factor * peak
+        )
 
 
 def naturalness(motion: Motion, ref: NaturalnessReference) -> dict[str, float]:
@@ -240,7 +283,8 @@ def naturalness(motion: Motion, ref: NaturalnessReference) -> dict[str, float]:
         "contact_share": float(contacts.any(axis=1).mean()),
         "low_joint_speed_cm_s": low_joint_speed(low, motion.fps, ref.contact_height),
         "pose_distance_cm": float(nearest_pose_distance(pose_features(pos), ref.poses).mean()),
-        "discontinuities_per_min": count_discontinuities(pos, motion.fps, ref.acceleration_threshold) / max(minutes, 1e-9),
+        "discontinuities_per_min": count_discontinuities(pos, motion.fps, ref.acceleration_threshold)
+        / max(minutes, 1e-9),
     }
 
 
@@ -261,7 +305,9 @@ NATURALNESS_SCORES = {
 }
 
 
-def naturalness_scores(measures: Mapping[str, float], example_jerk: float, example_root_free_jerk: float) -> dict[str, float]:
+def naturalness_scores(
+    measures: Mapping[str, float], example_jerk: float, example_root_free_jerk: float
+) -> dict[str, float]:
     """The naturalness scores of one sequence (:data:`NATURALNESS_SCORES`), each lower =
     more natural: whole-body and root-free jerk as their log-ratio to the examples' (too
     smooth is as unnatural as too jerky), the others as measured."""

@@ -18,7 +18,7 @@ from ..core.motion import Motion
 from ..core.skeleton import Skeleton
 from ..metrics.stride import footfall_strides, stride_lengths
 from ..prep.contacts import detect_foot_contacts
-from .correspondence import movement_direction, standard_skeleton, reference_key_positions, space_warp, time_warp
+from .correspondence import movement_direction, reference_key_positions, space_warp, standard_skeleton, time_warp
 from .keyframes import Cycle, KeyframeSignal, find_extrema, keyframe_signal, segment_cycles
 from .representation import ClipSet, rest_hip_height
 from .svi import StyleVariationModel
@@ -110,13 +110,20 @@ def foot_contacts(motion: Motion, solver: RootSolver, positions: np.ndarray | No
     if feet.shape != (2, 2):
         raise ValueError(f"foot_contacts: the solver's feet must be (2, 2) ankle and toe joints; got {feet.shape}")
     names = motion.skeleton.names
-    jm = JointMap(joints={f"{side}_{part}": names[feet[f, j]] for f, side in enumerate(("left", "right"))
-                          for j, part in enumerate(("ankle", "toe"))})
+    jm = JointMap(
+        joints={
+            f"{side}_{part}": names[feet[f, j]]
+            for f, side in enumerate(("left", "right"))
+            for j, part in enumerate(("ankle", "toe"))
+        }
+    )
     c = detect_foot_contacts(motion, jm, positions=positions)
     return np.stack([c.left, c.right], axis=1)
 
 
-def support_strides(motion: Motion, key_frames: np.ndarray, solver: RootSolver, measure: str = "footfalls") -> np.ndarray:
+def support_strides(
+    motion: Motion, key_frames: np.ndarray, solver: RootSolver, measure: str = "footfalls"
+) -> np.ndarray:
     """Stride length (cm) of the left and the right support phase of one cycle (key
     frames 0-2 and 2-4, frames of ``motion``), as the horizontal travel of the swing ankle.
 
@@ -139,7 +146,9 @@ def support_strides(motion: Motion, key_frames: np.ndarray, solver: RootSolver, 
     return footfall_strides(feet, foot_contacts(motion, solver, pos), bounds, int(round(MIN_FOOTFALL_S * motion.fps)))
 
 
-def uncut_strides(motion: Motion, key_frames: Sequence[np.ndarray], solver: RootSolver, measure: str = "footfalls") -> np.ndarray:
+def uncut_strides(
+    motion: Motion, key_frames: Sequence[np.ndarray], solver: RootSolver, measure: str = "footfalls"
+) -> np.ndarray:
     """(C, 2) strides of the C cycles of one uncut motion (key frames in its frames), its
     rotations put on the solver's (standard) skeleton and its root recovered by footskate
     cleanup once for the whole motion, so that each stride runs between the cycle's own
@@ -177,7 +186,10 @@ def normalized_strides(
 
 
 def source_strides(
-    sources: Sequence[tuple[Motion, int]], key_frames: Sequence[np.ndarray], solver: RootSolver, measure: str = "footfalls"
+    sources: Sequence[tuple[Motion, int]],
+    key_frames: Sequence[np.ndarray],
+    solver: RootSolver,
+    measure: str = "footfalls",
 ) -> np.ndarray:
     """(N, 2) strides of N cycles on their uncut motions (:func:`uncut_strides`):
     ``sources`` gives each cycle's uncut motion and its first frame there, ``key_frames``
@@ -232,19 +244,28 @@ def build_clipset(
         if sources is not None:
             style = source_strides(sources, key_frames, solver)
         else:
-            style = np.stack([normalized_strides(space_warp(m, joint_map).rotations, k, solver, fps)
-                              for m, k in zip(cycles, key_frames)])
+            style = np.stack(
+                [
+                    normalized_strides(space_warp(m, joint_map).rotations, k, solver, fps)
+                    for m, k in zip(cycles, key_frames)
+                ]
+            )
     ids = list(clip_ids) if clip_ids is not None else []
     return ClipSet(
-        rotations=rotations, key_times=np.stack(keys), root_height=np.stack(heights), style=np.asarray(style, dtype=float),
-        reference_keys=ref, skeleton=skeleton, fps=fps, clip_ids=ids,
+        rotations=rotations,
+        key_times=np.stack(keys),
+        root_height=np.stack(heights),
+        style=np.asarray(style, dtype=float),
+        reference_keys=ref,
+        skeleton=skeleton,
+        fps=fps,
+        clip_ids=ids,
     )
 
 
 def cut(motion: Motion, cycle: Cycle) -> Motion:
     """The frames of one cycle as a motion."""
     return motion.slice(cycle.start, cycle.stop + 1)
-
 
 
 def collect_cycles(
@@ -262,8 +283,15 @@ def collect_cycles(
         for k, c in enumerate(extract_cycles(m, joint_map, min_prominence, min_separation_s).cycles):
             cycles.append(cut(m, c))
             keys.append(c.key_frames)
-            rows.append({"clip_id": f"{cid}_c{k}", "source_clip": cid, "start_frame": c.start, "stop_frame": c.stop,
-                         "n_frames": c.stop - c.start + 1})
+            rows.append(
+                {
+                    "clip_id": f"{cid}_c{k}",
+                    "source_clip": cid,
+                    "start_frame": c.start,
+                    "stop_frame": c.stop,
+                    "n_frames": c.stop - c.start + 1,
+                }
+            )
     columns = ["clip_id", "source_clip", "start_frame", "stop_frame", "n_frames"]
     return cycles, keys, pd.DataFrame(rows, columns=columns)
 

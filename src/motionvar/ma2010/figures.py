@@ -49,8 +49,15 @@ def draw_fig3(result: EvaluationResult) -> Figure:
         ax_s.set_title(f"{behaviour} {cid}: D_l = {ex.signal.d_lower:.0f}, D_u = {ex.signal.d_upper:.0f}", fontsize=10)
         ax_s.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.0, 1.0))
         keys = ex.frames[: min(len(ex.frames), 7)]
-        plot_key_frames(ax_k, m.positions(), m.skeleton.parents, keys, names=m.skeleton.names, fps=m.fps,
-                        title=f"first {len(keys)} key frames of the {behaviour}")
+        plot_key_frames(
+            ax_k,
+            m.positions(),
+            m.skeleton.parents,
+            keys,
+            names=m.skeleton.names,
+            fps=m.fps,
+            title=f"first {len(keys)} key frames of the {behaviour}",
+        )
     fig.suptitle("Ma 2010 Fig. 3: key frames at the local extrema of S_M(t)", fontsize=12)
     fig.tight_layout()
     return fig
@@ -68,17 +75,26 @@ def draw_fig6(result: EvaluationResult) -> Figure:
     bound, root, abl = f["published_max_stride_error_cm"], f["root_group"], f.get("ablation")
     closing = folds["closing"].astype(bool).to_numpy()
     fig, axes = plt.subplots(1, 4, figsize=(22, 5), gridspec_kw={"width_ratios": [1, 1, 1.5, 1.3]})
-    kinds = [("ours_own_xi", "ours, held-out cycle's own xi", "o", "tab:blue"),
-             ("ours_mean_xi", "ours, xi at the network's conditional mean", "s", "tab:purple"),
-             ("ours_sampled_xi", "ours, xi sampled from the network", "+", "tab:green"),
-             ("kriging", "Kriging, style only", "x", "tab:orange")]
+    kinds = [
+        ("ours_own_xi", "ours, held-out cycle's own xi", "o", "tab:blue"),
+        ("ours_mean_xi", "ours, xi at the network's conditional mean", "s", "tab:purple"),
+        ("ours_sampled_xi", "ours, xi sampled from the network", "+", "tab:green"),
+        ("kriging", "Kriging, style only", "x", "tab:orange"),
+    ]
     reference = f.get("stride_reference", "style")
     for ax, side in zip(axes[:2], ("left", "right")):
         t = folds[f"{'validation' if reference == 'validation' else 'true'}_{side}_cm"].to_numpy()
         for name, label, marker, colour in kinds:
             ax.scatter(t, folds[f"{name}_{side}_cm"], s=14, marker=marker, color=colour, label=label)
-        ax.scatter(t[closing], folds.loc[closing, f"ours_own_xi_{side}_cm"], s=90, facecolors="none",
-                   edgecolors="k", lw=0.8, label="closing cycle (last of its walk)")
+        ax.scatter(
+            t[closing],
+            folds.loc[closing, f"ours_own_xi_{side}_cm"],
+            s=90,
+            facecolors="none",
+            edgecolors="k",
+            lw=0.8,
+            label="closing cycle (last of its walk)",
+        )
         lo, hi = t.min() - 3, t.max() + 3
         ax.plot([lo, hi], [lo, hi], color="0.5", lw=1)
         ax.set_xlim(lo, hi)
@@ -88,14 +104,17 @@ def draw_fig6(result: EvaluationResult) -> Figure:
         ax.set_title(f"{side} support phase (points beyond the frame not shown)", fontsize=9)
         ax.legend(fontsize=7, loc="upper left")
     x = np.arange(len(folds))
-    bars = [("ours_own_xi", f"ours, own xi, root in {root}", "tab:blue"),
-            ("ours_mean_xi", f"ours, conditional-mean xi, root in {root}", "tab:purple")]
+    bars = [
+        ("ours_own_xi", f"ours, own xi, root in {root}", "tab:blue"),
+        ("ours_mean_xi", f"ours, conditional-mean xi, root in {root}", "tab:purple"),
+    ]
     if abl:
         bars.append((f"ours_own_xi_{abl}", f"ours, own xi, root in {f['alt_root_group']} (ablation)", "tab:red"))
     width = 0.8 / len(bars)
     for k, (name, label, colour) in enumerate(bars):
-        axes[2].bar(x + (k - (len(bars) - 1) / 2) * width, folds[f"{name}_stride_error_cm"], width, color=colour,
-                    label=label)
+        axes[2].bar(
+            x + (k - (len(bars) - 1) / 2) * width, folds[f"{name}_stride_error_cm"], width, color=colour, label=label
+        )
     for i in np.flatnonzero(closing):
         axes[2].axvspan(i - 0.45, i + 0.45, color="0.88", zorder=0)
     axes[2].axhline(bound, color="tab:red", ls="--", lw=1, label=f"paper: max error {bound:g} cm")
@@ -105,8 +124,9 @@ def draw_fig6(result: EvaluationResult) -> Figure:
     axes[2].set_ylabel("stride error: max |error| of the two phases (cm)")
     err = folds["ours_own_xi_stride_error_cm"].to_numpy()
     unit = "whole walk left out per fold" if f["loo_unit"] == "walk" else "one cycle left out per fold"
-    axes[2].set_title(f"{len(folds)} held-out cycles ({unit}): ours max {err.max():.2f} cm, mean {err.mean():.2f} cm",
-                      fontsize=9)
+    axes[2].set_title(
+        f"{len(folds)} held-out cycles ({unit}): ours max {err.max():.2f} cm, mean {err.mean():.2f} cm", fontsize=9
+    )
     axes[2].legend(fontsize=7)
     methods = list(dict.fromkeys(summary["method"]))
     y = np.arange(len(methods))
@@ -116,14 +136,24 @@ def draw_fig6(result: EvaluationResult) -> Figure:
         axes[3].barh(y + (k - 0.5) * 0.4, vals, 0.4, color=colour, label=f"{cycles} cycles")
         for yy, m, v in zip(y, methods, vals):
             if m in rows.index and np.isfinite(v):
-                axes[3].text(v, yy + (k - 0.5) * 0.4, f" {int(rows.loc[m, 'n_within_bound'])}/{int(rows.loc[m, 'n'])}",
-                             va="center", fontsize=6)
+                axes[3].text(
+                    v,
+                    yy + (k - 0.5) * 0.4,
+                    f" {int(rows.loc[m, 'n_within_bound'])}/{int(rows.loc[m, 'n'])}",
+                    va="center",
+                    fontsize=6,
+                )
     axes[3].axvline(bound, color="tab:red", ls="--", lw=1)
-    style_only = {"kriging": "Kriging (style only)", "rbf": "RBF (style only)",
-                  "least_squares": "least squares (style only)",
-                  "validation": "held-out cycle itself vs its style (the measure's floor)"}
-    labels = {m: style_only.get(m, f"ours, {r['xi']} xi, root in {r['root_group']}")
-              for m, r in summary.drop_duplicates("method").set_index("method").iterrows()}
+    style_only = {
+        "kriging": "Kriging (style only)",
+        "rbf": "RBF (style only)",
+        "least_squares": "least squares (style only)",
+        "validation": "held-out cycle itself vs its style (the measure's floor)",
+    }
+    labels = {
+        m: style_only.get(m, f"ours, {r['xi']} xi, root in {r['root_group']}")
+        for m, r in summary.drop_duplicates("method").set_index("method").iterrows()
+    }
     axes[3].set_yticks(y)
     axes[3].set_yticklabels([labels[m] for m in methods], fontsize=7)
     axes[3].invert_yaxis()
@@ -154,8 +184,14 @@ def draw_fig7b(result: EvaluationResult) -> Figure:
     axes[0].legend(fontsize=8, loc="upper left")
     axes[1].scatter(table["nearest_example_cm"], table["stride_error_cm"], s=12)
     if failed.any():
-        axes[1].scatter(table["nearest_example_cm"][failed], np.full(failed.sum(), np.nanmax(err) * 1.05), marker="x",
-                        color="0.35", s=14, label="synthesis failed (ranked last)")
+        axes[1].scatter(
+            table["nearest_example_cm"][failed],
+            np.full(failed.sum(), np.nanmax(err) * 1.05),
+            marker="x",
+            color="0.35",
+            s=14,
+            label="synthesis failed (ranked last)",
+        )
         axes[1].legend(fontsize=8)
     axes[1].set_xlabel("distance to the nearest example (cm)")
     axes[1].set_ylabel("stride error (cm)")
@@ -173,8 +209,9 @@ def draw_overlay(ax: Axes, motions: Sequence[Motion], key_frames: Sequence[np.nd
         for k, f in enumerate(keys):
             pose = xy[f].copy()
             pose[:, 0] += k * spacing - pose[0, 0]
-            ax.add_collection(LineCollection(bone_segments(pose, m.skeleton.parents), colors=colour, linewidths=1.4,
-                                             alpha=0.8))
+            ax.add_collection(
+                LineCollection(bone_segments(pose, m.skeleton.parents), colors=colour, linewidths=1.4, alpha=0.8)
+            )
     ax.set_xlim(-0.5 * spacing, (len(key_frames[0]) - 0.5) * spacing)
     ax.autoscale(axis="y")
     ax.set_aspect("equal")
@@ -192,13 +229,22 @@ def draw_fig8(result: EvaluationResult) -> Figure:
     draw_overlay(axes[0], f["motions"], f["key_frames"], COLOURS)
     ceiling = f.get("ceiling_errors")
     extra = f"; ceiling (own xi) max {np.max(ceiling):.2f} cm" if ceiling is not None else ""
-    axes[0].set_title(f"{len(f['motions'])} synthesized cycles at stride {style[0]:.1f} / {style[1]:.1f} cm (one "
-                      f"colour each); stride errors {', '.join(f'{e:.2f}' for e in errors)} cm{extra}", fontsize=9)
+    axes[0].set_title(
+        f"{len(f['motions'])} synthesized cycles at stride {style[0]:.1f} / {style[1]:.1f} cm (one "
+        f"colour each); stride errors {', '.join(f'{e:.2f}' for e in errors)} cm{extra}",
+        fontsize=9,
+    )
     names = list(spreads)
     width = 0.8 / len(names)
     for i, name in enumerate(names):
-        axes[1].bar(np.arange(len(groups)) + i * width, [spreads[name][g] for g in groups], width, label=name,
-                    hatch="//" if "posture removed" in name else None, color=COLOURS[i % len(COLOURS)])
+        axes[1].bar(
+            np.arange(len(groups)) + i * width,
+            [spreads[name][g] for g in groups],
+            width,
+            label=name,
+            hatch="//" if "posture removed" in name else None,
+            color=COLOURS[i % len(COLOURS)],
+        )
     axes[1].set_xticks(np.arange(len(groups)) + 0.4 - width / 2)
     axes[1].set_xticklabels(["legs (A)", "left arm (B)", "right arm (C)", "upper body (D)"], fontsize=8)
     axes[1].set_ylabel("SD across clips of joint positions (cm)")
@@ -230,12 +276,17 @@ def draw_sec7_4(result: EvaluationResult) -> Figure:
         for i, v in enumerate(raw):
             if np.isinf(v):
                 ax.text(i, top, "diverged", rotation=90, ha="center", va="top", fontsize=7, color="white")
-        ax.set_title(NATURALNESS_SCORES.get(key, f"variation between the {f['n_sequences']} sequences (cm)"), fontsize=9)
+        ax.set_title(
+            NATURALNESS_SCORES.get(key, f"variation between the {f['n_sequences']} sequences (cm)"), fontsize=9
+        )
         positive = sorted(v for v in vals if v > 0)
         if positive and positive[-1] > 20 * positive[0]:  # a method far off the others: log axis
             ax.set_yscale("symlog", linthresh=positive[0])
-    fig.suptitle(f"Ma 2010 Sec. 7.4: {f['seconds']:g}-s sequences from {f['n_examples']} example cycles "
-                 "(naturalness: lower is better; variation: 0 = identical sequences)", fontsize=11)
+    fig.suptitle(
+        f"Ma 2010 Sec. 7.4: {f['seconds']:g}-s sequences from {f['n_examples']} example cycles "
+        "(naturalness: lower is better; variation: 0 = identical sequences)",
+        fontsize=11,
+    )
     fig.tight_layout()
     return fig
 
@@ -249,12 +300,13 @@ def draw_sec8(result: EvaluationResult) -> Figure:
     ax.axhline(1.0, color="tab:red", ls="--", lw=1, label="real time (1 s per s)")
     ax.set_yscale("log")
     ax.set_ylabel("computation s per s of motion")
-    ax.set_title(f"{f['motion_seconds']:.0f} s of walking from {f['n_cycles']} cycles: {1 / sps:.0f}x faster than "
-                 "real time", fontsize=9)
+    ax.set_title(
+        f"{f['motion_seconds']:.0f} s of walking from {f['n_cycles']} cycles: {1 / sps:.0f}x faster than real time",
+        fontsize=9,
+    )
     ax.legend(fontsize=8)
     fig.tight_layout()
     return fig
-
 
 
 def draw_variogram(result: EvaluationResult) -> Figure:
@@ -268,17 +320,45 @@ def draw_variogram(result: EvaluationResult) -> Figure:
     for ax, name in zip(axes[0], names):
         cloud, fits = f["clouds"][name], f["fits"][name]
         sw = cloud["same_walk"]
-        ax.scatter(cloud["lag"][~sw], cloud["gamma"][~sw], s=4, color="0.7", alpha=0.5, lw=0,
-                   label="one pair of cycles, different walks")
-        ax.scatter(cloud["lag"][sw], cloud["gamma"][sw], s=7, color="tab:orange", alpha=0.8, lw=0,
-                   label="one pair of cycles, same walk")
+        ax.scatter(
+            cloud["lag"][~sw],
+            cloud["gamma"][~sw],
+            s=4,
+            color="0.7",
+            alpha=0.5,
+            lw=0,
+            label="one pair of cycles, different walks",
+        )
+        ax.scatter(
+            cloud["lag"][sw],
+            cloud["gamma"][sw],
+            s=7,
+            color="tab:orange",
+            alpha=0.8,
+            lw=0,
+            label="one pair of cycles, same walk",
+        )
         ax.axvline(cloud["max_lag"], color="0.5", ls=":", lw=1, label="cutoff of the fit (half the largest lag)")
         rows = table[(table["group"] == name) & (table["series"] == "all pairs")]
-        ax.scatter(rows["lag"], rows["gamma"], s=12 + 50 * rows["pairs"] / max(rows["pairs"].max(), 1), color="k",
-                   zorder=3, label="binned, all pairs (size: pairs)")
+        ax.scatter(
+            rows["lag"],
+            rows["gamma"],
+            s=12 + 50 * rows["pairs"] / max(rows["pairs"].max(), 1),
+            color="k",
+            zorder=3,
+            label="binned, all pairs (size: pairs)",
+        )
         between = table[(table["group"] == name) & (table["series"] == "between walks")]
-        ax.plot(between["lag"], between["gamma"], "s", mfc="none", mec="tab:blue", ms=5, zorder=3,
-                label="binned, pairs from different walks")
+        ax.plot(
+            between["lag"],
+            between["gamma"],
+            "s",
+            mfc="none",
+            mec="tab:blue",
+            ms=5,
+            zorder=3,
+            label="binned, pairs from different walks",
+        )
         h = np.linspace(0.0, cloud["max_lag"], 300)[1:]
         for m, ls in zip(("linear", "exponential", "gaussian", "spherical"), (":", "--", "-.", (0, (1, 3)))):
             if m in fits["candidates"]:
@@ -298,7 +378,10 @@ def draw_variogram(result: EvaluationResult) -> Figure:
     axes[0][0].set_ylabel("semivariance" + (" (in variances of each dimension)" if scaled else " (raw units)"))
     handles, labels = axes[0][0].get_legend_handles_labels()
     fig.legend(handles, labels, loc="lower center", ncol=5, fontsize=7, frameon=False)
-    fig.suptitle(f"Ma 2010 Sec. 6: semivariograms of the Kriging residuals, {f['n_clips']} cycles "
-                 f"(variogram {f['model']}, output scale {f['scale']})", fontsize=11)
+    fig.suptitle(
+        f"Ma 2010 Sec. 6: semivariograms of the Kriging residuals, {f['n_clips']} cycles "
+        f"(variogram {f['model']}, output scale {f['scale']})",
+        fontsize=11,
+    )
     fig.tight_layout(rect=(0, 0.1, 1, 1))
     return fig

@@ -55,10 +55,12 @@ def style_range(model: StyleVariationModel, margin: float = STYLE_MARGIN) -> tup
 
 
 def range_text(low: np.ndarray, high: np.ndarray, names: Sequence[str], unit: str = "") -> str:
-    """"name lo-hi unit, ..." with the bounds rounded inwards to 0.1 (every value shown is allowed)."""
+    """ "name lo-hi unit, ..." with the bounds rounded inwards to 0.1 (every value shown is allowed)."""
     u = f" {unit}" if unit else ""
-    return ", ".join(f"{n} {np.ceil(a * 10 - 1e-9) / 10:.1f}-{np.floor(b * 10 + 1e-9) / 10:.1f}{u}"
-                     for n, a, b in zip(names, low, high))
+    return ", ".join(
+        f"{n} {np.ceil(a * 10 - 1e-9) / 10:.1f}-{np.floor(b * 10 + 1e-9) / 10:.1f}{u}"
+        for n, a, b in zip(names, low, high)
+    )
 
 
 def xi_range(model: StyleVariationModel, margin: float = XI_MARGIN) -> dict[str, tuple[float, float]]:
@@ -101,8 +103,13 @@ def style_region(model: StyleVariationModel, margin: float = STYLE_MARGIN) -> St
     return StyleRegion(mean, axes, lo - slack, hi + slack, margin)
 
 
-def check_style(style: Sequence[float], model: StyleVariationModel, names: Sequence[str] | None = None,
-                unit: str = "", margin: float = STYLE_MARGIN) -> np.ndarray:
+def check_style(
+    style: Sequence[float],
+    model: StyleVariationModel,
+    names: Sequence[str] | None = None,
+    unit: str = "",
+    margin: float = STYLE_MARGIN,
+) -> np.ndarray:
     """``style`` as a (d,) array; ValueError naming the allowed range when it has the wrong
     length, a value outside :func:`style_range`, or lies off the examples along a
     direction in which they do not vary (:class:`StyleRegion`)."""
@@ -121,8 +128,10 @@ def check_style(style: Sequence[float], model: StyleVariationModel, names: Seque
     if bad:
         ex_lo, ex_hi = style_range(model, 0.0)
         examples = ", ".join(f"{a:.1f}-{b:.1f}" for a, b in zip(ex_lo, ex_hi))
-        raise ValueError(f"style {got} is outside the model's range ({ranges}: the examples' {examples} widened by "
-                         f"{margin:.0%} of it on each side)")
+        raise ValueError(
+            f"style {got} is outside the model's range ({ranges}: the examples' {examples} widened by "
+            f"{margin:.0%} of it on each side)"
+        )
     region = style_region(model, margin)
     x = region.coords(c)
     off = [k for k in range(d) if not region.low[k] <= x[k] <= region.high[k]]
@@ -134,7 +143,8 @@ def check_style(style: Sequence[float], model: StyleVariationModel, names: Seque
             f"style {got} lies off the examples: their style parameters vary together, {expr} (minus its mean) "
             f"spans {ex.min():.2f} to {ex.max():.2f}{u} over the examples ({region.low[k]:.2f} to {region.high[k]:.2f} "
             f"with the {margin:.0%} margin) and this request gives {x[k]:.2f}; ask for parameters like the examples' "
-            f"(for walks: nearly equal strides, one number sets both)")
+            f"(for walks: nearly equal strides, one number sets both)"
+        )
     return c
 
 
@@ -150,8 +160,10 @@ def check_xi(xi: Mapping[str, float], model: StyleVariationModel, margin: float 
             raise ValueError(f"xi: unknown joint group {key!r} (groups: {valid})")
         lo, hi = ranges[g]
         if not (np.isfinite(value) and lo <= value <= hi):
-            raise ValueError(f"xi {key}={value:g} is outside the model's range for {g} ({lo:.3g}-{hi:.3g}: the "
-                             f"examples' xi widened by {margin:.0%} of it on each side)")
+            raise ValueError(
+                f"xi {key}={value:g} is outside the model's range for {g} ({lo:.3g}-{hi:.3g}: the "
+                f"examples' xi widened by {margin:.0%} of it on each side)"
+            )
         out[g] = float(value)
     return out
 
@@ -185,8 +197,14 @@ def _cycle_seconds(model: StyleVariationModel, c: np.ndarray, xi: Mapping[str, n
     return float(one.key_times[0, -1] - one.key_times[0, 0])
 
 
-def _walk(model: StyleVariationModel, solver: RootSolver, c: np.ndarray, drawn: Mapping[str, np.ndarray],
-          seconds: float, landing_rule: str) -> Motion:
+def _walk(
+    model: StyleVariationModel,
+    solver: RootSolver,
+    c: np.ndarray,
+    drawn: Mapping[str, np.ndarray],
+    seconds: float,
+    landing_rule: str,
+) -> Motion:
     """``seconds`` of the cycle predicted at (c, xi), repeated with transitions and root-solved."""
     fps = model.fps_
     span = _cycle_seconds(model, c, drawn)
@@ -195,8 +213,9 @@ def _walk(model: StyleVariationModel, solver: RootSolver, c: np.ndarray, drawn: 
     n_clips = int(np.ceil(seconds / span)) + 2  # one more for trimming, one for the transitions' frames
     while True:
         pred = model.predict(np.repeat(c, n_clips, axis=0), {g: np.repeat(x, n_clips) for g, x in drawn.items()})
-        motion = sequence_motion(pred.rotations, pred.key_times, model.reference_keys_, solver, fps, pred.root_height,
-                                 landing_rule)
+        motion = sequence_motion(
+            pred.rotations, pred.key_times, model.reference_keys_, solver, fps, pred.root_height, landing_rule
+        )
         if motion.duration >= seconds - 0.5 / fps:
             return trim(motion, seconds)
         n_clips += 1
@@ -253,8 +272,12 @@ def generate_walks(
             meas = walk_measures(motion, solver)
             err = _stride_error(meas, c[0]) if c.shape[1] >= 2 else 0.0
             if best is None or err < best[0]:
-                best = (err, GeneratedWalk(motion, c[0].copy(), {g: float(x[0]) for g, x in drawn.items()}, k + 1,
-                                           meas, err <= tolerance))
+                best = (
+                    err,
+                    GeneratedWalk(
+                        motion, c[0].copy(), {g: float(x[0]) for g, x in drawn.items()}, k + 1, meas, err <= tolerance
+                    ),
+                )
             if err <= tolerance:
                 break
         best[1].draws = k + 1
@@ -287,5 +310,9 @@ def walk_measures(motion: Motion, solver: RootSolver, skip_s: float = 1.0) -> di
         strides.append(float(np.median(d)) if len(d) else float("nan"))
     left_foot, right_foot = strides
     skating = foot_skating(pos[:, solver.feet], contacts, motion.fps, solver.planted)
-    return {"left_support_stride_cm": right_foot, "right_support_stride_cm": left_foot,
-            "foot_skating_cm_s": skating, "footfalls": n_footfalls}
+    return {
+        "left_support_stride_cm": right_foot,
+        "right_support_stride_cm": left_foot,
+        "foot_skating_cm_s": skating,
+        "footfalls": n_footfalls,
+    }

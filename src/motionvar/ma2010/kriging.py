@@ -58,10 +58,18 @@ def _spherical(h: np.ndarray, s: float, r: float) -> np.ndarray:
 VARIOGRAM_MODELS = {
     "linear": (lambda h, s: s * h, None, [0.0], [np.inf]),
     "power": (lambda h, s, a: s * h**a, lambda hmax: np.linspace(0.1, 1.9, 19), [0.0, 1e-3], [np.inf, 1.999]),
-    "exponential": (lambda h, s, r: s * (1 - np.exp(-h / max(r, 1e-12))),
-                    lambda hmax: hmax * np.geomspace(1e-2, 10.0, 31), [0.0, 1e-6], [np.inf, np.inf]),
-    "gaussian": (lambda h, s, r: s * (1 - np.exp(-((h / max(r, 1e-12)) ** 2))),
-                 lambda hmax: hmax * np.geomspace(1e-2, 10.0, 31), [0.0, 1e-6], [np.inf, np.inf]),
+    "exponential": (
+        lambda h, s, r: s * (1 - np.exp(-h / max(r, 1e-12))),
+        lambda hmax: hmax * np.geomspace(1e-2, 10.0, 31),
+        [0.0, 1e-6],
+        [np.inf, np.inf],
+    ),
+    "gaussian": (
+        lambda h, s, r: s * (1 - np.exp(-((h / max(r, 1e-12)) ** 2))),
+        lambda hmax: hmax * np.geomspace(1e-2, 10.0, 31),
+        [0.0, 1e-6],
+        [np.inf, np.inf],
+    ),
     "spherical": (_spherical, lambda hmax: hmax * np.geomspace(1e-2, 10.0, 31), [0.0, 1e-6], [np.inf, np.inf]),
 }
 AUTO_MODELS = ("linear", "exponential", "gaussian", "spherical")  # candidates of "auto"
@@ -94,9 +102,12 @@ class Variogram:
         p = self.params
         bounded = self.model in ("exponential", "gaussian", "spherical")
         return {
-            "model": self.model, "nugget": self.nugget,
-            "partial_sill": p[0] if bounded else np.nan, "slope": np.nan if bounded else p[0],
-            "range": p[1] if bounded else np.nan, "exponent": p[1] if self.model == "power" else np.nan,
+            "model": self.model,
+            "nugget": self.nugget,
+            "partial_sill": p[0] if bounded else np.nan,
+            "slope": np.nan if bounded else p[0],
+            "range": p[1] if bounded else np.nan,
+            "exponent": p[1] if self.model == "power" else np.nan,
         }
 
 
@@ -151,7 +162,11 @@ def bin_count(n_pairs: int) -> int:
 
 
 def empirical_semivariogram(
-    x: np.ndarray, r: np.ndarray, n_bins: int | None = None, scale: str = "none", max_lag: float = 1.0,
+    x: np.ndarray,
+    r: np.ndarray,
+    n_bins: int | None = None,
+    scale: str = "none",
+    max_lag: float = 1.0,
     pair_mask: np.ndarray | None = None,
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Binned empirical semivariogram of residuals r (N, D) over parameters x (N, p).
@@ -221,15 +236,21 @@ def _fit_model(model: str, hm: np.ndarray, gm: np.ndarray, cnt: np.ndarray, weig
 
 
 def fit_semivariogram(
-    x: np.ndarray, r: np.ndarray, model: str = "linear", n_bins: int | None = None, scale: str = "none",
-    weights: str = "cressie", max_lag: float = MAX_LAG,
+    x: np.ndarray,
+    r: np.ndarray,
+    model: str = "linear",
+    n_bins: int | None = None,
+    scale: str = "none",
+    weights: str = "cressie",
+    max_lag: float = MAX_LAG,
 ) -> VariogramFit:
     """Fit ``model`` (with a nugget >= 0) to the binned empirical semivariogram of the
     residuals r (N, D) at parameters x (N, p); "auto" chooses among :data:`AUTO_MODELS`
     (module docstring). Returns the fit with the binned semivariogram it was fitted to."""
     if model != "auto" and model not in VARIOGRAM_MODELS:
-        raise ValueError(f"fit_variogram: unknown variogram model {model!r} "
-                         f"(choose from {sorted(VARIOGRAM_MODELS)} or 'auto')")
+        raise ValueError(
+            f"fit_variogram: unknown variogram model {model!r} (choose from {sorted(VARIOGRAM_MODELS)} or 'auto')"
+        )
     if weights not in VARIOGRAM_WEIGHTS:
         raise ValueError(f"fit_variogram: variogram weights must be one of {VARIOGRAM_WEIGHTS}; got {weights!r}")
     output_weights(np.zeros((1, 1)), scale)  # validates scale
@@ -258,8 +279,13 @@ def fit_semivariogram(
 
 
 def fit_variogram(
-    x: np.ndarray, r: np.ndarray, model: str = "linear", n_bins: int | None = None, scale: str = "none",
-    weights: str = "cressie", max_lag: float = MAX_LAG,
+    x: np.ndarray,
+    r: np.ndarray,
+    model: str = "linear",
+    n_bins: int | None = None,
+    scale: str = "none",
+    weights: str = "cressie",
+    max_lag: float = MAX_LAG,
 ) -> Variogram:
     """The variogram of :func:`fit_semivariogram`."""
     return fit_semivariogram(x, r, model, n_bins, scale, weights, max_lag).variogram
@@ -276,19 +302,28 @@ class UniversalKriging:
     leave a thin direction whose hyperplane slope fits noise; a cut drops it."""
 
     def __init__(
-        self, variogram_model: str = "auto", n_bins: int | None = None, standardize: bool = True,
-        variogram_scale: str = "sd", variogram_weights: str = "cressie", max_lag: float = MAX_LAG,
+        self,
+        variogram_model: str = "auto",
+        n_bins: int | None = None,
+        standardize: bool = True,
+        variogram_scale: str = "sd",
+        variogram_weights: str = "cressie",
+        max_lag: float = MAX_LAG,
         trend_rcond: float = 0.0,
     ):
         if variogram_model != "auto" and variogram_model not in VARIOGRAM_MODELS:
-            raise ValueError(f"UniversalKriging: unknown variogram model {variogram_model!r} "
-                             f"(choose from {sorted(VARIOGRAM_MODELS)} or 'auto')")
+            raise ValueError(
+                f"UniversalKriging: unknown variogram model {variogram_model!r} "
+                f"(choose from {sorted(VARIOGRAM_MODELS)} or 'auto')"
+            )
         if variogram_scale not in VARIOGRAM_SCALES:
-            raise ValueError(f"UniversalKriging: variogram_scale must be one of {VARIOGRAM_SCALES}; "
-                             f"got {variogram_scale!r}")
+            raise ValueError(
+                f"UniversalKriging: variogram_scale must be one of {VARIOGRAM_SCALES}; got {variogram_scale!r}"
+            )
         if variogram_weights not in VARIOGRAM_WEIGHTS:
-            raise ValueError(f"UniversalKriging: variogram_weights must be one of {VARIOGRAM_WEIGHTS}; "
-                             f"got {variogram_weights!r}")
+            raise ValueError(
+                f"UniversalKriging: variogram_weights must be one of {VARIOGRAM_WEIGHTS}; got {variogram_weights!r}"
+            )
         self.variogram_model = variogram_model
         self.n_bins = n_bins
         self.standardize = standardize
@@ -324,8 +359,15 @@ class UniversalKriging:
         exact = self.residuals_.std(axis=0) <= 1e-10 * max(float(y.std(axis=0).max(initial=0.0)), 1e-300)
         self.residuals_[:, exact] = 0.0
         self.x_ = xs
-        self.variogram_fit_ = fit_semivariogram(xs, self.residuals_, self.variogram_model, self.n_bins,
-                                                self.variogram_scale, self.variogram_weights, self.max_lag)
+        self.variogram_fit_ = fit_semivariogram(
+            xs,
+            self.residuals_,
+            self.variogram_model,
+            self.n_bins,
+            self.variogram_scale,
+            self.variogram_weights,
+            self.max_lag,
+        )
         self.variogram_ = self.variogram_fit_.variogram
         n = len(xs)
         bordered = np.zeros((n + 1, n + 1))

@@ -305,9 +305,9 @@ def contact_offsets(
             out[s:e, f] = ref - travel[s:e, f]
             k_in, k_out = min(int(blend_frames), s - a), min(int(blend_frames), b - e)
             if k_in > 0:
-                out[s - k_in:s, f] += blend_weights(k_in + 2)[-2:0:-1, None] * out[s, f]
+                out[s - k_in : s, f] += blend_weights(k_in + 2)[-2:0:-1, None] * out[s, f]
             if k_out > 0:
-                out[e:e + k_out, f] += blend_weights(k_out + 2)[1:-1, None] * out[e - 1, f]
+                out[e : e + k_out, f] += blend_weights(k_out + 2)[1:-1, None] * out[e - 1, f]
     return out
 
 
@@ -318,8 +318,10 @@ def leg_chains(skeleton: Skeleton, feet: np.ndarray) -> np.ndarray:
     knees = skeleton.parents[ankles]
     hips = skeleton.parents[knees]
     if np.any(knees < 0) or np.any(hips < 0) or np.any(skeleton.parents[np.maximum(hips, 0)] < 0):
-        raise ValueError(f"leg_chains: the ankles {[skeleton.names[a] for a in ankles]} need a knee, a hip and the "
-                         "hip's parent above them")
+        raise ValueError(
+            f"leg_chains: the ankles {[skeleton.names[a] for a in ankles]} need a knee, a hip and the "
+            "hip's parent above them"
+        )
     return np.stack([hips, knees, ankles], axis=1)
 
 
@@ -369,13 +371,23 @@ def pin_feet(
             continue
         # a straight knee bends over the toes
         forward = pos[t, feet[f, 1]] - pos[t, ankle] if feet.shape[1] > 1 else None
-        ik = two_bone_ik(pos[t, hip], pos[t, knee], pos[t, ankle], grot[t, hip], grot[t, knee],
-                         pos[t, ankle] + offset[t, f], fallback_pole=forward)
-        new = np.stack([
-            qmul(qinv(grot[t, skeleton.parents[hip]]), ik.hip_rotation),
-            qmul(qinv(ik.hip_rotation), ik.knee_rotation),
-            qmul(qinv(ik.knee_rotation), grot[t, ankle]),  # the foot keeps its orientation
-        ], axis=1)  # (n, 3, 4)
+        ik = two_bone_ik(
+            pos[t, hip],
+            pos[t, knee],
+            pos[t, ankle],
+            grot[t, hip],
+            grot[t, knee],
+            pos[t, ankle] + offset[t, f],
+            fallback_pole=forward,
+        )
+        new = np.stack(
+            [
+                qmul(qinv(grot[t, skeleton.parents[hip]]), ik.hip_rotation),
+                qmul(qinv(ik.hip_rotation), ik.knee_rotation),
+                qmul(qinv(ik.knee_rotation), grot[t, ankle]),  # the foot keeps its orientation
+            ],
+            axis=1,
+        )  # (n, 3, 4)
         old = out[t[:, None], [hip, knee, ankle]]
         out[t[:, None], [hip, knee, ankle]] = np.where(np.sum(new * old, axis=-1, keepdims=True) < 0, -new, new)
     return out

@@ -101,26 +101,43 @@ class ClipSet:
         sk = self.skeleton
         ends = np.array(sorted(sk.end_sites), dtype=np.int64)
         return {
-            "rotations": self.rotations, "key_times": self.key_times, "root_height": self.root_height,
-            "style": self.style, "reference_keys": self.reference_keys, "fps": np.array(self.fps),
-            "clip_ids": np.array(self.clip_ids), "names": np.array(sk.names), "parents": sk.parents,
-            "offsets": sk.offsets, "end_site_joints": ends,
+            "rotations": self.rotations,
+            "key_times": self.key_times,
+            "root_height": self.root_height,
+            "style": self.style,
+            "reference_keys": self.reference_keys,
+            "fps": np.array(self.fps),
+            "clip_ids": np.array(self.clip_ids),
+            "names": np.array(sk.names),
+            "parents": sk.parents,
+            "offsets": sk.offsets,
+            "end_site_joints": ends,
             "end_site_offsets": np.array([sk.end_sites[j] for j in ends]).reshape(len(ends), 3),
         }
 
     @classmethod
     def from_arrays(cls, a: dict[str, np.ndarray]) -> "ClipSet":
-        missing = [k for k in ("rotations", "key_times", "root_height", "style", "reference_keys", "fps", "names") if k not in a]
+        missing = [
+            k
+            for k in ("rotations", "key_times", "root_height", "style", "reference_keys", "fps", "names")
+            if k not in a
+        ]
         if missing:
             raise ValueError(f"ClipSet.from_arrays: missing arrays {missing}")
         sk = Skeleton(
-            names=tuple(str(n) for n in a["names"]), parents=a["parents"], offsets=a["offsets"],
+            names=tuple(str(n) for n in a["names"]),
+            parents=a["parents"],
+            offsets=a["offsets"],
             end_sites={int(j): np.asarray(o) for j, o in zip(a["end_site_joints"], a["end_site_offsets"])},
         )
         return cls(
-            rotations=np.asarray(a["rotations"], dtype=float), key_times=np.asarray(a["key_times"], dtype=float),
-            root_height=np.asarray(a["root_height"], dtype=float), style=np.asarray(a["style"], dtype=float),
-            reference_keys=np.asarray(a["reference_keys"], dtype=float), skeleton=sk, fps=float(a["fps"]),
+            rotations=np.asarray(a["rotations"], dtype=float),
+            key_times=np.asarray(a["key_times"], dtype=float),
+            root_height=np.asarray(a["root_height"], dtype=float),
+            style=np.asarray(a["style"], dtype=float),
+            reference_keys=np.asarray(a["reference_keys"], dtype=float),
+            skeleton=sk,
+            fps=float(a["fps"]),
             clip_ids=[str(c) for c in a["clip_ids"]],
         )
 
@@ -128,8 +145,13 @@ class ClipSet:
         """The clips at ``index`` (indices or a boolean mask)."""
         idx = np.arange(self.n_clips)[index]
         return ClipSet(
-            rotations=self.rotations[idx], key_times=self.key_times[idx], root_height=self.root_height[idx],
-            style=self.style[idx], reference_keys=self.reference_keys, skeleton=self.skeleton, fps=self.fps,
+            rotations=self.rotations[idx],
+            key_times=self.key_times[idx],
+            root_height=self.root_height[idx],
+            style=self.style[idx],
+            reference_keys=self.reference_keys,
+            skeleton=self.skeleton,
+            fps=self.fps,
             clip_ids=[self.clip_ids[i] for i in idx],
         )
 

@@ -15,18 +15,35 @@ MIN_WALK_S = 2.0
 
 # evaluation -> (source, what it checks, minimum number of walking clips, of subjects)
 EVALUATIONS = {
-    "ma2010_fig3": ("Fig. 3", "Key frames (foot strikes, Eq. 1-4) align the walking cycles of different clips.",
-                    1, 1),
-    "ma2010_fig6": ("Fig. 6", "Leave-one-out: the synthesized cycle has the held-out clip's stride (within 1.2 cm); "
-                              "Kriging beats RBF (MK05).", 2, 1),
-    "ma2010_variogram": ("Sec. 6 (variogram)", "Diagnostic, no claim: the semivariograms of the Kriging residuals per "
-                                               "joint group, with the fitted variograms.", 2, 1),
+    "ma2010_fig3": ("Fig. 3", "Key frames (foot strikes, Eq. 1-4) align the walking cycles of different clips.", 1, 1),
+    "ma2010_fig6": (
+        "Fig. 6",
+        "Leave-one-out: the synthesized cycle has the held-out clip's stride (within 1.2 cm); "
+        "Kriging beats RBF (MK05).",
+        2,
+        1,
+    ),
+    "ma2010_variogram": (
+        "Sec. 6 (variogram)",
+        "Diagnostic, no claim: the semivariograms of the Kriging residuals per "
+        "joint group, with the fitted variograms.",
+        2,
+        1,
+    ),
     "ma2010_fig7b": ("Fig. 7b", "Strides far outside the examples are synthesized less reliably.", 2, 1),
-    "ma2010_fig8": ("Fig. 8a", "At a fixed style, variants differ as much as the examples do, at the same stride.",
-                    2, 1),
+    "ma2010_fig8": (
+        "Fig. 8a",
+        "At a fixed style, variants differ as much as the examples do, at the same stride.",
+        2,
+        1,
+    ),
     # the example cycles are taken one per subject (Fig. 1's five clips)
-    "ma2010_sec7_4": ("Sec. 7.4", "Ours is the most natural of six methods (foot skating, jerk, discontinuities).",
-                      2, 2),
+    "ma2010_sec7_4": (
+        "Sec. 7.4",
+        "Ours is the most natural of six methods (foot skating, jerk, discontinuities).",
+        2,
+        2,
+    ),
     "ma2010_sec8": ("Sec. 8", "Synthesis runs faster than real time.", 2, 1),
 }
 
@@ -38,9 +55,15 @@ def requirements(walk_styles: Sequence[str], walk_variants: Sequence[str]) -> li
     where = {"behaviour": ("walk",), "style": tuple(walk_styles), "variant": tuple(walk_variants)}
     out = []
     for ev, (source, checks, n, subjects) in EVALUATIONS.items():
-        need = Need(what=f"{styles} walking clips", stage="data", where=where, min_count=n, min_subjects=subjects,
-                    min_seconds=MIN_WALK_S,
-                    why="Ma 2010 models the gait cycles of walking (Sec. 4; a cycle needs two foot strikes of each "
-                        "foot); set ma2010.walk_styles and ma2010.walk_variants to labels your data has")
+        need = Need(
+            what=f"{styles} walking clips",
+            stage="data",
+            where=where,
+            min_count=n,
+            min_subjects=subjects,
+            min_seconds=MIN_WALK_S,
+            why="Ma 2010 models the gait cycles of walking (Sec. 4; a cycle needs two foot strikes of each "
+            "foot); set ma2010.walk_styles and ma2010.walk_variants to labels your data has",
+        )
         out.append(Requirement(ev, PAPER, source, checks, (need,)))
     return out

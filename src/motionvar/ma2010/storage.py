@@ -64,8 +64,12 @@ class SavedStyleModel:
 
 def _skeleton_arrays(sk: Skeleton) -> dict[str, np.ndarray]:
     ends = np.array(sorted(sk.end_sites), dtype=np.int64)
-    return {"skeleton.parents": sk.parents, "skeleton.offsets": sk.offsets, "skeleton.end_site_joints": ends,
-            "skeleton.end_site_offsets": np.array([sk.end_sites[j] for j in ends], dtype=float).reshape(-1, 3)}
+    return {
+        "skeleton.parents": sk.parents,
+        "skeleton.offsets": sk.offsets,
+        "skeleton.end_site_joints": ends,
+        "skeleton.end_site_offsets": np.array([sk.end_sites[j] for j in ends], dtype=float).reshape(-1, 3),
+    }
 
 
 def save_style_variation_model(
@@ -86,11 +90,15 @@ def save_style_variation_model(
         raise ValueError("save_style_variation_model: the model is not fitted")
     sk = model.skeleton_
     if model.style_.shape[1] != len(style_names):
-        raise ValueError(f"save_style_variation_model: {model.style_.shape[1]} style parameters but names "
-                         f"{list(style_names)}")
+        raise ValueError(
+            f"save_style_variation_model: {model.style_.shape[1]} style parameters but names {list(style_names)}"
+        )
     arrays = {
-        "eta": model.eta_, "style": model.style_, "reference_keys": model.reference_keys_,
-        "key_times_span": model.key_times_span_, **_skeleton_arrays(sk),
+        "eta": model.eta_,
+        "style": model.style_,
+        "reference_keys": model.reference_keys_,
+        "key_times_span": model.key_times_span_,
+        **_skeleton_arrays(sk),
     }
     groups, nodes, interps = {}, {}, {}
     for g, joints in model.groups.items():
@@ -107,22 +115,30 @@ def save_style_variation_model(
             arrays[f"kriging.{g}.{k}"] = getattr(krig, k)
         v = krig.variogram_
         interps[g] = {
-            "timing": bool(codec.timing), "root_height": bool(codec.root_height),
+            "timing": bool(codec.timing),
+            "root_height": bool(codec.root_height),
             "kriging": _init_settings(krig),
             "variogram": {"model": v.model, "nugget": float(v.nugget), "params": [float(p) for p in v.params]},
         }
     info = {
-        "kind": KIND, "version": VERSION,
+        "kind": KIND,
+        "version": VERSION,
         "skeleton": {"names": list(sk.names)},
-        "tau": groups, "group_order": list(model.groups),
+        "tau": groups,
+        "group_order": list(model.groups),
         "structure": {n: list(p) for n, p in model.network_.structure.items()},
-        "network": nodes, "interpolators": interps,
-        "timing_group": model.timing_group_, "n_keys": int(model.n_keys_), "fps": float(model.fps_),
+        "network": nodes,
+        "interpolators": interps,
+        "timing_group": model.timing_group_,
+        "n_keys": int(model.n_keys_),
+        "fps": float(model.fps_),
         "model_settings": {k: v for k, v in _init_settings(model).items() if k not in ("groups", "structure")},
         "structure_setting": model.structure if isinstance(model.structure, str) else "explicit",
         "joint_map": {"joints": dict(joint_map.joints), "groups": {g: list(v) for g, v in joint_map.groups.items()}},
-        "style_names": list(style_names), "style_unit": style_unit,
-        "clip_ids": [str(c) for c in (clip_ids or [])], "subjects": [str(s) for s in (subjects or [])],
+        "style_names": list(style_names),
+        "style_unit": style_unit,
+        "clip_ids": [str(c) for c in (clip_ids or [])],
+        "subjects": [str(s) for s in (subjects or [])],
         "settings": dict(settings or {}),
     }
     return save_model(path, arrays, info)
@@ -147,10 +163,13 @@ def load_style_variation_model(path: str | Path) -> SavedStyleModel:
         if info.get("version") != VERSION:
             raise ValueError(f"version {info.get('version')} (expected {VERSION})")
         sk = Skeleton(
-            names=tuple(info["skeleton"]["names"]), parents=arrays["skeleton.parents"],
+            names=tuple(info["skeleton"]["names"]),
+            parents=arrays["skeleton.parents"],
             offsets=arrays["skeleton.offsets"],
-            end_sites={int(j): np.asarray(o) for j, o in zip(arrays["skeleton.end_site_joints"],
-                                                               arrays["skeleton.end_site_offsets"])},
+            end_sites={
+                int(j): np.asarray(o)
+                for j, o in zip(arrays["skeleton.end_site_joints"], arrays["skeleton.end_site_offsets"])
+            },
         )
         order = info["group_order"]
         groups = {g: arrays[f"groups.{g}"] for g in order}
@@ -160,8 +179,12 @@ def load_style_variation_model(path: str | Path) -> SavedStyleModel:
         model.tau_ = {g: int(info["tau"][g]) for g in order}
         model.xi_ = {g: arrays[f"xi.{g}"] for g in order}
         net = PropagationNetwork(structure)
-        net.nodes_ = {n: NodeModel(tuple(spec["parents"]), arrays[f"network.{n}.weights"], float(spec["mu"]),
-                                   float(spec["sigma2"])) for n, spec in info["network"].items()}
+        net.nodes_ = {
+            n: NodeModel(
+                tuple(spec["parents"]), arrays[f"network.{n}.weights"], float(spec["mu"]), float(spec["sigma2"])
+            )
+            for n, spec in info["network"].items()
+        }
         model.network_ = net
         model.timing_group_ = info["timing_group"]
         model.n_keys_ = int(info["n_keys"])
@@ -172,11 +195,19 @@ def load_style_variation_model(path: str | Path) -> SavedStyleModel:
         model.key_times_span_ = arrays["key_times_span"]
         model.interpolators_ = {}
         for g, spec in info["interpolators"].items():
-            codec = ClipCodec(arrays[f"codec.{g}.reference"], arrays[f"codec.{g}.joints"], spec["timing"],
-                              spec["root_height"])
+            codec = ClipCodec(
+                arrays[f"codec.{g}.reference"], arrays[f"codec.{g}.joints"], spec["timing"], spec["root_height"]
+            )
             model.interpolators_[g] = (codec, _kriging(arrays, g, spec))
         jm = JointMap.from_dict(info["joint_map"], origin=f"{source}.json")
-        return SavedStyleModel(model, jm, list(info["style_names"]), info["style_unit"], list(info["clip_ids"]),
-                               list(info["subjects"]), dict(info["settings"]))
+        return SavedStyleModel(
+            model,
+            jm,
+            list(info["style_names"]),
+            info["style_unit"],
+            list(info["clip_ids"]),
+            list(info["subjects"]),
+            dict(info["settings"]),
+        )
     except (KeyError, TypeError, ValueError) as exc:
         raise ValueError(f"{source}.npz/.json: not a complete {KIND} ({exc!r}); rerun rule ma2010_model") from exc

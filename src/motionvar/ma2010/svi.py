@@ -113,9 +113,7 @@ class StyleVariationModel:
         self.flight = flight
         self.n_bins = n_bins
 
-    def _structure(
-        self, clips: ClipSet, d_lower: float | None, d_upper: float | None
-    ) -> dict[str, tuple[str, ...]]:
+    def _structure(self, clips: ClipSet, d_lower: float | None, d_upper: float | None) -> dict[str, tuple[str, ...]]:
         if isinstance(self.structure, Mapping):
             return dict(self.structure)
         if self.structure == "lower_first":
@@ -154,8 +152,9 @@ class StyleVariationModel:
             lead = g == self.timing_group_
             codec = ClipCodec.fit(clips, joints, timing=lead, root_height=lead and self.flight)
             x = np.concatenate([clips.style, self.xi_[g][:, None]], axis=1)
-            krig = UniversalKriging(self.variogram_model, self.n_bins, variogram_scale=self.variogram_scale,
-                                    trend_rcond=self.trend_rcond)
+            krig = UniversalKriging(
+                self.variogram_model, self.n_bins, variogram_scale=self.variogram_scale, trend_rcond=self.trend_rcond
+            )
             krig = krig.fit(x, codec.encode(clips))
             self.interpolators_[g] = (codec, krig)
         return self

@@ -13,8 +13,8 @@ import numpy as np
 
 from ..core.kinematics import fk
 from ..core.motion import Motion
-from ..core.skeleton import Skeleton
 from ..core.quaternions import qnormalize, qslerp
+from ..core.skeleton import Skeleton
 from .correspondence import retime_frames
 from .postprocess import CLEANUPS, FOOT_BLEND_S, land, pin_feet, reconstruct_root
 
@@ -24,7 +24,9 @@ def rest_foot_heights(skeleton: Skeleton, joints: np.ndarray) -> np.ndarray:
     point of that foot (its joints and end sites) in the rest pose: their planted heights."""
     joints = np.asarray(joints, dtype=np.int64)
     pos = fk(np.tile([1.0, 0, 0, 0], (skeleton.n_joints, 1)), np.zeros(3), skeleton.offsets, skeleton.parents)
-    points = [pos[j, 1] for j in joints] + [pos[j, 1] + skeleton.end_sites[j][1] for j in joints if j in skeleton.end_sites]
+    points = [pos[j, 1] for j in joints] + [
+        pos[j, 1] + skeleton.end_sites[j][1] for j in joints if j in skeleton.end_sites
+    ]
     return pos[joints, 1] - min(points)
 
 
@@ -82,9 +84,13 @@ class RootSolver:
         """The motion of ``rotations`` (T, J, 4) at ``fps`` with its root recovered (and, with
         ``cleanup`` "root+feet", its feet pinned); ``root_height`` (T,) is used in flight."""
         root = reconstruct_root(
-            rotations, self.skeleton, self.feet, self.planted,
+            rotations,
+            self.skeleton,
+            self.feet,
+            self.planted,
             root_height=root_height if self.flight_threshold is not None else None,
-            flight_threshold=self.flight_threshold, min_support_frames=int(round(self.min_support_s * fps)),
+            flight_threshold=self.flight_threshold,
+            min_support_frames=int(round(self.min_support_s * fps)),
         )
         motion = Motion(skeleton=self.skeleton, root_pos=root, rotations=rotations, fps=fps)
         if self.cleanup == "root" or len(rotations) < 2:  # one frame: nothing can slide
@@ -92,13 +98,18 @@ class RootSolver:
         from .examples import foot_contacts  # the contact detection the measures use (imported here: no cycle)
 
         contacts = foot_contacts(motion, self)
-        pinned = pin_feet(rotations, root, self.skeleton, self.feet, self.planted, contacts,
-                          int(round(self.foot_blend_s * fps)))
+        pinned = pin_feet(
+            rotations, root, self.skeleton, self.feet, self.planted, contacts, int(round(self.foot_blend_s * fps))
+        )
         return Motion(skeleton=self.skeleton, root_pos=root, rotations=pinned, fps=fps)
 
 
 def realtime_clips(
-    rotations: np.ndarray, key_times: np.ndarray, reference_keys: np.ndarray, fps: float, root_height: np.ndarray | None = None
+    rotations: np.ndarray,
+    key_times: np.ndarray,
+    reference_keys: np.ndarray,
+    fps: float,
+    root_height: np.ndarray | None = None,
 ) -> list[tuple[np.ndarray, np.ndarray | None]]:
     """Inverse time warp (Sec. 4.2) of M clips (M, T, J, 4) to real time at ``fps``: one
     vectorised slerp over the frames of all clips (see :func:`.correspondence.retime`)."""
@@ -118,7 +129,9 @@ def realtime_clips(
 
 
 def stitch(
-    clips: Sequence[tuple[np.ndarray, np.ndarray | None]], align_heading: bool = True, landing_rule: str = "significant_maximum"
+    clips: Sequence[tuple[np.ndarray, np.ndarray | None]],
+    align_heading: bool = True,
+    landing_rule: str = "significant_maximum",
 ) -> tuple[np.ndarray, np.ndarray | None]:
     """Concatenate real-time clips with a displacement-mapped transition into each next
     clip (Eq. 14-15, landing frame by ``landing_rule``, :func:`.postprocess.landing_frame`);
@@ -130,8 +143,9 @@ def stitch(
     pieces, extras = [clips[0][0]], [clips[0][1]]
     for nxt_rot, nxt_extra in clips[1:]:  # loop over clips
         last_extra = None if extras[-1] is None else extras[-1][-1]
-        rot, extra = land(pieces[-1][-1], nxt_rot, last_extra, nxt_extra, align_heading=align_heading,
-                          landing_rule=landing_rule)
+        rot, extra = land(
+            pieces[-1][-1], nxt_rot, last_extra, nxt_extra, align_heading=align_heading, landing_rule=landing_rule
+        )
         pieces[-1], extras[-1] = pieces[-1][:-1], None if extras[-1] is None else extras[-1][:-1]
         pieces.append(rot)
         extras.append(extra)
@@ -151,5 +165,7 @@ def sequence_motion(
 ) -> Motion:
     """One motion from M predicted clips: retime, stitch (``landing_rule``: see
     :func:`.postprocess.landing_frame`), clean up footskate."""
-    rot, height = stitch(realtime_clips(rotations, key_times, reference_keys, fps, root_height), landing_rule=landing_rule)
+    rot, height = stitch(
+        realtime_clips(rotations, key_times, reference_keys, fps, root_height), landing_rule=landing_rule
+    )
     return solver.motion(rot, fps, height)

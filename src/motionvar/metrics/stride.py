@@ -25,7 +25,9 @@ from __future__ import annotations
 import numpy as np
 
 
-def _feet_and_boundaries(foot_positions: np.ndarray, boundaries: np.ndarray, name: str) -> tuple[np.ndarray, np.ndarray]:
+def _feet_and_boundaries(
+    foot_positions: np.ndarray, boundaries: np.ndarray, name: str
+) -> tuple[np.ndarray, np.ndarray]:
     """(T, F, 3) float feet and (P + 1,) int boundaries, checked; ValueError naming ``name``."""
     p = np.asarray(foot_positions, dtype=float)
     b = np.asarray(boundaries, dtype=np.int64)
@@ -69,7 +71,9 @@ def stride_lengths(
     return disp.max(axis=1)
 
 
-def footprints(foot_positions: np.ndarray, contacts: np.ndarray, up_axis: int = 1) -> list[tuple[np.ndarray, np.ndarray]]:
+def footprints(
+    foot_positions: np.ndarray, contacts: np.ndarray, up_axis: int = 1
+) -> list[tuple[np.ndarray, np.ndarray]]:
     """Each foot's footfalls: per foot, its contacts (K, 2) as [start, stop) frames and
     their footprints (K, 2): the horizontal position of the foot's joint in the contact's
     frame where that joint is lowest (a planted heel: the ankle stands still from heel
@@ -124,7 +128,9 @@ def footfall_strides(
         long = (runs[:, 1] - runs[:, 0]) >= min_contact
         runs, prints = runs[long], prints[long]
         if len(runs):
-            gap = np.maximum(np.maximum(runs[None, :, 0] - b[:, None], b[:, None] - (runs[None, :, 1] - 1)), 0)  # (B, K)
+            gap = np.maximum(
+                np.maximum(runs[None, :, 0] - b[:, None], b[:, None] - (runs[None, :, 1] - 1)), 0
+            )  # (B, K)
             at[:, f] = prints[np.argmin(gap, axis=1)]
     disp = np.linalg.norm(at[1:] - at[:-1], axis=-1)  # (P, F)
     return disp.max(axis=1)

@@ -47,7 +47,11 @@ from sklearn.decomposition import PCA
 
 # box constraints of the log-parameters (GPy constrains them positive); mu and Z are free
 _LOG_BOUNDS: dict[str, tuple[float, float]] = {
-    "log_S": (-12.0, 5.0), "log_sf2": (-8.0, 8.0), "log_ell": (-8.0, 12.0), "log_noise": (-12.0, 4.0)}
+    "log_S": (-12.0, 5.0),
+    "log_sf2": (-8.0, 8.0),
+    "log_ell": (-8.0, 12.0),
+    "log_noise": (-12.0, 4.0),
+}
 
 # the last data matrix's full PCA: (key, mean, all components, all explained-variance ratios)
 _PCA_CACHE: list[tuple[tuple, np.ndarray, np.ndarray, np.ndarray]] = []
@@ -253,7 +257,7 @@ class BayesianGPLVM:
         def unpack(theta):
             out, i = {}, 0
             for k, s, n in zip(names, shapes, sizes):
-                out[k] = theta[i:i + n].reshape(s)
+                out[k] = theta[i : i + n].reshape(s)
                 i += n
             return out
 
@@ -301,6 +305,7 @@ class BayesianGPLVM:
         if not hasattr(self, "latent_mean_"):
             raise RuntimeError("BayesianGPLVM is not fitted yet: call fit first")
         X = torch.as_tensor(np.atleast_2d(latent), dtype=torch.float64)
-        K = rbf_ard(X, torch.as_tensor(self.inducing_), torch.tensor(self.signal_variance_),
-                    torch.as_tensor(self.lengthscales_)).numpy()
+        K = rbf_ard(
+            X, torch.as_tensor(self.inducing_), torch.tensor(self.signal_variance_), torch.as_tensor(self.lengthscales_)
+        ).numpy()
         return self.y_mean_ + self.y_scale_ * (K @ self._predict_weights)

@@ -17,12 +17,30 @@ _EXPORTS = {
     ".animation": ["animate_motions", "render_frames", "write_gif"],
     ".page": ["gif_page"],
     ".overview": ["dataset_overview", "overview_clips"],
-    ".stick": ["KeyFrameRow", "draw_pose", "evenly_spaced_frames", "key_frame_grid", "plot_key_frames", "project",
-               "view_axis"],
+    ".stick": [
+        "KeyFrameRow",
+        "draw_pose",
+        "evenly_spaced_frames",
+        "key_frame_grid",
+        "plot_key_frames",
+        "project",
+        "view_axis",
+    ],
 }
 __getattr__, __dir__ = lazy_exports(__name__, _EXPORTS)
 
 __all__ = [
-    "KeyFrameRow", "animate_motions", "dataset_overview", "gif_page", "draw_pose", "evenly_spaced_frames",
-    "key_frame_grid", "overview_clips", "plot_key_frames", "project", "render_frames", "view_axis", "write_gif",
+    "KeyFrameRow",
+    "animate_motions",
+    "dataset_overview",
+    "gif_page",
+    "draw_pose",
+    "evenly_spaced_frames",
+    "key_frame_grid",
+    "overview_clips",
+    "plot_key_frames",
+    "project",
+    "render_frames",
+    "view_axis",
+    "write_gif",
 ]

@@ -24,7 +24,7 @@ from PIL import Image
 
 from ..core.motion import Motion
 from ..io.atomic import atomic_write
-from .stick import check_positions, bone_segments, draw_pose, project, view_axis
+from .stick import bone_segments, check_positions, draw_pose, project, view_axis
 
 MAX_GIF_BYTES = 3_000_000
 
@@ -133,10 +133,12 @@ def quantize_frames(frames: np.ndarray, colors: int = 32) -> np.ndarray:
     """
     sample = np.concatenate(frames[:: max(1, len(frames) // 10)], axis=0)
     palette = Image.fromarray(sample).quantize(colors=colors, method=Image.Quantize.MEDIANCUT)
-    return np.stack([
-        np.asarray(Image.fromarray(f).quantize(palette=palette, dither=Image.Dither.NONE).convert("RGB"))
-        for f in frames
-    ])
+    return np.stack(
+        [
+            np.asarray(Image.fromarray(f).quantize(palette=palette, dither=Image.Dither.NONE).convert("RGB"))
+            for f in frames
+        ]
+    )
 
 
 def write_gif(path: str | Path, frames: np.ndarray, fps: float = 20.0, max_bytes: int = MAX_GIF_BYTES) -> int:

@@ -35,9 +35,7 @@ def overview_clips(
         raise ValueError(f"metadata has no {behaviour_col!r} column (columns: {list(metadata.columns)})")
     meta = metadata.reset_index(drop=True)
     style = style_col if style_col in meta else None
-    behaviours = [
-        (f"{b}", _pick(group, style)) for b, group in meta.groupby(behaviour_col, sort=False)
-    ]
+    behaviours = [(f"{b}", _pick(group, style)) for b, group in meta.groupby(behaviour_col, sort=False)]
     styles: list[tuple[str, int]] = []
     if style is not None:
         walks = meta[meta[behaviour_col] == walk_behaviour]
@@ -63,8 +61,11 @@ def dataset_overview(
         meta = dataset.metadata.iloc[i]
         who = f" (subject {meta['subject']})" if "subject" in meta and pd.notna(meta["subject"]) else ""
         return KeyFrameRow(
-            label=f"{label}{who}", positions=m.positions(), parents=m.skeleton.parents,
-            names=m.skeleton.names, fps=m.fps,
+            label=f"{label}{who}",
+            positions=m.positions(),
+            parents=m.skeleton.parents,
+            names=m.skeleton.names,
+            fps=m.fps,
         )
 
     blocks = [[row(lab, i) for lab, i in behaviours]]

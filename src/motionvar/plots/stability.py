@@ -12,8 +12,14 @@ from matplotlib.lines import Line2D
 from ..report.stability import seed_names
 from ..report.summary import VERDICT_COLOURS
 
-_EDGE = {"reproduced": "tab:green", "partial": "tab:orange", "not reproduced": "tab:red",
-         "not testable": "0.4", "not applicable": "0.6", "missing": "k"}
+_EDGE = {
+    "reproduced": "tab:green",
+    "partial": "tab:orange",
+    "not reproduced": "tab:red",
+    "not testable": "0.4",
+    "not applicable": "0.6",
+    "missing": "k",
+}
 
 
 def stability_figure(table: pd.DataFrame) -> Figure:
@@ -29,8 +35,15 @@ def stability_figure(table: pd.DataFrame) -> Figure:
         vals = np.array([r[f"value_{s}"] for s in seeds], dtype=float)
         verdicts = [r[f"verdict_{s}"] for s in seeds]
         jitter = (np.arange(len(vals)) - (len(vals) - 1) / 2) * 0.09  # seeds with equal values stay visible
-        ax.scatter(vals, jitter, s=28, c=[VERDICT_COLOURS.get(v, "#ddd") for v in verdicts],
-                   edgecolors=[_EDGE.get(v, "k") for v in verdicts], linewidths=1.0, zorder=3)
+        ax.scatter(
+            vals,
+            jitter,
+            s=28,
+            c=[VERDICT_COLOURS.get(v, "#ddd") for v in verdicts],
+            edgecolors=[_EDGE.get(v, "k") for v in verdicts],
+            linewidths=1.0,
+            zorder=3,
+        )
         if np.isfinite(r["value_ci_low"]):
             ax.plot([r["value_ci_low"], r["value_ci_high"]], [0.45, 0.45], color="0.3", lw=2)
         ax.plot([r["value_mean"]], [0.45], marker="|", color="0.1", ms=8)
@@ -46,20 +59,36 @@ def stability_figure(table: pd.DataFrame) -> Figure:
         for side in ("top", "right", "left"):
             ax.spines[side].set_visible(False)
         mark = "" if r["stable"] else "  (not stable)"
-        ax.text(-0.01, 0.5, f"{r['claim_id']}{mark}", transform=ax.transAxes, ha="right", va="center",
-                fontsize=6.5, color="k" if r["stable"] else "tab:red")
+        ax.text(
+            -0.01,
+            0.5,
+            f"{r['claim_id']}{mark}",
+            transform=ax.transAxes,
+            ha="right",
+            va="center",
+            fontsize=6.5,
+            color="k" if r["stable"] else "tab:red",
+        )
         unit = r["unit"] if isinstance(r["unit"], str) else ""  # a CSV read back gives NaN for ""
         ax.text(1.01, 0.5, unit, transform=ax.transAxes, ha="left", va="center", fontsize=6)
     if rows.empty:
         axes[0, 0].set_axis_off()
         axes[0, 0].text(0.5, 0.5, "no claim carries a value", ha="center", va="center")
-    handles = [Line2D([], [], marker="o", ls="", color=VERDICT_COLOURS.get(v, "#ddd"), markeredgecolor=_EDGE[v],
-                      label=v) for v in ("reproduced", "partial", "not reproduced", "not testable")]
-    handles += [Line2D([], [], color="tab:red", ls="--", label="bound"),
-                Line2D([], [], color="0.3", lw=2, label="mean, 95 % interval")]
+    handles = [
+        Line2D([], [], marker="o", ls="", color=VERDICT_COLOURS.get(v, "#ddd"), markeredgecolor=_EDGE[v], label=v)
+        for v in ("reproduced", "partial", "not reproduced", "not testable")
+    ]
+    handles += [
+        Line2D([], [], color="tab:red", ls="--", label="bound"),
+        Line2D([], [], color="0.3", lw=2, label="mean, 95 % interval"),
+    ]
     fig.legend(handles=handles, loc="upper center", ncol=6, fontsize=7, frameon=False, bbox_to_anchor=(0.5, 1.0))
-    fig.suptitle(f"Claim values across {len(seeds)} seeds ({len(rows)} of {len(table)} claims carry a value)",
-                 fontsize=9, y=1.0 - 0.35 / (0.42 * n + 1.2))
-    fig.subplots_adjust(left=0.36, right=0.95, top=1.0 - 0.75 / (0.42 * n + 1.2), bottom=0.4 / (0.42 * n + 1.2),
-                        hspace=0.9)
+    fig.suptitle(
+        f"Claim values across {len(seeds)} seeds ({len(rows)} of {len(table)} claims carry a value)",
+        fontsize=9,
+        y=1.0 - 0.35 / (0.42 * n + 1.2),
+    )
+    fig.subplots_adjust(
+        left=0.36, right=0.95, top=1.0 - 0.75 / (0.42 * n + 1.2), bottom=0.4 / (0.42 * n + 1.2), hspace=0.9
+    )
     return fig

@@ -32,6 +32,7 @@ from matplotlib.figure import Figure
 SIDE_COLOURS = {"left": "#1f77b4", "right": "#d62728", "centre": "#333333"}
 """Bone colours by body side: left blue, right red, spine and head dark grey."""
 
+
 def joint_sides(names: Sequence[str] | None, n_joints: int) -> list[str]:
     """'left', 'right' or 'centre' per joint, from its name ("LeftArm", "LThumb",
     "lShldr", "l_hip", "Hand.R", "upperarm_r"...); all 'centre' when ``names`` is None."""
@@ -127,8 +128,12 @@ def draw_pose(
     """Draw one projected pose (J, 2) as bones coloured by side; returns the collection
     (update it with ``collection.set_segments(bone_segments(new_xy, parents))``)."""
     lines = LineCollection(
-        bone_segments(np.asarray(xy), parents), colors=bone_colours(np.asarray(parents), names),
-        linewidths=linewidth, alpha=alpha, capstyle="round", joinstyle="round",
+        bone_segments(np.asarray(xy), parents),
+        colors=bone_colours(np.asarray(parents), names),
+        linewidths=linewidth,
+        alpha=alpha,
+        capstyle="round",
+        joinstyle="round",
     )
     ax.add_collection(lines)
     return lines
@@ -202,7 +207,9 @@ def plot_key_frames(
     ax.set_aspect("equal")
     # half a spacing either side, wider where a pose reaches further (a long stride)
     pad = 0.02 * spacing
-    ax.set_xlim(min(-0.5 * spacing, poses[..., 0].min() - pad), max((len(frames) - 0.5) * spacing, poses[..., 0].max() + pad))
+    ax.set_xlim(
+        min(-0.5 * spacing, poses[..., 0].min() - pad), max((len(frames) - 0.5) * spacing, poses[..., 0].max() + pad)
+    )
     if title:
         ax.set_title(title, fontsize=10)
 
@@ -260,7 +267,9 @@ def key_frame_grid(
     plot_h = row_height_in - 0.55  # title above, tick labels below
     plot_w = plot_h * (xlim[1] - xlim[0]) / (ylim[1] - ylim[0])
     fig, axes = plt.subplots(
-        n_rows, columns, squeeze=False,
+        n_rows,
+        columns,
+        squeeze=False,
         figsize=(columns * (plot_w + 0.75), n_rows * row_height_in + (0.4 if title else 0.1)),
     )
     drawn_axes = []
@@ -271,7 +280,13 @@ def key_frame_grid(
             continue
         frames = row.frames if row.frames is not None else evenly_spaced_frames(len(row.positions), n_keys)
         plot_key_frames(
-            ax, row.positions, row.parents, frames, names=row.names, fps=row.fps, spacing=spacing,
+            ax,
+            row.positions,
+            row.parents,
+            frames,
+            names=row.names,
+            fps=row.fps,
+            spacing=spacing,
             azimuth_deg=azimuth_deg,
         )
         ax.set_title(row.label, fontsize=9, loc="left")

@@ -82,8 +82,10 @@ def start_facing(
     if any(m.translations is not None for m in motions):
         nan = np.full(rot.shape[2:3] + (3,), np.nan)
         tr = np.stack(
-            [np.broadcast_to(nan, (n_frames, *nan.shape)) if m.translations is None else m.translations[i]
-             for m, i in zip(motions, idx)]
+            [
+                np.broadcast_to(nan, (n_frames, *nan.shape)) if m.translations is None else m.translations[i]
+                for m, i in zip(motions, idx)
+            ]
         )
     pos = fk(rot, root, offsets, sk.parents, tr)
     lh, rh = joint_map.indices(sk, ["left_hip", "right_hip"])
@@ -91,7 +93,9 @@ def start_facing(
 
 
 def clip_directions(
-    motions: Sequence[Motion], joint_map: JointMap, options: PrepOptions | None = None,
+    motions: Sequence[Motion],
+    joint_map: JointMap,
+    options: PrepOptions | None = None,
     clip_ids: Sequence[str] | None = None,
 ) -> np.ndarray:
     """(N, 3) direction of each clip per ``options.heading``: "hips" (start facing) or
@@ -126,7 +130,9 @@ def transform_on_floor(motions: Sequence[Motion], yaw: np.ndarray, origin: np.nd
 
 
 def align_motions(
-    motions: Sequence[Motion], joint_map: JointMap, options: PrepOptions | None = None,
+    motions: Sequence[Motion],
+    joint_map: JointMap,
+    options: PrepOptions | None = None,
     clip_ids: Sequence[str] | None = None,
 ) -> list[Motion]:
     """Aligned copies of ``motions`` (Ma 2010 Eq. 5-6): each starts with its root above

@@ -74,8 +74,19 @@ def too_short(segments: list[Segment], fps: float, min_seconds: float) -> np.nda
 
 
 def _dropped_rows(cid: str, behaviour: str, segments: list[Segment], fps: float, reason: str) -> list[dict]:
-    return [{"clip_id": cid, "behaviour": behaviour, "primitive": s.name, "start_frame": s.start, "stop_frame": s.stop,
-             "n_frames": s.stop - s.start, "duration_s": (s.stop - s.start) / fps, "reason": reason} for s in segments]
+    return [
+        {
+            "clip_id": cid,
+            "behaviour": behaviour,
+            "primitive": s.name,
+            "start_frame": s.start,
+            "stop_frame": s.stop,
+            "n_frames": s.stop - s.start,
+            "duration_s": (s.stop - s.start) / fps,
+            "reason": reason,
+        }
+        for s in segments
+    ]
 
 
 def _nothing_left(label: str, n_clips: int, dropped: pd.DataFrame, min_seconds: float) -> str:
@@ -84,17 +95,22 @@ def _nothing_left(label: str, n_clips: int, dropped: pd.DataFrame, min_seconds: 
     n_none = int((dropped["reason"] == NONE_FOUND).sum())
     n_short_clips = short["clip_id"].nunique()
     if n_short_clips >= n_none:
-        reason = (f"most common reason: in {n_short_clips} clips every primitive was shorter than "
-                  f"prep.min_primitive_s = {min_seconds:g} s (median {short['duration_s'].median():.3g} s); "
-                  "check the frame rate and the contact thresholds, or lower prep.min_primitive_s")
+        reason = (
+            f"most common reason: in {n_short_clips} clips every primitive was shorter than "
+            f"prep.min_primitive_s = {min_seconds:g} s (median {short['duration_s'].median():.3g} s); "
+            "check the frame rate and the contact thresholds, or lower prep.min_primitive_s"
+        )
     else:
         kinds = dropped.loc[dropped["reason"] == NONE_FOUND, "behaviour"].value_counts()
         top = str(kinds.index[0])
         need = f"; a {top} primitive needs {SEGMENT_NEEDS[top]}" if top in SEGMENT_NEEDS else ""
-        reason = (f"most common reason: no primitive found in {n_none} clips ("
-                  + ", ".join(f"{b}: {k}" for b, k in kinds.items()) + f"){need}. Clips that are each one "
-                  "primitive already need a 'segments' column ('name:start:stop') and "
-                  "prep.use_ground_truth_segments: true")
+        reason = (
+            f"most common reason: no primitive found in {n_none} clips ("
+            + ", ".join(f"{b}: {k}" for b, k in kinds.items())
+            + f"){need}. Clips that are each one "
+            "primitive already need a 'segments' column ('name:start:stop') and "
+            "prep.use_ground_truth_segments: true"
+        )
     return f"preprocess_dataset: no primitive left in {label} ({n_clips} clips); {reason}"
 
 
@@ -132,14 +148,22 @@ def preprocess_dataset(
         if not segs:
             dropped += _dropped_rows(cid, behaviour, [Segment("", 0, motion.n_frames)], motion.fps, NONE_FOUND)
         if not kept:
-            why = (f"no {behaviour} primitive found" if not segs
-                   else f"all {len(segs)} {behaviour} primitives shorter than {opt.min_primitive_s:g} s")
+            why = (
+                f"no {behaviour} primitive found"
+                if not segs
+                else f"all {len(segs)} {behaviour} primitives shorter than {opt.min_primitive_s:g} s"
+            )
             empty.append(f"clip {cid}: {why}")
         for k, s in enumerate(kept):
             pieces.append(motion.slice(s.start, s.stop))
             meta = row.to_dict()
-            meta.update(clip_id=f"{cid}_{k:02d}", source_clip=row["clip_id"], primitive=s.name,
-                        start_frame=s.start, stop_frame=s.stop)
+            meta.update(
+                clip_id=f"{cid}_{k:02d}",
+                source_clip=row["clip_id"],
+                primitive=s.name,
+                start_frame=s.start,
+                stop_frame=s.stop,
+            )
             if "n_frames" in meta:
                 meta["n_frames"] = s.stop - s.start
             rows.append(meta)
@@ -147,9 +171,11 @@ def preprocess_dataset(
     if not pieces:
         raise ValueError(_nothing_left(label, len(dataset), dropped_table, opt.min_primitive_s))
     if empty and not opt.skip_unsegmentable:
-        raise ValueError(f"preprocess_dataset: {len(empty)} of {len(dataset)} clips of {label} have no primitive "
-                         f"left ({'; '.join(empty[:5])}{'; ...' if len(empty) > 5 else ''}); set "
-                         "prep.skip_unsegmentable: true to drop such clips")
+        raise ValueError(
+            f"preprocess_dataset: {len(empty)} of {len(dataset)} clips of {label} have no primitive "
+            f"left ({'; '.join(empty[:5])}{'; ...' if len(empty) > 5 else ''}); set "
+            "prep.skip_unsegmentable: true to drop such clips"
+        )
     metadata = pd.DataFrame(rows).reset_index(drop=True)
     motions = align_motions(pieces, joint_map, opt, clip_ids=metadata["clip_id"].tolist())
     return Preprocessed(motions, metadata, dropped_table)
@@ -162,18 +188,26 @@ def drop_summary(result: Preprocessed, n_clips: int, name: str | None = None, mi
     meta, dropped = result.metadata, result.dropped
     label = f"dataset {name}" if name else "the dataset"
     kept = meta["primitive"].value_counts().sort_index()
-    text = (f"{label}: {n_clips} clips -> {len(meta)} primitives from {meta['source_clip'].nunique()} clips ("
-            + ", ".join(f"{p} {k}" for p, k in kept.items()) + ")")
+    text = (
+        f"{label}: {n_clips} clips -> {len(meta)} primitives from {meta['source_clip'].nunique()} clips ("
+        + ", ".join(f"{p} {k}" for p, k in kept.items())
+        + ")"
+    )
     short = dropped[dropped["reason"] == TOO_SHORT]
     if len(short):
         per = short["primitive"].value_counts().sort_index()
         limit = "the minimum duration" if min_seconds is None else f"{min_seconds:g} s"
-        text += (f"; dropped {len(short)} primitives shorter than {limit} ("
-                 + ", ".join(f"{p} {k}" for p, k in per.items()) + ")")
+        text += (
+            f"; dropped {len(short)} primitives shorter than {limit} ("
+            + ", ".join(f"{p} {k}" for p, k in per.items())
+            + ")"
+        )
     gone = sorted(set(dropped["clip_id"]) - set(meta["source_clip"].astype(str)))
     if gone:
         beh = dropped.drop_duplicates("clip_id").set_index("clip_id").loc[gone, "behaviour"].value_counts().sort_index()
         n_none = int((dropped["reason"] == NONE_FOUND).sum())
-        text += (f"; dropped {len(gone)} clips with no primitive left ({n_none} with none found, "
-                 f"{len(gone) - n_none} with all too short; " + ", ".join(f"{b} {k}" for b, k in beh.items()) + ")")
+        text += (
+            f"; dropped {len(gone)} clips with no primitive left ({n_none} with none found, "
+            f"{len(gone) - n_none} with all too short; " + ", ".join(f"{b} {k}" for b, k in beh.items()) + ")"
+        )
     return text

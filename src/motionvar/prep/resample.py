@@ -30,11 +30,15 @@ def sample_motion(motion: Motion, frames: np.ndarray, fps: float | None = None, 
     if not (np.isfinite(motion.root_pos).all() and np.isfinite(motion.rotations).all()):
         raise ValueError(f"sample_motion: {clip_name(clip_id)} has NaN or inf root positions or rotations")
     if t.ndim != 1 or len(t) == 0:
-        raise ValueError(f"sample_motion: frames must be a non-empty 1-D array; got shape {t.shape}"
-                         + ("" if clip_id is None else f" (clip {clip_id})"))
+        raise ValueError(
+            f"sample_motion: frames must be a non-empty 1-D array; got shape {t.shape}"
+            + ("" if clip_id is None else f" (clip {clip_id})")
+        )
     if not np.all(np.isfinite(t)) or t.min() < -1e-9 or t.max() > T - 1 + 1e-9:
-        raise ValueError(f"sample_motion: frames must lie in [0, {T - 1}] ({clip_name(clip_id)} has {T} frames); "
-                         f"got [{np.nanmin(t)}, {np.nanmax(t)}]")
+        raise ValueError(
+            f"sample_motion: frames must lie in [0, {T - 1}] ({clip_name(clip_id)} has {T} frames); "
+            f"got [{np.nanmin(t)}, {np.nanmax(t)}]"
+        )
     t = np.clip(t, 0.0, T - 1)
     i0 = np.minimum(np.floor(t).astype(np.int64), max(T - 2, 0))
     i1 = np.minimum(i0 + 1, T - 1)

@@ -44,24 +44,31 @@ def _features(x: Motion | np.ndarray, what: str, clip_id: str | None = None) -> 
 
 
 def dtw_path(
-    source: Motion | np.ndarray, reference: Motion | np.ndarray, window: int | None = None,
-    clip_id: str | None = None, reference_id: str | None = None,
+    source: Motion | np.ndarray,
+    reference: Motion | np.ndarray,
+    window: int | None = None,
+    clip_id: str | None = None,
+    reference_id: str | None = None,
 ) -> np.ndarray:
     """(L, 2) DTW path of (source frame, reference frame) pairs, from (0, 0) to the
     last frames of both (dtaidistance, C implementation, multivariate Euclidean);
     ``clip_id`` and ``reference_id`` name the two clips in errors."""
     src, ref = _features(source, "source", clip_id), _features(reference, "reference", reference_id)
     if src.shape[1] != ref.shape[1]:
-        raise ValueError(f"dtw_warp: source{'' if clip_id is None else ' clip ' + str(clip_id)} has {src.shape[1]} "
-                         f"features per frame, reference{'' if reference_id is None else ' clip ' + str(reference_id)} "
-                         f"{ref.shape[1]}")
+        raise ValueError(
+            f"dtw_warp: source{'' if clip_id is None else ' clip ' + str(clip_id)} has {src.shape[1]} "
+            f"features per frame, reference{'' if reference_id is None else ' clip ' + str(reference_id)} "
+            f"{ref.shape[1]}"
+        )
     kwargs = {}
     if window is not None:
         need = abs(len(src) - len(ref)) + 1
         if not (isinstance(window, (int, np.integer)) and window >= need):
             which = "" if clip_id is None else f", clip {clip_id}"
-            raise ValueError(f"dtw_warp: window must be an integer >= {need} for these lengths "
-                             f"({len(src)} and {len(ref)} frames{which}); got {window!r}")
+            raise ValueError(
+                f"dtw_warp: window must be an integer >= {need} for these lengths "
+                f"({len(src)} and {len(ref)} frames{which}); got {window!r}"
+            )
         kwargs["window"] = int(window)
     if src.shape[1] == 1:
         path = dtw.warping_path_fast(src[:, 0].copy(), ref[:, 0].copy(), **kwargs)
@@ -71,8 +78,11 @@ def dtw_path(
 
 
 def dtw_warp(
-    source: Motion | np.ndarray, reference: Motion | np.ndarray, window: int | None = None,
-    clip_id: str | None = None, reference_id: str | None = None,
+    source: Motion | np.ndarray,
+    reference: Motion | np.ndarray,
+    window: int | None = None,
+    clip_id: str | None = None,
+    reference_id: str | None = None,
 ) -> np.ndarray:
     """Warping function (n_ref,) from canonical (reference) frames to source frames.
 

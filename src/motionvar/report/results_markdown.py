@@ -29,19 +29,29 @@ def paper_results(claims: pd.DataFrame, paper: str) -> str:
     rows = claims[claims["paper"] == paper].sort_values("claim_id", kind="stable")
     if rows.empty:
         return "*(no claims)*\n"
-    lines = [f"{len(rows)} claims: {verdict_counts(rows['verdict'])}.", "",
-             "| source | claim | verdict | measured |", "|---|---|---|---|"]
-    lines += [f"| {_cell(r.source)} | {_cell(r.statement)} | {r.verdict} | {_cell(r.measured)} |"
-              for r in rows.itertuples(index=False)]
+    lines = [
+        f"{len(rows)} claims: {verdict_counts(rows['verdict'])}.",
+        "",
+        "| source | claim | verdict | measured |",
+        "|---|---|---|---|",
+    ]
+    lines += [
+        f"| {_cell(r.source)} | {_cell(r.statement)} | {r.verdict} | {_cell(r.measured)} |"
+        for r in rows.itertuples(index=False)
+    ]
     return "\n".join(lines) + "\n"
 
 
-def results_markdown(main: pd.DataFrame, main_name: str, others: Mapping[str, pd.DataFrame] | None = None,
-                     run_note: str = "") -> str:
+def results_markdown(
+    main: pd.DataFrame, main_name: str, others: Mapping[str, pd.DataFrame] | None = None, run_note: str = ""
+) -> str:
     """The Results section body: ``main`` (the full synthetic run) per paper, then one
     line per dataset of ``others`` (name -> claims)."""
-    parts = [f"Claims of the last run on `{main_name}`{(' (' + run_note + ')') if run_note else ''}: "
-             f"{verdict_counts(main['verdict'])}. The report holds the figures, tables and notes.", ""]
+    parts = [
+        f"Claims of the last run on `{main_name}`{(' (' + run_note + ')') if run_note else ''}: "
+        f"{verdict_counts(main['verdict'])}. The report holds the figures, tables and notes.",
+        "",
+    ]
     for paper, title in PAPER_TITLES.items():
         parts += [f"### {title}", "", paper_results(main, paper)]
     if others:
@@ -49,7 +59,8 @@ def results_markdown(main: pd.DataFrame, main_name: str, others: Mapping[str, pd
         for name, table in others.items():
             na = table[table["verdict"] == "not applicable"]
             skipped = ", ".join(sorted(na["source"] + " (" + na["paper"] + ")")) if len(na) else "none"
-            parts.append(f"- `{name}`: {len(table)} claims: {verdict_counts(table['verdict'])}; not applicable: "
-                         f"{skipped}.")
+            parts.append(
+                f"- `{name}`: {len(table)} claims: {verdict_counts(table['verdict'])}; not applicable: {skipped}."
+            )
         parts.append("")
     return "\n".join(parts)

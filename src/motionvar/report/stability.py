@@ -23,8 +23,23 @@ from scipy import stats
 MISSING = "missing"
 STABLE_SHARE = 0.8  # 4 of 5 seeds
 #: columns of the stability table before the per-seed verdict and value columns
-STABILITY_COLUMNS = ("claim_id", "paper", "source", "statement", "unit", "direction", "bound", "verdict",
-                     "n_agree", "n_seeds", "stable", "value_mean", "value_sd", "value_ci_low", "value_ci_high")
+STABILITY_COLUMNS = (
+    "claim_id",
+    "paper",
+    "source",
+    "statement",
+    "unit",
+    "direction",
+    "bound",
+    "verdict",
+    "n_agree",
+    "n_seeds",
+    "stable",
+    "value_mean",
+    "value_sd",
+    "value_ci_low",
+    "value_ci_high",
+)
 
 
 def _numbers(column: pd.Series) -> pd.Series:
@@ -68,18 +83,29 @@ def claims_stability(tables: Mapping[str, pd.DataFrame], stable_share: float = S
         present = [indexed[s].loc[cid] for s in seeds if cid in indexed[s].index]
         first = present[0]
         verdicts = [indexed[s].loc[cid, "verdict"] if cid in indexed[s].index else MISSING for s in seeds]
-        values = np.array([indexed[s].loc[cid, "value"] if cid in indexed[s].index else np.nan for s in seeds],
-                          dtype=float)
+        values = np.array(
+            [indexed[s].loc[cid, "value"] if cid in indexed[s].index else np.nan for s in seeds], dtype=float
+        )
         counts = pd.Series(verdicts).value_counts(sort=False)
         top = max(counts.index, key=lambda v: (counts[v], -verdicts.index(v)))
         mean, sd, low, high = _mean_interval(values)
         bounds = [float(r["bound"]) for r in present if np.isfinite(r["bound"])]
         row = {
-            "claim_id": cid, "paper": first["paper"], "source": first["source"], "statement": first["statement"],
-            "unit": first.get("unit", ""), "direction": first.get("direction", ""),
-            "bound": bounds[0] if bounds else np.nan, "verdict": top, "n_agree": int(counts[top]),
-            "n_seeds": len(seeds), "stable": bool(counts[top] >= stable_share * len(seeds) - 1e-9),
-            "value_mean": mean, "value_sd": sd, "value_ci_low": low, "value_ci_high": high,
+            "claim_id": cid,
+            "paper": first["paper"],
+            "source": first["source"],
+            "statement": first["statement"],
+            "unit": first.get("unit", ""),
+            "direction": first.get("direction", ""),
+            "bound": bounds[0] if bounds else np.nan,
+            "verdict": top,
+            "n_agree": int(counts[top]),
+            "n_seeds": len(seeds),
+            "stable": bool(counts[top] >= stable_share * len(seeds) - 1e-9),
+            "value_mean": mean,
+            "value_sd": sd,
+            "value_ci_low": low,
+            "value_ci_high": high,
         }
         row.update({f"verdict_{s}": v for s, v in zip(seeds, verdicts)})
         row.update({f"value_{s}": v for s, v in zip(seeds, values)})
@@ -89,7 +115,7 @@ def claims_stability(tables: Mapping[str, pd.DataFrame], stable_share: float = S
 
 def seed_names(table: pd.DataFrame) -> list[str]:
     """The seeds of a :func:`claims_stability` table, in column order."""
-    return [c[len("verdict_"):] for c in table.columns if c.startswith("verdict_")]
+    return [c[len("verdict_") :] for c in table.columns if c.startswith("verdict_")]
 
 
 def stability_html(table: pd.DataFrame, title: str = "Verdicts across seeds") -> str:
@@ -99,7 +125,9 @@ def stability_html(table: pd.DataFrame, title: str = "Verdicts across seeds") ->
     seeds = seed_names(table)
     n_unstable = int((~table["stable"].astype(bool)).sum())
     parts = [
-        "<!DOCTYPE html>", '<html lang="en"><head><meta charset="utf-8">', f"<title>{esc(title)}</title>",
+        "<!DOCTYPE html>",
+        '<html lang="en"><head><meta charset="utf-8">',
+        f"<title>{esc(title)}</title>",
         "<style>body{font-family:-apple-system,Helvetica,Arial,sans-serif;margin:1.5em;color:#222}"
         "table{border-collapse:collapse;font-size:0.85em}th,td{border:1px solid #ccc;padding:0.3em 0.45em;"
         "vertical-align:top}th{background:#f0f0f0}.no{background:#f6d5cf}.yes{background:#d5ecd4}</style>",
@@ -109,7 +137,8 @@ def stability_html(table: pd.DataFrame, title: str = "Verdicts across seeds") ->
         f"Not stable: {n_unstable}. Value: the number the verdict is computed from; interval: 95 % of the mean "
         "(Student t over the seeds).</p>",
         "<table><tr><th>claim</th><th>stable</th><th>verdict (agree)</th><th>value mean ± SD [95 %]</th><th>bound</th>"
-        + "".join(f"<th>{esc(s)}</th>" for s in seeds) + "</tr>",
+        + "".join(f"<th>{esc(s)}</th>" for s in seeds)
+        + "</tr>",
     ]
     order = table.assign(_s=table["stable"].astype(bool)).sort_values(["_s", "claim_id"], kind="stable")
     for r in order.to_dict("records"):
@@ -119,16 +148,22 @@ def stability_html(table: pd.DataFrame, title: str = "Verdicts across seeds") ->
         elif not np.isfinite(r["value_sd"]):  # one seed measured it
             value = f"{r['value_mean']:.3g} {unit} (one seed)"
         else:
-            value = (f"{r['value_mean']:.3g} ± {r['value_sd']:.2g} [{r['value_ci_low']:.3g}, {r['value_ci_high']:.3g}]"
-                     f" {unit}")
+            value = (
+                f"{r['value_mean']:.3g} ± {r['value_sd']:.2g} [{r['value_ci_low']:.3g}, {r['value_ci_high']:.3g}]"
+                f" {unit}"
+            )
         direction = r["direction"] if isinstance(r["direction"], str) else ""
         bound = "-" if not np.isfinite(r["bound"]) else f"{esc(direction)} {r['bound']:.3g}"
         cells = "".join(
             f"<td>{esc(str(r[f'verdict_{s}']))}"
-            + (f"<br>{r[f'value_{s}']:.3g}" if np.isfinite(r[f"value_{s}"]) else "") + "</td>" for s in seeds)
+            + (f"<br>{r[f'value_{s}']:.3g}" if np.isfinite(r[f"value_{s}"]) else "")
+            + "</td>"
+            for s in seeds
+        )
         parts.append(
             f"<tr><td>{esc(r['source'])}<br><small>{esc(r['claim_id'])}</small></td>"
-            f"<td class=\"{'yes' if r['stable'] else 'no'}\">{'stable' if r['stable'] else 'not stable'}</td>"
-            f"<td>{esc(r['verdict'])} ({r['n_agree']}/{r['n_seeds']})</td><td>{value}</td><td>{bound}</td>{cells}</tr>")
+            f'<td class="{"yes" if r["stable"] else "no"}">{"stable" if r["stable"] else "not stable"}</td>'
+            f"<td>{esc(r['verdict'])} ({r['n_agree']}/{r['n_seeds']})</td><td>{value}</td><td>{bound}</td>{cells}</tr>"
+        )
     parts.append("</table></body></html>")
     return "\n".join(parts) + "\n"

@@ -13,8 +13,11 @@ import pandas as pd
 from ..claims import CHECKED_VERDICTS, CLAIM_COLUMNS, TEXT_COLUMNS, UNDECIDED_VERDICTS, VERDICTS
 
 VERDICT_COLOURS = {
-    "reproduced": "#c9ecd0", "partial": "#ffe8a8", "not reproduced": "#f6c6c6",
-    "not testable": "#d6e4f0", "not applicable": "#e4e4e4",
+    "reproduced": "#c9ecd0",
+    "partial": "#ffe8a8",
+    "not reproduced": "#f6c6c6",
+    "not testable": "#d6e4f0",
+    "not applicable": "#e4e4e4",
 }
 
 
@@ -27,7 +30,7 @@ def read_claims_table(path: str | Path) -> pd.DataFrame:
     except (pd.errors.ParserError, pd.errors.EmptyDataError, UnicodeDecodeError) as exc:
         raise ValueError(f"{path}: not a readable claims table ({exc})") from exc
     cols = list(table.columns)
-    if cols == list(CLAIM_COLUMNS[:len(TEXT_COLUMNS)]):  # written before claims carried value and bound
+    if cols == list(CLAIM_COLUMNS[: len(TEXT_COLUMNS)]):  # written before claims carried value and bound
         table = table.reindex(columns=list(CLAIM_COLUMNS), fill_value="")
     elif cols != list(CLAIM_COLUMNS):
         raise ValueError(f"{path}: columns {cols}, expected {list(CLAIM_COLUMNS)}")
@@ -56,6 +59,7 @@ p.none { color: #666; font-style: italic; }
 
 def _counts(verdicts: pd.Series) -> str:
     """Counts of the checked verdicts, then (apart) those not decided, when there are any."""
+
     def span(v: str) -> str:
         return f'<span style="background:{VERDICT_COLOURS[v]}">{int((verdicts == v).sum())} {v}</span>'
 
@@ -72,12 +76,16 @@ def _stability_text(stability: pd.DataFrame | None, claim_id: str) -> str:
         return '<br><span class="stab">not in the stability run</span>'
     r = rows.iloc[0]
     word = "stable" if bool(r["stable"]) else "NOT stable"
-    return (f'<br><span class="stab">{word} across seeds: {html.escape(str(r["verdict"]))} in '
-            f'{int(r["n_agree"])}/{int(r["n_seeds"])}</span>')
+    return (
+        f'<br><span class="stab">{word} across seeds: {html.escape(str(r["verdict"]))} in '
+        f"{int(r['n_agree'])}/{int(r['n_seeds'])}</span>"
+    )
 
 
 def claims_html(
-    table: pd.DataFrame, paper_titles: Mapping[str, str] | None = None, title: str = "Claims",
+    table: pd.DataFrame,
+    paper_titles: Mapping[str, str] | None = None,
+    title: str = "Claims",
     stability: pd.DataFrame | None = None,
 ) -> str:
     """An HTML page of ``table`` (columns :data:`motionvar.claims.CLAIM_COLUMNS`):
@@ -88,8 +96,10 @@ def claims_html(
     titles = dict(paper_titles or {})
     esc = html.escape
     parts = [
-        "<!DOCTYPE html>", '<html lang="en"><head><meta charset="utf-8">',
-        f"<title>{esc(title)}</title><style>{_STYLE}</style></head><body>", f"<h1>{esc(title)}</h1>",
+        "<!DOCTYPE html>",
+        '<html lang="en"><head><meta charset="utf-8">',
+        f"<title>{esc(title)}</title><style>{_STYLE}</style></head><body>",
+        f"<h1>{esc(title)}</h1>",
     ]
     if table.empty:
         parts.append('<p class="none">No claims yet: no evaluation is registered, or none wrote a claim.</p>')
@@ -97,10 +107,12 @@ def claims_html(
     papers = [p for p in titles if p in set(table["paper"])]
     papers += sorted(set(table["paper"]) - set(papers))
     if stability is not None:
-        parts.append('<p class="none">Each verdict also says whether the seeds of the stability run '
-                     "(results/stability/claims_stability.csv, config/seeds.yaml at its own, reduced sizes) agree "
-                     "on it: stable when at least 4 of 5 give the same verdict.</p>")
-    parts.append('<table><tr><th>paper</th><th>claims</th><th>verdicts</th></tr>')
+        parts.append(
+            '<p class="none">Each verdict also says whether the seeds of the stability run '
+            "(results/stability/claims_stability.csv, config/seeds.yaml at its own, reduced sizes) agree "
+            "on it: stable when at least 4 of 5 give the same verdict.</p>"
+        )
+    parts.append("<table><tr><th>paper</th><th>claims</th><th>verdicts</th></tr>")
     for paper in papers:
         rows = table[table["paper"] == paper]
         parts.append(

@@ -33,9 +33,23 @@ from .subjects import Subject, make_subjects
 
 BEHAVIOURS = ("walk", "run", "sidestep", "pick", "place", "idle")
 CONTRACT_COLUMNS = (
-    "clip_id", "subject", "behaviour", "style", "variant", "primitive", "stride_length_cm", "speed_cm_s",
-    "step_width_cm", "turn_deg", "target_x", "target_y", "target_z", "segments", "left_contacts",
-    "right_contacts", "idle_postures",
+    "clip_id",
+    "subject",
+    "behaviour",
+    "style",
+    "variant",
+    "primitive",
+    "stride_length_cm",
+    "speed_cm_s",
+    "step_width_cm",
+    "turn_deg",
+    "target_x",
+    "target_y",
+    "target_z",
+    "segments",
+    "left_contacts",
+    "right_contacts",
+    "idle_postures",
 )
 TURN_RANGE_DEG = (30.0, 90.0)  # total turn of a turning walk or run
 REACH_REGIONS = ("low", "forward", "high")
@@ -148,10 +162,15 @@ def _subject_clips(spec: SynthSpec, i: int) -> tuple[list[Motion], list[dict]]:
             k = counts[tag] = counts.get(tag, -1) + 1
             row = {c: float("nan") for c in CONTRACT_COLUMNS}
             row.update(truth)
-            row.update({
-                "clip_id": f"s{subject.subject_id}_{behaviour}_{tag}_{k:02d}", "subject": subject.subject_id,
-                "behaviour": behaviour, "style": style, "primitive": "",
-            })
+            row.update(
+                {
+                    "clip_id": f"s{subject.subject_id}_{behaviour}_{tag}_{k:02d}",
+                    "subject": subject.subject_id,
+                    "behaviour": behaviour,
+                    "style": style,
+                    "primitive": "",
+                }
+            )
             if behaviour != "idle":
                 row["idle_postures"] = float("nan")
             rows.append({**row, **traits})

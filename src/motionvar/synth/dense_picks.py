@@ -23,8 +23,9 @@ from .subjects import make_subjects
 PRIMITIVE = "pick_reach"
 
 
-def dense_pick_segments(n_subjects: int, seed: int, per_subject: int, grid_spacing_cm: float = 10.0,
-                        fps: float = 120.0) -> tuple[list[Motion], pd.DataFrame]:
+def dense_pick_segments(
+    n_subjects: int, seed: int, per_subject: int, grid_spacing_cm: float = 10.0, fps: float = 120.0
+) -> tuple[list[Motion], pd.DataFrame]:
     """The ``pick_reach`` segments of ``per_subject`` dense-grid picks per synthetic
     subject (the subjects of the synthetic dataset with this ``seed``), unaligned, and
     their metadata (one row per clip: ids, subject, primitive, target, frames of the
@@ -42,9 +43,20 @@ def dense_pick_segments(n_subjects: int, seed: int, per_subject: int, grid_spaci
                 raise ValueError(f"dense pick {i}/{k}: expected one {PRIMITIVE} segment in {truth['segments']!r}")
             _, start, stop = seg[0]
             pieces.append(m.slice(start, stop))
-            rows.append(dict(clip_id=f"s{subject.subject_id}_pick_dense_{k:02d}_00",
-                             source_clip=f"s{subject.subject_id}_pick_dense_{k:02d}", subject=subject.subject_id,
-                             behaviour="pick", style="neutral", variant="dense", primitive=PRIMITIVE,
-                             target_x=truth["target_x"], target_y=truth["target_y"], target_z=truth["target_z"],
-                             start_frame=start, stop_frame=stop))
+            rows.append(
+                dict(
+                    clip_id=f"s{subject.subject_id}_pick_dense_{k:02d}_00",
+                    source_clip=f"s{subject.subject_id}_pick_dense_{k:02d}",
+                    subject=subject.subject_id,
+                    behaviour="pick",
+                    style="neutral",
+                    variant="dense",
+                    primitive=PRIMITIVE,
+                    target_x=truth["target_x"],
+                    target_y=truth["target_y"],
+                    target_z=truth["target_z"],
+                    start_frame=start,
+                    stop_frame=stop,
+                )
+            )
     return pieces, pd.DataFrame(rows)

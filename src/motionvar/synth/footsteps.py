@@ -49,7 +49,9 @@ class BodyGeometry:
     @classmethod
     def from_skeleton(cls, sk: Skeleton) -> "BodyGeometry":
         off = sk.offsets
-        hip = np.stack([off[sk.index(h)] + off[sk.index(u)] for h, u in (("LHipJoint", "LeftUpLeg"), ("RHipJoint", "RightUpLeg"))])
+        hip = np.stack(
+            [off[sk.index(h)] + off[sk.index(u)] for h, u in (("LHipJoint", "LeftUpLeg"), ("RHipJoint", "RightUpLeg"))]
+        )
         toe = np.stack([off[sk.index(f"{s}ToeBase")] for s in ("Left", "Right")])
         thigh = np.array([np.linalg.norm(off[sk.index(f"{s}Leg")]) for s in ("Left", "Right")])
         shin = np.array([np.linalg.norm(off[sk.index(f"{s}Foot")]) for s in ("Left", "Right")])
@@ -272,11 +274,23 @@ def plan_walk(geo: BodyGeometry, p: WalkParams) -> Plan:
     def add(side: int, start: int, stop: int, s: float, lateral: float, heel: float, peak: float, roll: bool) -> None:
         ankle, yaw = _foot_on_path(path, s, lateral, geo, side)
         mid = _passes_over(progress, s, start) if roll else n
-        contacts.append(Contact(
-            side=SIDES[side], start=start, stop=stop, ankle=ankle, yaw=yaw, heel_deg=heel, flat_frames=flat, mid=mid,
-            roll=roll, roll_from=max(mid, stop - 1 - _frame(roll_len, fps)), push_off_deg=m.push_off_deg,
-            reach_from=start, knee_peak_deg=peak,
-        ))
+        contacts.append(
+            Contact(
+                side=SIDES[side],
+                start=start,
+                stop=stop,
+                ankle=ankle,
+                yaw=yaw,
+                heel_deg=heel,
+                flat_frames=flat,
+                mid=mid,
+                roll=roll,
+                roll_from=max(mid, stop - 1 - _frame(roll_len, fps)),
+                push_off_deg=m.push_off_deg,
+                reach_from=start,
+                knee_peak_deg=peak,
+            )
+        )
 
     lateral = lambda side: (0.5 if side == 0 else -0.5) * p.step_width_cm  # noqa: E731
     for side, k_lift in ((a, 0), (1 - a, 1)):  # standing feet, under the hip joints
@@ -296,12 +310,26 @@ def plan_walk(geo: BodyGeometry, p: WalkParams) -> Plan:
     segments.append(("walk_end", hs_f[K], n))
     truth = {
         "stride_length_cm": _stride_truth(contacts, list(range(4, K + 2))),
-        "speed_cm_s": v, "step_width_cm": p.step_width_cm, "turn_deg": p.turn_deg,
-        "cadence_steps_min": 120.0 / t_stride, "stance_fraction": m.stance_fraction, "n_steps": K,
+        "speed_cm_s": v,
+        "step_width_cm": p.step_width_cm,
+        "turn_deg": p.turn_deg,
+        "cadence_steps_min": 120.0 / t_stride,
+        "stance_fraction": m.stance_fraction,
+        "n_steps": K,
     }
     return Plan(
-        fps=fps, contacts=contacts, root_xz=root_xz, heading=heading, phase=phase_a - (0.0 if a == 0 else 0.5),
-        envelope=env, height_offset=height, ref=[0, 1], ref_knee_deg=6.0, segments=segments, crop=(0, n), truth=truth,
+        fps=fps,
+        contacts=contacts,
+        root_xz=root_xz,
+        heading=heading,
+        phase=phase_a - (0.0 if a == 0 else 0.5),
+        envelope=env,
+        height_offset=height,
+        ref=[0, 1],
+        ref_knee_deg=6.0,
+        segments=segments,
+        crop=(0, n),
+        truth=truth,
     )
 
 
@@ -315,7 +343,7 @@ def plan_run(geo: BodyGeometry, p: RunParams) -> Plan:
     ballistic flight between; the clip runs from mid-flight before the first complete
     stance primitive to mid-stance after the last."""
     m, fps = p.manner, p.fps
-    L, v, N = p.stride_length_cm / 2.0, p.speed_cm_s, p.n_steps
+    v, N = p.speed_cm_s, p.n_steps
     t_stride = p.stride_length_cm / v
     t_step, t_c = t_stride / 2.0, m.stance_fraction * t_stride
     t_fl = t_step - t_c
@@ -339,7 +367,9 @@ def plan_run(geo: BodyGeometry, p: RunParams) -> Plan:
     dip = v_up * t_c / np.pi
     tau = np.mod(t - t_land[0], t_step)
     height = np.where(
-        tau < t_c, -dip * np.sin(np.pi * np.clip(tau / t_c, 0, 1)), v_up * (tau - t_c) - 0.5 * GRAVITY_CM_S2 * (tau - t_c) ** 2
+        tau < t_c,
+        -dip * np.sin(np.pi * np.clip(tau / t_c, 0, 1)),
+        v_up * (tau - t_c) - 0.5 * GRAVITY_CM_S2 * (tau - t_c) ** 2,
     )
 
     flat = max(_frame(0.2 * t_c, fps), 1)
@@ -349,25 +379,50 @@ def plan_run(geo: BodyGeometry, p: RunParams) -> Plan:
         ankle, yaw = _foot_on_path(path, float(s), (0.5 if side == 0 else -0.5) * p.step_width_cm, geo, side)
         start, stop = _frame(tl, fps), min(_frame(tl + t_c, fps) + 1, n)
         mid = _passes_over(progress, float(s), start)
-        contacts.append(Contact(
-            side=SIDES[side], start=start, stop=stop, ankle=ankle, yaw=yaw, heel_deg=m.heel_strike_deg,
-            flat_frames=flat, mid=mid, roll=True, roll_from=mid, push_off_deg=m.push_off_deg,
-            reach_from=start, knee_peak_deg=m.knee_peak_deg,
-        ))
+        contacts.append(
+            Contact(
+                side=SIDES[side],
+                start=start,
+                stop=stop,
+                ankle=ankle,
+                yaw=yaw,
+                heel_deg=m.heel_strike_deg,
+                flat_frames=flat,
+                mid=mid,
+                roll=True,
+                roll_from=mid,
+                push_off_deg=m.push_off_deg,
+                reach_from=start,
+                knee_peak_deg=m.knee_peak_deg,
+            )
+        )
     land_f = [c.start for c in contacts]
     crop = (land_f[3] - _frame(0.5 * t_fl, fps), land_f[N + 3] + _frame(0.5 * t_c, fps))
     segments = [(f"run_{contacts[i].side}Stance", land_f[i], land_f[i + 1]) for i in range(3, N + 3)]
     in_clip = [i for i, c in enumerate(contacts) if crop[0] <= c.start < crop[1]]
     truth = {
         "stride_length_cm": _stride_truth(contacts, in_clip[2:]),
-        "speed_cm_s": v, "step_width_cm": p.step_width_cm, "turn_deg": p.turn_deg,
-        "cadence_steps_min": 120.0 / t_stride, "stance_fraction": m.stance_fraction,
-        "flight_s": t_fl, "n_steps": N,
+        "speed_cm_s": v,
+        "step_width_cm": p.step_width_cm,
+        "turn_deg": p.turn_deg,
+        "cadence_steps_min": 120.0 / t_stride,
+        "stance_fraction": m.stance_fraction,
+        "flight_s": t_fl,
+        "n_steps": N,
     }
     return Plan(
-        fps=fps, contacts=contacts, root_xz=root_xz, heading=heading, phase=phase_a - (0.0 if a == 0 else 0.5),
-        envelope=np.ones(n), height_offset=height, ref=list(range(len(contacts))), ref_knee_deg=RUN_LAND_KNEE_DEG,
-        segments=segments, crop=crop, truth=truth,
+        fps=fps,
+        contacts=contacts,
+        root_xz=root_xz,
+        heading=heading,
+        phase=phase_a - (0.0 if a == 0 else 0.5),
+        envelope=np.ones(n),
+        height_offset=height,
+        ref=list(range(len(contacts))),
+        ref_knee_deg=RUN_LAND_KNEE_DEG,
+        segments=segments,
+        crop=crop,
+        truth=truth,
     )
 
 
@@ -401,20 +456,40 @@ def plan_sidestep(geo: BodyGeometry, p: SidestepParams) -> Plan:
         stops = [_frame(x, fps) + 1 for x in lifts] + [n]
         for j, (start, stop) in enumerate(zip(starts, stops)):
             lateral = sign * (offset * p.stance_width_cm + j * p.step_cm)
-            contacts.append(Contact(
-                side=SIDES[side], start=start, stop=stop,
-                ankle=np.array([lateral, geo.ankle_height[side], geo.hip_forward]), yaw=0.0, mid=n,
-                reach_from=start, lift_cm=m.lift_cm,
-            ))
+            contacts.append(
+                Contact(
+                    side=SIDES[side],
+                    start=start,
+                    stop=stop,
+                    ankle=np.array([lateral, geo.ankle_height[side], geo.hip_forward]),
+                    yaw=0.0,
+                    mid=n,
+                    reach_from=start,
+                    lift_cm=m.lift_cm,
+                )
+            )
     contacts.sort(key=lambda c: c.start)
     trail_f = [_frame(x, fps) for x in trail_land]
     segments = [("sidestep", trail_f[j], trail_f[j + 1]) for j in range(K - 1)]
     truth = {
         "stride_length_cm": _stride_truth(contacts, list(range(len(contacts)))),
-        "speed_cm_s": v, "step_width_cm": p.stance_width_cm, "turn_deg": 0.0,
-        "cadence_steps_min": p.cadence_steps_min, "n_steps": 2 * K,
+        "speed_cm_s": v,
+        "step_width_cm": p.stance_width_cm,
+        "turn_deg": 0.0,
+        "cadence_steps_min": p.cadence_steps_min,
+        "n_steps": 2 * K,
     }
     return Plan(
-        fps=fps, contacts=contacts, root_xz=root_xz, heading=np.zeros(n), phase=phase, envelope=env,
-        height_offset=-1.5 * env, ref=[0, 1], ref_knee_deg=6.0, segments=segments, crop=(0, n), truth=truth,
+        fps=fps,
+        contacts=contacts,
+        root_xz=root_xz,
+        heading=np.zeros(n),
+        phase=phase,
+        envelope=env,
+        height_offset=-1.5 * env,
+        ref=[0, 1],
+        ref_knee_deg=6.0,
+        segments=segments,
+        crop=(0, n),
+        truth=truth,
     )

@@ -71,12 +71,25 @@ class Manner:
     def validate(self, owner: str, stance: tuple[float, float]) -> None:
         """ValueError naming the first field out of its range; ``stance`` bounds the stance fraction."""
         limits = {
-            "arm_swing_deg": (0.0, 80.0), "arm_mean_deg": (-45.0, 45.0), "arm_abduction_deg": (0.0, 45.0),
-            "elbow_flex_deg": (0.0, 140.0), "elbow_swing_deg": (0.0, 40.0), "torso_lean_deg": (-30.0, 45.0),
-            "head_pitch_deg": (-45.0, 60.0), "shoulder_lift_deg": (-20.0, 20.0), "knee_peak_deg": (20.0, 140.0),
-            "push_off_deg": (0.0, 80.0), "heel_strike_deg": (0.0, 35.0), "bob_cm": (0.0, 8.0),
-            "sway_cm": (0.0, 8.0), "pelvis_rotation_deg": (0.0, 20.0), "pelvis_obliquity_deg": (0.0, 15.0),
-            "pelvis_tilt_deg": (0.0, 10.0), "pelvis_tilt_mean_deg": (-10.0, 20.0), "thorax_rotation_ratio": (0.0, 2.0), "stance_fraction": stance,
+            "arm_swing_deg": (0.0, 80.0),
+            "arm_mean_deg": (-45.0, 45.0),
+            "arm_abduction_deg": (0.0, 45.0),
+            "elbow_flex_deg": (0.0, 140.0),
+            "elbow_swing_deg": (0.0, 40.0),
+            "torso_lean_deg": (-30.0, 45.0),
+            "head_pitch_deg": (-45.0, 60.0),
+            "shoulder_lift_deg": (-20.0, 20.0),
+            "knee_peak_deg": (20.0, 140.0),
+            "push_off_deg": (0.0, 80.0),
+            "heel_strike_deg": (0.0, 35.0),
+            "bob_cm": (0.0, 8.0),
+            "sway_cm": (0.0, 8.0),
+            "pelvis_rotation_deg": (0.0, 20.0),
+            "pelvis_obliquity_deg": (0.0, 15.0),
+            "pelvis_tilt_deg": (0.0, 10.0),
+            "pelvis_tilt_mean_deg": (-10.0, 20.0),
+            "thorax_rotation_ratio": (0.0, 2.0),
+            "stance_fraction": stance,
             "lift_cm": (1.0, 30.0),
         }
         for name, (lo, hi) in limits.items():
@@ -86,7 +99,11 @@ class Manner:
 
 
 def _check(owner: str, name: str, value, lo: float, hi: float) -> None:
-    if isinstance(value, bool) or not isinstance(value, (int, float)) or not (math.isfinite(value) and lo <= value <= hi):
+    if (
+        isinstance(value, bool)
+        or not isinstance(value, (int, float))
+        or not (math.isfinite(value) and lo <= value <= hi)
+    ):
         raise ValueError(f"{owner}.{name} must be a number in [{lo}, {hi}]; got {value!r}")
 
 
@@ -169,9 +186,19 @@ class RunParams:
     fps: float = 120.0
     manner: Manner = field(
         default_factory=lambda: Manner(
-            arm_swing_deg=30.0, elbow_flex_deg=85.0, elbow_swing_deg=10.0, torso_lean_deg=7.0, knee_peak_deg=105.0,
-            push_off_deg=60.0, heel_strike_deg=8.0, bob_cm=0.0, sway_cm=1.0, pelvis_rotation_deg=6.0,
-            thorax_rotation_ratio=0.8, stance_fraction=0.36, pelvis_tilt_mean_deg=8.0,
+            arm_swing_deg=30.0,
+            elbow_flex_deg=85.0,
+            elbow_swing_deg=10.0,
+            torso_lean_deg=7.0,
+            knee_peak_deg=105.0,
+            push_off_deg=60.0,
+            heel_strike_deg=8.0,
+            bob_cm=0.0,
+            sway_cm=1.0,
+            pelvis_rotation_deg=6.0,
+            thorax_rotation_ratio=0.8,
+            stance_fraction=0.36,
+            pelvis_tilt_mean_deg=8.0,
         )
     )
 
@@ -203,8 +230,16 @@ class SidestepParams:
     fps: float = 120.0
     manner: Manner = field(
         default_factory=lambda: Manner(
-            arm_swing_deg=3.0, knee_peak_deg=60.0, push_off_deg=0.0, heel_strike_deg=0.0, bob_cm=0.5,
-            sway_cm=0.0, pelvis_rotation_deg=0.0, pelvis_obliquity_deg=3.0, pelvis_tilt_deg=0.0, pelvis_tilt_mean_deg=0.0,
+            arm_swing_deg=3.0,
+            knee_peak_deg=60.0,
+            push_off_deg=0.0,
+            heel_strike_deg=0.0,
+            bob_cm=0.5,
+            sway_cm=0.0,
+            pelvis_rotation_deg=0.0,
+            pelvis_obliquity_deg=3.0,
+            pelvis_tilt_deg=0.0,
+            pelvis_tilt_mean_deg=0.0,
             stance_fraction=0.7,
         )
     )
@@ -231,10 +266,15 @@ class SidestepParams:
 
 def _placement(rng: np.random.Generator) -> dict:
     """Anywhere on a 6 m × 6 m floor, any heading (clips start like real mocap takes)."""
-    return {"start_xz": tuple(float(v) for v in rng.uniform(-300.0, 300.0, 2)), "heading_deg": float(rng.uniform(-180, 180))}
+    return {
+        "start_xz": tuple(float(v) for v in rng.uniform(-300.0, 300.0, 2)),
+        "heading_deg": float(rng.uniform(-180, 180)),
+    }
 
 
-def walk_manner(subject: Subject, style: str, speed_cm_s: float, step_width_cm: float, rng: np.random.Generator) -> Manner:
+def walk_manner(
+    subject: Subject, style: str, speed_cm_s: float, step_width_cm: float, rng: np.random.Generator
+) -> Manner:
     """The subject's habits changed by ``style``, with small clip-to-clip jitter."""
     f = style_factors(style)
     stance = 0.60 - 0.08 * (speed_cm_s / 100.0 - 1.3) + f.stance_add
@@ -259,8 +299,12 @@ def walk_manner(subject: Subject, style: str, speed_cm_s: float, step_width_cm: 
 
 
 def sample_walk_params(
-    subject: Subject, rng: np.random.Generator, style: str = "neutral", turn_deg: float = 0.0,
-    n_steps: int | None = None, fps: float = 120.0,
+    subject: Subject,
+    rng: np.random.Generator,
+    style: str = "neutral",
+    turn_deg: float = 0.0,
+    n_steps: int | None = None,
+    fps: float = 120.0,
 ) -> WalkParams:
     """A walk of ``subject`` in ``style``: stride ∝ leg length, cadence from the habit."""
     f = style_factors(style)
@@ -269,58 +313,88 @@ def sample_walk_params(
     speed = stride * cadence / 120.0
     width = max(subject.step_width_cm * f.step_width + rng.normal(0.0, 1.0), 0.0)
     return WalkParams(
-        style=style, stride_length_cm=stride, speed_cm_s=speed, step_width_cm=width, turn_deg=float(turn_deg),
-        n_steps=int(n_steps if n_steps is not None else rng.integers(5, 9)), first_foot=SIDES[int(rng.integers(2))],
-        stand_start_s=float(rng.uniform(0.4, 0.9)), stand_end_s=float(rng.uniform(0.4, 0.9)), fps=fps,
-        manner=walk_manner(subject, style, speed, width, rng), **_placement(rng),
+        style=style,
+        stride_length_cm=stride,
+        speed_cm_s=speed,
+        step_width_cm=width,
+        turn_deg=float(turn_deg),
+        n_steps=int(n_steps if n_steps is not None else rng.integers(5, 9)),
+        first_foot=SIDES[int(rng.integers(2))],
+        stand_start_s=float(rng.uniform(0.4, 0.9)),
+        stand_end_s=float(rng.uniform(0.4, 0.9)),
+        fps=fps,
+        manner=walk_manner(subject, style, speed, width, rng),
+        **_placement(rng),
     )
 
 
 def sample_run_params(
-    subject: Subject, rng: np.random.Generator, turn_deg: float = 0.0, n_steps: int | None = None, fps: float = 120.0,
+    subject: Subject,
+    rng: np.random.Generator,
+    turn_deg: float = 0.0,
+    n_steps: int | None = None,
+    fps: float = 120.0,
 ) -> RunParams:
     """A run of ``subject`` at its habitual cadence, stride ∝ leg length."""
     stride = RUN_STRIDE_PER_LEG * subject.leg_length_cm * math.exp(rng.normal(0.0, 0.05))
     cadence = RUN_CADENCE * subject.cadence_scale * math.exp(rng.normal(0.0, 0.03))
     speed = stride * cadence / 120.0
     base = RunParams().manner
-    manner = Manner(**{
-        **{f.name: getattr(base, f.name) for f in fields(Manner)},
-        "arm_swing_deg": 30.0 * subject.arm_swing_scale * rng.normal(1.0, 0.06),
-        "elbow_flex_deg": float(np.clip(85.0 + subject.elbow_flex_deg - 20.0 + rng.normal(0.0, 2.0), 60.0, 120.0)),
-        "torso_lean_deg": subject.torso_lean_deg + 4.0 + rng.normal(0.0, 1.0),
-        "head_pitch_deg": subject.head_pitch_deg + rng.normal(0.0, 1.5),
-        "shoulder_lift_deg": subject.shoulder_lift_deg + rng.normal(0.0, 1.0),
-        "knee_peak_deg": 105.0 * subject.knee_lift_scale * rng.normal(1.0, 0.02),
-        "stance_fraction": float(np.clip(0.36 - 0.03 * (speed / 100.0 - 3.0), 0.28, 0.42)),
-    })
+    manner = Manner(
+        **{
+            **{f.name: getattr(base, f.name) for f in fields(Manner)},
+            "arm_swing_deg": 30.0 * subject.arm_swing_scale * rng.normal(1.0, 0.06),
+            "elbow_flex_deg": float(np.clip(85.0 + subject.elbow_flex_deg - 20.0 + rng.normal(0.0, 2.0), 60.0, 120.0)),
+            "torso_lean_deg": subject.torso_lean_deg + 4.0 + rng.normal(0.0, 1.0),
+            "head_pitch_deg": subject.head_pitch_deg + rng.normal(0.0, 1.5),
+            "shoulder_lift_deg": subject.shoulder_lift_deg + rng.normal(0.0, 1.0),
+            "knee_peak_deg": 105.0 * subject.knee_lift_scale * rng.normal(1.0, 0.02),
+            "stance_fraction": float(np.clip(0.36 - 0.03 * (speed / 100.0 - 3.0), 0.28, 0.42)),
+        }
+    )
     return RunParams(
-        stride_length_cm=stride, speed_cm_s=speed, step_width_cm=max(0.5 * subject.step_width_cm + rng.normal(0, 1), 0.0),
-        turn_deg=float(turn_deg), n_steps=int(n_steps if n_steps is not None else rng.integers(6, 9)),
-        first_foot=SIDES[int(rng.integers(2))], fps=fps, manner=manner, **_placement(rng),
+        stride_length_cm=stride,
+        speed_cm_s=speed,
+        step_width_cm=max(0.5 * subject.step_width_cm + rng.normal(0, 1), 0.0),
+        turn_deg=float(turn_deg),
+        n_steps=int(n_steps if n_steps is not None else rng.integers(6, 9)),
+        first_foot=SIDES[int(rng.integers(2))],
+        fps=fps,
+        manner=manner,
+        **_placement(rng),
     )
 
 
 def sample_sidestep_params(
-    subject: Subject, rng: np.random.Generator, direction: str = "left", n_cycles: int | None = None, fps: float = 120.0,
+    subject: Subject,
+    rng: np.random.Generator,
+    direction: str = "left",
+    n_cycles: int | None = None,
+    fps: float = 120.0,
 ) -> SidestepParams:
     """Side-steps of ``subject``: lateral step ∝ body size, the habit's cadence."""
     base = SidestepParams().manner
-    manner = Manner(**{
-        **{f.name: getattr(base, f.name) for f in fields(Manner)},
-        "arm_swing_deg": 3.0 * subject.arm_swing_scale,
-        "elbow_flex_deg": float(np.clip(subject.elbow_flex_deg + rng.normal(0.0, 2.0), 0.0, 140.0)),
-        "torso_lean_deg": subject.torso_lean_deg + rng.normal(0.0, 1.0),
-        "head_pitch_deg": subject.head_pitch_deg + rng.normal(0.0, 1.5),
-        "shoulder_lift_deg": subject.shoulder_lift_deg + rng.normal(0.0, 1.0),
-        "lift_cm": 7.0 * subject.knee_lift_scale,
-    })
+    manner = Manner(
+        **{
+            **{f.name: getattr(base, f.name) for f in fields(Manner)},
+            "arm_swing_deg": 3.0 * subject.arm_swing_scale,
+            "elbow_flex_deg": float(np.clip(subject.elbow_flex_deg + rng.normal(0.0, 2.0), 0.0, 140.0)),
+            "torso_lean_deg": subject.torso_lean_deg + rng.normal(0.0, 1.0),
+            "head_pitch_deg": subject.head_pitch_deg + rng.normal(0.0, 1.5),
+            "shoulder_lift_deg": subject.shoulder_lift_deg + rng.normal(0.0, 1.0),
+            "lift_cm": 7.0 * subject.knee_lift_scale,
+        }
+    )
     hip_width = 2.0 * 9.2 * subject.height_scale  # CMU subject 02: hip joints ±9.2 cm
     return SidestepParams(
-        direction=direction, step_cm=float(rng.uniform(30.0, 55.0) * subject.height_scale),
+        direction=direction,
+        step_cm=float(rng.uniform(30.0, 55.0) * subject.height_scale),
         stance_width_cm=float(hip_width + rng.normal(0.0, 1.5)),
         n_cycles=int(n_cycles if n_cycles is not None else rng.integers(3, 5)),
         cadence_steps_min=SIDESTEP_CADENCE * subject.cadence_scale * math.exp(rng.normal(0.0, 0.04)),
-        stand_start_s=float(rng.uniform(0.4, 0.9)), stand_end_s=float(rng.uniform(0.4, 0.9)), fps=fps,
-        manner=manner, **_placement(rng),
+        stand_start_s=float(rng.uniform(0.4, 0.9)),
+        stand_end_s=float(rng.uniform(0.4, 0.9)),
+        fps=fps,
+        manner=manner,
+        **_placement(rng),
     )

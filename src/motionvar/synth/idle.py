@@ -45,8 +45,18 @@ from ..core.quaternions import qmul, qrot
 from .intervals import format_intervals, format_ranges
 from .signals import colored_noise, minimum_jerk, subject_rng
 from .stance import (
-    Rig, elbow_pole, euler_q, hanging_hand_offsets, heading_quat, identity_rotations,
-    plant_feet, root_height, solve_arm, solve_legs, stance_habit, to_world,
+    Rig,
+    elbow_pole,
+    euler_q,
+    hanging_hand_offsets,
+    heading_quat,
+    identity_rotations,
+    plant_feet,
+    root_height,
+    solve_arm,
+    solve_legs,
+    stance_habit,
+    to_world,
 )
 from .subjects import Subject
 
@@ -270,14 +280,17 @@ def generate_idle(subject: Subject, params: IdleParams, rng: np.random.Generator
     postures, phases = _truth_intervals(rests, fps, n)
     truth = {
         "variant": "standing",
-        "target_x": float("nan"), "target_y": float("nan"), "target_z": float("nan"),
+        "target_x": float("nan"),
+        "target_y": float("nan"),
+        "target_z": float("nan"),
         "segments": format_intervals([("idle", 0, n)]),
         "idle_phases": phases,
         "left_contacts": format_ranges([(0, n)]),
         "right_contacts": format_ranges([(0, n)]),
         "idle_postures": postures,
         "heading_deg": float(np.degrees(heading)),
-        "start_x": float(start_xz[0]), "start_z": float(start_xz[1]),
+        "start_x": float(start_xz[0]),
+        "start_z": float(start_xz[1]),
         "stance_width_cm": float(width),
         "toe_out_deg": float(toe_out),
     }

@@ -96,7 +96,9 @@ def root_height(geo: BodyGeometry, plan: Plan, hips: np.ndarray, extra: np.ndarr
             terms.append(-(ceiling(c, KNEE_MIN_DEG, slice(None)) + 100.0 * (1.0 - w)) / SOFTMIN_CM)
         if c.roll and c.mid < c.stop - 1:  # rolling: within reach of the ankle at full heel rise
             w = _window(f, c.mid, c.stop - 1, ramp)
-            terms.append(-(ceiling(c, KNEE_MIN_DEG, slice(None), rolled_ankle(geo, c)) + 100.0 * (1.0 - w)) / SOFTMIN_CM)
+            terms.append(
+                -(ceiling(c, KNEE_MIN_DEG, slice(None), rolled_ankle(geo, c)) + 100.0 * (1.0 - w)) / SOFTMIN_CM
+            )
     if extra is not None:
         terms.append(-np.minimum(extra, ref + 100.0) / SOFTMIN_CM)
     design = -(ref + plan.height_offset) / SOFTMIN_CM
@@ -167,7 +169,9 @@ def knee_from_distance(geo: BodyGeometry, side: int, dist: np.ndarray) -> np.nda
     return np.degrees(np.arccos(np.clip((dist**2 - a * a - b * b) / (2 * a * b), -1.0, 1.0)))
 
 
-def _lift_for_knee(path: np.ndarray, u: np.ndarray, hip: np.ndarray, geo: BodyGeometry, side: int, peak_deg: float) -> float:
+def _lift_for_knee(
+    path: np.ndarray, u: np.ndarray, hip: np.ndarray, geo: BodyGeometry, side: int, peak_deg: float
+) -> float:
     """The smallest swing lift (cm) at which the knee flexes to ``peak_deg`` somewhere in the
     swing (the most flexing lift when none does): all candidate lifts are evaluated at once
     (candidates × frames)."""
@@ -267,10 +271,23 @@ def _swing(
 def _virtual(c: Contact, step: np.ndarray, frames: int, before: bool) -> Contact:
     """A contact one stride ``step`` before (or after) ``c``, ``frames`` of swing away."""
     if before:
-        return Contact(side=c.side, start=c.start - frames - 2, stop=c.start - frames, ankle=c.ankle - step, yaw=c.yaw,
-                       knee_peak_deg=c.knee_peak_deg, lift_cm=c.lift_cm)
-    return Contact(side=c.side, start=c.stop + frames, stop=c.stop + frames + 2, ankle=c.ankle + step, yaw=c.yaw,
-                   heel_deg=c.heel_deg)
+        return Contact(
+            side=c.side,
+            start=c.start - frames - 2,
+            stop=c.start - frames,
+            ankle=c.ankle - step,
+            yaw=c.yaw,
+            knee_peak_deg=c.knee_peak_deg,
+            lift_cm=c.lift_cm,
+        )
+    return Contact(
+        side=c.side,
+        start=c.stop + frames,
+        stop=c.stop + frames + 2,
+        ankle=c.ankle + step,
+        yaw=c.yaw,
+        heel_deg=c.heel_deg,
+    )
 
 
 @dataclass
@@ -315,7 +332,12 @@ def foot_tracks(geo: BodyGeometry, plan: Plan, root_pos: np.ndarray, hips: np.nd
 
 
 def _swing_pitch(
-    geo: BodyGeometry, side: int, pitch: np.ndarray, u: np.ndarray, shank: np.ndarray, fwd: np.ndarray,
+    geo: BodyGeometry,
+    side: int,
+    pitch: np.ndarray,
+    u: np.ndarray,
+    shank: np.ndarray,
+    fwd: np.ndarray,
     ankle_y: np.ndarray,
 ) -> np.ndarray:
     """Swing foot pitch kept (smoothly) between ``DORSI_MAX_DEG`` of dorsiflexion and
@@ -378,14 +400,22 @@ def solve_leg_tracks(
     root_rot = rotations[:, 0]
     reached = np.zeros_like(feet.ankle)
     for side, (hj, pre) in enumerate((("LHipJoint", "Left"), ("RHipJoint", "Right"))):
-        j_hj, j_up, j_knee, j_ankle, j_toe = (sk.index(x) for x in (hj, pre + "UpLeg", pre + "Leg", pre + "Foot", pre + "ToeBase"))
+        j_hj, j_up, j_knee, j_ankle, j_toe = (
+            sk.index(x) for x in (hj, pre + "UpLeg", pre + "Leg", pre + "Foot", pre + "ToeBase")
+        )
         g_hj = qmul(root_rot, rotations[:, j_hj])
         p_hip = root_pos + qrot(root_rot, np.broadcast_to(sk.offsets[j_hj], root_pos.shape))
         p_hip = p_hip + qrot(g_hj, np.broadcast_to(sk.offsets[j_up], root_pos.shape))
         yaw = feet.yaw[:, side]
         fwd = np.stack([np.sin(yaw), np.zeros_like(yaw), np.cos(yaw)], axis=-1)
         q_up, q_knee, reached[:, side] = two_bone_ik(
-            p_hip, feet.ankle[:, side], g_hj, sk.offsets[j_knee], sk.offsets[j_ankle], _X, fwd,
+            p_hip,
+            feet.ankle[:, side],
+            g_hj,
+            sk.offsets[j_knee],
+            sk.offsets[j_ankle],
+            _X,
+            fwd,
         )
         rotations[:, j_up], rotations[:, j_knee] = q_up, q_knee
         g_up = qmul(g_hj, q_up)
@@ -393,7 +423,9 @@ def solve_leg_tracks(
         pitch = feet.pitch[:, side]
         u = feet.swing_u[:, side]
         swing = ~np.isnan(u)
-        pitch = np.where(swing, _swing_pitch(geo, side, pitch, np.nan_to_num(u), shank, fwd, feet.ankle[:, side, 1]), pitch)
+        pitch = np.where(
+            swing, _swing_pitch(geo, side, pitch, np.nan_to_num(u), shank, fwd, feet.ankle[:, side, 1]), pitch
+        )
         rotations[:, j_ankle] = qmul(qinv(qmul(g_up, q_knee)), _yaw_pitch(yaw, pitch))
         rotations[:, j_toe] = quat_about_axis(_X, feet.toe[:, side])
     return reached

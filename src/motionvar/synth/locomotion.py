@@ -51,7 +51,9 @@ def _check_stride(subject: Subject, owner: str, stride: float, limit: float) -> 
         )
 
 
-def _realise(subject: Subject, plan: Plan, manner: Manner, start_xz: tuple[float, float], heading_deg: float) -> tuple[Motion, dict]:
+def _realise(
+    subject: Subject, plan: Plan, manner: Manner, start_xz: tuple[float, float], heading_deg: float
+) -> tuple[Motion, dict]:
     """Pose the body along ``plan``, crop, place it on the floor; Motion and truth."""
     sk = subject.skeleton
     geo = BodyGeometry.from_skeleton(sk)
@@ -76,14 +78,20 @@ def _realise(subject: Subject, plan: Plan, manner: Manner, start_xz: tuple[float
             i = SIDES.index(c.side)
             err = max(err, float(np.abs(reached[a:b, i] - feet.ankle[a:b, i]).max()))
     truth = dict(plan.truth)
-    truth.update({
-        "target_x": float("nan"), "target_y": float("nan"), "target_z": float("nan"),
-        "segments": format_intervals((name, a - c0, b - c0) for name, a, b in plan.segments),
-        "left_contacts": format_ranges(contacts["left"]),
-        "right_contacts": format_ranges(contacts["right"]),
-        "heading_deg": float(heading_deg), "start_x": float(start_xz[0]), "start_z": float(start_xz[1]),
-        "stance_ik_error_cm": err,
-    })
+    truth.update(
+        {
+            "target_x": float("nan"),
+            "target_y": float("nan"),
+            "target_z": float("nan"),
+            "segments": format_intervals((name, a - c0, b - c0) for name, a, b in plan.segments),
+            "left_contacts": format_ranges(contacts["left"]),
+            "right_contacts": format_ranges(contacts["right"]),
+            "heading_deg": float(heading_deg),
+            "start_x": float(start_xz[0]),
+            "start_z": float(start_xz[1]),
+            "stance_ik_error_cm": err,
+        }
+    )
     assert motion.n_frames == n
     return motion, truth
 

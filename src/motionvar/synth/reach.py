@@ -62,8 +62,22 @@ from ..core.skeleton import Skeleton
 from .intervals import format_intervals, format_ranges
 from .signals import minimum_jerk, subject_rng
 from .stance import (
-    Feet, Rig, SIDES, arm_reach, body_com, elbow_pole, euler_q, hanging_hand_offsets, heading_quat,
-    identity_rotations, plant_feet, root_height, solve_arm, solve_legs, stance_habit, to_world,
+    SIDES,
+    Feet,
+    Rig,
+    arm_reach,
+    body_com,
+    elbow_pole,
+    euler_q,
+    hanging_hand_offsets,
+    heading_quat,
+    identity_rotations,
+    plant_feet,
+    root_height,
+    solve_arm,
+    solve_legs,
+    stance_habit,
+    to_world,
 )
 from .subjects import Subject
 
@@ -274,9 +288,15 @@ def _generate(subject: Subject, params: ReachParams, rng: np.random.Generator, k
     d_pref = min(arm_reach(sk, side, elbow_pref) for side in SIDES)
     d_max = min(arm_reach(sk, side, 0.0) for side in SIDES)
     body = _Body(
-        skeleton=sk, feet=feet, lean=np.radians(subject.torso_lean_deg), knee_lock=habit.lock_knee_deg,
-        com_ahead=habit.com_ahead_cm, yaw=0.6 * np.arctan2(target[0], target[2]), side_shift=0.25 * target[0],
-        shoulder_lift=np.radians(subject.shoulder_lift_deg), head_pitch=np.radians(subject.head_pitch_deg),
+        skeleton=sk,
+        feet=feet,
+        lean=np.radians(subject.torso_lean_deg),
+        knee_lock=habit.lock_knee_deg,
+        com_ahead=habit.com_ahead_cm,
+        yaw=0.6 * np.arctan2(target[0], target[2]),
+        side_shift=0.25 * target[0],
+        shoulder_lift=np.radians(subject.shoulder_lift_deg),
+        head_pitch=np.radians(subject.head_pitch_deg),
     )
     # Least lowering that brings both shoulders within the preferred reach of their grips,
     # with the personal strategy q, or squatting more when that cannot get there.
@@ -359,7 +379,9 @@ def _generate(subject: Subject, params: ReachParams, rng: np.random.Generator, k
     root_w, rot_w = to_world(root, rot, heading, start_xz)
     truth = {
         "variant": params.region if params.target is None else "custom",
-        "target_x": float(target[0]), "target_y": float(target[1]), "target_z": float(target[2]),
+        "target_x": float(target[0]),
+        "target_y": float(target[1]),
+        "target_z": float(target[2]),
         "segments": format_intervals([(f"{kind}_reach", 0, frame_b + 1), (f"{kind}_retrieve", frame_b + 1, n)]),
         "left_contacts": format_ranges([(0, n)]),
         "right_contacts": format_ranges([(0, n)]),
@@ -369,7 +391,8 @@ def _generate(subject: Subject, params: ReachParams, rng: np.random.Generator, k
         "retrieve_duration_s": t_back,
         "lowering": float(s_end),
         "heading_deg": float(np.degrees(heading)),
-        "start_x": float(start_xz[0]), "start_z": float(start_xz[1]),
+        "start_x": float(start_xz[0]),
+        "start_z": float(start_xz[1]),
     }
     return Motion(skeleton=sk, root_pos=root_w, rotations=rot_w, fps=fps), truth
 

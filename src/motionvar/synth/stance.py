@@ -183,8 +183,13 @@ def solve_legs(skeleton: Skeleton, rotations: np.ndarray, root_pos: np.ndarray, 
         p_hip = root_pos + qrot(root_rot, np.broadcast_to(skeleton.offsets[hj], root_pos.shape))
         p_hip = p_hip + qrot(g_hj, np.broadcast_to(skeleton.offsets[up], root_pos.shape))
         q_up, q_knee, _ = two_bone_ik(
-            p_hip, np.broadcast_to(feet.ankles[i], root_pos.shape), g_hj,
-            skeleton.offsets[knee], skeleton.offsets[ankle], _X, feet.forward[i],
+            p_hip,
+            np.broadcast_to(feet.ankles[i], root_pos.shape),
+            g_hj,
+            skeleton.offsets[knee],
+            skeleton.offsets[ankle],
+            _X,
+            feet.forward[i],
         )
         rotations[:, up] = q_up
         rotations[:, knee] = q_knee
@@ -193,8 +198,14 @@ def solve_legs(skeleton: Skeleton, rotations: np.ndarray, root_pos: np.ndarray, 
 
 
 def solve_arm(
-    skeleton: Skeleton, rotations: np.ndarray, root_pos: np.ndarray, side: str, target: np.ndarray,
-    pole: np.ndarray, max_extension: float = 0.999, frames: tuple[np.ndarray, np.ndarray] | None = None,
+    skeleton: Skeleton,
+    rotations: np.ndarray,
+    root_pos: np.ndarray,
+    side: str,
+    target: np.ndarray,
+    pole: np.ndarray,
+    max_extension: float = 0.999,
+    frames: tuple[np.ndarray, np.ndarray] | None = None,
 ) -> np.ndarray:
     """Pose one arm in place so that the wrist (``*Hand`` joint) reaches ``target`` (T, 3),
     the elbow bending towards ``pole``; returns the wrist positions reached (T, 3).
@@ -209,7 +220,13 @@ def solve_arm(
     pos, grot = frames
     hinge = -_Y if side == "left" else _Y  # elbow flexion brings the T-pose forearm forwards
     q_arm, q_fore, reached = two_bone_ik(
-        pos[:, arm], target, grot[:, clav], skeleton.offsets[fore], skeleton.offsets[hand], hinge, pole,
+        pos[:, arm],
+        target,
+        grot[:, clav],
+        skeleton.offsets[fore],
+        skeleton.offsets[hand],
+        hinge,
+        pole,
         max_extension=max_extension,
     )
     rotations[:, arm] = q_arm

@@ -37,7 +37,9 @@ def pelvis_angles(phase: np.ndarray, env: np.ndarray, m: Manner) -> tuple[np.nda
     """(rotation, obliquity, tilt) in radians over frames (the root's oscillations)."""
     rot = -np.radians(m.pelvis_rotation_deg) * np.cos(2 * np.pi * phase) * env
     obl = np.radians(m.pelvis_obliquity_deg) * np.sin(2 * np.pi * (phase + 0.05)) * env
-    tilt = (np.radians(m.pelvis_tilt_mean_deg) + np.radians(m.pelvis_tilt_deg) * np.cos(4 * np.pi * (phase - 0.4))) * env
+    tilt = (
+        np.radians(m.pelvis_tilt_mean_deg) + np.radians(m.pelvis_tilt_deg) * np.cos(4 * np.pi * (phase - 0.4))
+    ) * env
     return rot, obl, tilt
 
 
@@ -48,8 +50,13 @@ def pelvis_rotation(heading: np.ndarray, phase: np.ndarray, env: np.ndarray, m: 
 
 
 def pose_upper_body(
-    sk: Skeleton, rotations: np.ndarray, root_pos: np.ndarray, heading: np.ndarray, phase: np.ndarray,
-    env: np.ndarray, m: Manner,
+    sk: Skeleton,
+    rotations: np.ndarray,
+    root_pos: np.ndarray,
+    heading: np.ndarray,
+    phase: np.ndarray,
+    env: np.ndarray,
+    m: Manner,
 ) -> None:
     """Spine, neck, head, clavicles and arms in place (the root and legs must be set)."""
     rig = Rig(sk)
@@ -58,7 +65,9 @@ def pose_upper_body(
     thorax_yaw = -m.thorax_rotation_ratio * rot  # world yaw of the thorax relative to the heading
     for name, share in SPINE_SHARES:
         rotations[:, rig[name]] = euler_q(
-            flex=share * (lean - tilt), axial=share * (thorax_yaw - rot), lateral=-share * TRUNK_OBLIQUITY_COMP * obl,
+            flex=share * (lean - tilt),
+            axial=share * (thorax_yaw - rot),
+            lateral=-share * TRUNK_OBLIQUITY_COMP * obl,
         )
     head_flex = np.radians(m.head_pitch_deg) - (1.0 - HEAD_KEEPS_LEAN) * lean
     residual_lateral = -(1.0 - TRUNK_OBLIQUITY_COMP) * obl

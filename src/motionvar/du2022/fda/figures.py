@@ -42,8 +42,12 @@ def draw_fig3_9(result: EvaluationResult) -> Figure:
     fig, axes = plt.subplots(1, 2, figsize=(12, 4.6))
     for behaviour, g in pooled.groupby("behaviour"):
         axes[0].plot(g["n_basis"], g["rmse_cm"], marker="o", label=behaviour)
-    axes[0].set(title="Per behaviour (pooled over its primitives)", xlabel="number of basis functions K",
-                ylabel="joint-space RMSE (cm)", yscale="log")
+    axes[0].set(
+        title="Per behaviour (pooled over its primitives)",
+        xlabel="number of basis functions K",
+        ylabel="joint-space RMSE (cm)",
+        yscale="log",
+    )
     axes[0].legend(fontsize=8)
     palette = plt.cm.tab20.colors  # dark tones first, then the light ones: 20 distinct colours
     for i, (primitive, g) in enumerate(table.groupby("primitive")):
@@ -52,8 +56,12 @@ def draw_fig3_9(result: EvaluationResult) -> Figure:
         c = g[g["chosen"]]
         axes[1].plot(c["n_basis"], c["rmse_cm"], "o", ms=9, mfc="none", color=color)
     drop = result.figure["min_relative_drop"]
-    axes[1].set(title=f"Per primitive (circle: chosen K, cut-off {drop:.0%} per added function)",
-                xlabel="number of basis functions K", ylabel="joint-space RMSE (cm)", yscale="log")
+    axes[1].set(
+        title=f"Per primitive (circle: chosen K, cut-off {drop:.0%} per added function)",
+        xlabel="number of basis functions K",
+        ylabel="joint-space RMSE (cm)",
+        yscale="log",
+    )
     axes[1].legend(fontsize=7, ncol=2)
     for ax in axes:
         ax.grid(alpha=0.3, which="both")
@@ -70,15 +78,23 @@ def draw_fig3_10(result: EvaluationResult) -> Figure:
     fig, axes = plt.subplots(len(primitives), 2, figsize=(12, 4.2 * len(primitives)), squeeze=False)
     for r, primitive in enumerate(primitives):
         sub = table[table["primitive"] == primitive]
-        for c, (col, label) in enumerate([("feature_error", "feature space (functional norm)"),
-                                          ("observation_error_cm", "observation space: mean joint error (cm)")]):
+        for c, (col, label) in enumerate(
+            [
+                ("feature_error", "feature space (functional norm)"),
+                ("observation_error_cm", "observation space: mean joint error (cm)"),
+            ]
+        ):
             ax = axes[r, c]
             for method in methods:
                 g = sub[sub["method"] == method].sort_values("dims")
                 ax.plot(g["dims"], g[col], label=METHOD_LABELS[method], ms=5, **METHOD_STYLES[method])
             n = int(sub["n_clips"].iloc[0])
-            ax.set(title=f"{primitive} ({n} clips, K={int(sub['n_basis'].iloc[0])}): {label.split(':')[0]}",
-                   xlabel="number of latent dimensions", ylabel=label, yscale="log")
+            ax.set(
+                title=f"{primitive} ({n} clips, K={int(sub['n_basis'].iloc[0])}): {label.split(':')[0]}",
+                xlabel="number of latent dimensions",
+                ylabel=label,
+                yscale="log",
+            )
             ax.grid(alpha=0.3, which="both")
             plain_log_ticks(ax)
             ax.legend(fontsize=8)
@@ -100,11 +116,21 @@ def draw_fig3_11(result: EvaluationResult) -> Figure:
             ax = axes[r, c]
             for i, lab in enumerate(sorted(np.unique(labels))):
                 m = labels == lab
-                ax.scatter(xy[m, 0], xy[m, 1], s=10 if len(labels) > 200 else 22, marker=markers[i % 6],
-                           color=colors[i % 6], alpha=0.7, label=f"{lab} ({m.sum()})",
-                           facecolors="none" if markers[i % 6] in "o^sD" else None)
-            ax.set_title(f"{p['primitive']}\n{METHOD_LABELS[p['method']]} ({p['dim']}-D): silh. {p['silhouette']:.2f}, "
-                         f"{k}-NN {p['knn_accuracy']:.0%}", fontsize=9)
+                ax.scatter(
+                    xy[m, 0],
+                    xy[m, 1],
+                    s=10 if len(labels) > 200 else 22,
+                    marker=markers[i % 6],
+                    color=colors[i % 6],
+                    alpha=0.7,
+                    label=f"{lab} ({m.sum()})",
+                    facecolors="none" if markers[i % 6] in "o^sD" else None,
+                )
+            ax.set_title(
+                f"{p['primitive']}\n{METHOD_LABELS[p['method']]} ({p['dim']}-D): silh. {p['silhouette']:.2f}, "
+                f"{k}-NN {p['knn_accuracy']:.0%}",
+                fontsize=9,
+            )
             ax.set_xticks([])
             ax.set_yticks([])
             if c == 0:
@@ -124,8 +150,13 @@ def draw_table3_1(result: EvaluationResult) -> Figure:
             xy = np.array(curves[(primitive, name)])
             ax.plot(xy[:, 0], xy[:, 1], marker=".", lw=1, label=primitive)
         ax.axhline(threshold, color="k", ls="--", lw=1, label=f"{threshold:g} cm")
-        ax.set(title=f"{title}: observation-space error vs dimensions", xlabel="latent dimensions", yscale="log",
-               xscale="log", ylim=(1e-2, None))  # d = clips - 1 reconstructs exactly: below the axis
+        ax.set(
+            title=f"{title}: observation-space error vs dimensions",
+            xlabel="latent dimensions",
+            yscale="log",
+            xscale="log",
+            ylim=(1e-2, None),
+        )  # d = clips - 1 reconstructs exactly: below the axis
         ax.grid(alpha=0.3, which="both")
         plain_log_ticks(ax, "y")
         plain_log_ticks(ax, "x")

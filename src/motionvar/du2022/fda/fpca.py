@@ -134,7 +134,9 @@ class FPCA:
             raise RuntimeError(f"{type(self).__name__} is not fitted yet: call fit first")
         coefs = X.coefs if isinstance(X, FunctionalMotions) else np.asarray(X, dtype=float)
         if coefs.ndim != 3 or coefs.shape[1:] != self.mean_.shape:
-            raise ValueError(f"expected coefficients (N, {self.mean_.shape[0]}, {self.mean_.shape[1]}); got {coefs.shape}")
+            raise ValueError(
+                f"expected coefficients (N, {self.mean_.shape[0]}, {self.mean_.shape[1]}); got {coefs.shape}"
+            )
         return coefs
 
     def transform(self, X: FunctionalMotions | np.ndarray) -> np.ndarray:
@@ -163,7 +165,11 @@ class FPCA:
         return self.mean_ + np.einsum("kl,nld->nkd", self._gram_isqrt, z)
 
     def to_motions(
-        self, scores: np.ndarray, fps: float, skeleton: Skeleton | None = None, joint_names: tuple[str, ...] | None = None
+        self,
+        scores: np.ndarray,
+        fps: float,
+        skeleton: Skeleton | None = None,
+        joint_names: tuple[str, ...] | None = None,
     ) -> list[Motion]:
         """Back-project latent scores to Motions on the canonical timeline (``n_frames_``).
 
@@ -185,8 +191,16 @@ class FPCA:
         return fd.to_motions(skeleton, fps)
 
     # ---- persistence ---------------------------------------------------------------
-    _SAVED_ARRAYS = ("parents_", "offsets_mean_", "function_weights_", "mean_", "components_", "explained_variance_",
-                     "explained_variance_ratio_", "singular_values_")
+    _SAVED_ARRAYS = (
+        "parents_",
+        "offsets_mean_",
+        "function_weights_",
+        "mean_",
+        "components_",
+        "explained_variance_",
+        "explained_variance_ratio_",
+        "singular_values_",
+    )
     _EXTRA_SAVED: tuple[str, ...] = ()  # fitted scalars kept in the JSON settings
     _OPTIONAL_SAVED: tuple[str, ...] = ()  # fitted scalars kept when present (older files may lack them)
     _SAVED_PARAMS: tuple[str, ...] = ()  # constructor parameters kept in the settings ("params")
@@ -253,9 +267,11 @@ class FPCA:
         if not hasattr(self, "mean_"):
             raise RuntimeError(f"{type(self).__name__} is not fitted yet")
         if self.mean_.shape != X.coefs.shape[1:] or not np.array_equal(self.mean_, X.coefs.mean(axis=0)):
-            raise ValueError(f"{source}: fitted on other clips than those given ({X.n_clips} clips, "
-                             f"coefficients {X.coefs.shape[1:]}; the model's {self.mean_.shape}): rerun the rule "
-                             f"that wrote it")
+            raise ValueError(
+                f"{source}: fitted on other clips than those given ({X.n_clips} clips, "
+                f"coefficients {X.coefs.shape[1:]}; the model's {self.mean_.shape}): rerun the rule "
+                f"that wrote it"
+            )
 
 
 @register_saved

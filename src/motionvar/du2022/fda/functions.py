@@ -98,8 +98,14 @@ def _positions_by_length(motions: Sequence[Motion], groups: list[np.ndarray]) ->
         if any(m.translations is not None for m in clips):
             out.append(np.stack([m.positions() for m in clips]))
             continue
-        out.append(fk(np.stack([m.rotations for m in clips]), np.stack([m.root_pos for m in clips]),
-                      np.stack([m.skeleton.offsets for m in clips])[:, None], clips[0].skeleton.parents))
+        out.append(
+            fk(
+                np.stack([m.rotations for m in clips]),
+                np.stack([m.root_pos for m in clips]),
+                np.stack([m.skeleton.offsets for m in clips])[:, None],
+                clips[0].skeleton.parents,
+            )
+        )
     return out
 
 
@@ -167,7 +173,11 @@ class FunctionalMotions:
 
     @classmethod
     def _from_values(
-        cls, motions: Sequence[Motion], layout: FunctionLayout, values: list[np.ndarray], basis: BSplineBasis,
+        cls,
+        motions: Sequence[Motion],
+        layout: FunctionLayout,
+        values: list[np.ndarray],
+        basis: BSplineBasis,
         n_frames: int | None,
     ) -> "FunctionalMotions":
         """:meth:`from_motions` with the clips' function values (:func:`_function_values`)
@@ -214,9 +224,7 @@ class FunctionalMotions:
         return [Motion(skeleton=skeleton, root_pos=r, rotations=q, fps=fps) for r, q in zip(root, quats)]
 
 
-def bspline_fit_rmse(
-    motions: Sequence[Motion], n_basis: int | Sequence[int], degree: int = 3
-) -> float | np.ndarray:
+def bspline_fit_rmse(motions: Sequence[Motion], n_basis: int | Sequence[int], degree: int = 3) -> float | np.ndarray:
     """Joint-space RMSE (cm) between each clip's frames and its B-spline representation
     evaluated at the same frames (Fig. 3.9): sqrt of the mean squared joint distance over
     clips, frames and joints; one value per entry of ``n_basis`` (a float for an int)."""

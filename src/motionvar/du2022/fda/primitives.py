@@ -64,8 +64,9 @@ def canonical_primitives(
             warped = [apply_warp(m, w, clip_id=c) for m, w, c in zip(motions, warps, ids)]
         else:
             ref = median_length_index(motions)
-            warped = [resample_motion(m, motions[ref].n_frames, keep_duration=False, clip_id=c)
-                      for m, c in zip(motions, ids)]
+            warped = [
+                resample_motion(m, motions[ref].n_frames, keep_duration=False, clip_id=c) for m, c in zip(motions, ids)
+            ]
         rows = meta.iloc[idx].copy()
         rows["source_frames"] = rows["n_frames"]
         rows["canonical_reference"] = meta["clip_id"].iloc[idx[ref]]
@@ -77,9 +78,7 @@ def canonical_primitives(
     return out_motions, pd.concat(out_rows, ignore_index=True)
 
 
-def choose_basis_sizes(
-    dataset, n_basis: Sequence[int], min_relative_drop: float
-) -> tuple[pd.DataFrame, pd.DataFrame]:
+def choose_basis_sizes(dataset, n_basis: Sequence[int], min_relative_drop: float) -> tuple[pd.DataFrame, pd.DataFrame]:
     """Sec. 3.3.3, Fig. 3.9: for every primitive of the canonical ``dataset`` the joint-space
     RMSE (cm) of its B-spline functions for each candidate K in ``n_basis`` (those not above
     the canonical frames), and the K chosen by the cut-off rule (:func:`choose_n_basis`).
@@ -94,10 +93,27 @@ def choose_basis_sizes(
         rmse = bspline_fit_rmse(motions, ks)
         K = choose_n_basis(np.array(ks), np.array(rmse), min_relative_drop)
         behaviour = meta["behaviour"].iloc[0]
-        chosen.append({"primitive": primitive, "behaviour": behaviour, "n_basis": K, "n_clips": len(motions),
-                       "canonical_frames": T})
-        rows += [{"primitive": primitive, "behaviour": behaviour, "n_clips": len(motions), "canonical_frames": T,
-                  "n_basis": k, "rmse_cm": r, "chosen": k == K} for k, r in zip(ks, rmse)]
+        chosen.append(
+            {
+                "primitive": primitive,
+                "behaviour": behaviour,
+                "n_basis": K,
+                "n_clips": len(motions),
+                "canonical_frames": T,
+            }
+        )
+        rows += [
+            {
+                "primitive": primitive,
+                "behaviour": behaviour,
+                "n_clips": len(motions),
+                "canonical_frames": T,
+                "n_basis": k,
+                "rmse_cm": r,
+                "chosen": k == K,
+            }
+            for k, r in zip(ks, rmse)
+        ]
     return pd.DataFrame(rows), pd.DataFrame(chosen)
 
 

@@ -82,8 +82,15 @@ def _qmul_jm(a, b):
     torch = _torch()
     aw, ax, ay, az = a.unbind(0)
     bw, bx, by, bz = b.unbind(0)
-    return torch.stack((aw * bw - ax * bx - ay * by - az * bz, aw * bx + ax * bw + ay * bz - az * by,
-                        aw * by - ax * bz + ay * bw + az * bx, aw * bz + ax * by - ay * bx + az * bw), dim=0)
+    return torch.stack(
+        (
+            aw * bw - ax * bx - ay * by - az * bz,
+            aw * bx + ax * bw + ay * bz - az * by,
+            aw * by - ax * bz + ay * bw + az * bx,
+            aw * bz + ax * by - ay * bx + az * bw,
+        ),
+        dim=0,
+    )
 
 
 def _qrot_jm(q, v):
@@ -250,8 +257,17 @@ class SFPCA(FPCA):
 
     _EXTRA_SAVED = ("init_", "loss_raw_", "loss_normalized_", "loss_", "n_iter_")
     _OPTIONAL_SAVED = ("n_evals_", "converged_", "fit_time_s_", "stop_")
-    _SAVED_PARAMS = ("weight_groups", "gradient", "max_iter", "tol", "bounds", "n_eval_frames", "init",
-                     "stop_window", "stop_rtol")
+    _SAVED_PARAMS = (
+        "weight_groups",
+        "gradient",
+        "max_iter",
+        "tol",
+        "bounds",
+        "n_eval_frames",
+        "init",
+        "stop_window",
+        "stop_rtol",
+    )
 
     def __init__(
         self,
@@ -287,8 +303,11 @@ class SFPCA(FPCA):
         return f"init {self.init_}, {self.n_iter_} it{stalled}, loss {self.loss_:.4g} cm^2"
 
     def _check_params(self) -> None:
-        choices = {"weight_groups": ("function", "joint"), "gradient": ("autograd", "finite_difference"),
-                   "init": ("best", "raw", "normalized")}
+        choices = {
+            "weight_groups": ("function", "joint"),
+            "gradient": ("autograd", "finite_difference"),
+            "init": ("best", "raw", "normalized"),
+        }
         for name, allowed in choices.items():
             if getattr(self, name) not in allowed:
                 raise ValueError(f"SFPCA: {name} must be one of {allowed}; got {getattr(self, name)!r}")
@@ -306,10 +325,10 @@ class SFPCA(FPCA):
         torch = _torch()
         start = time.perf_counter()
         fd = self.gradient == "finite_difference"
-        objective = ObservationObjective(X, self.n_components, self.n_eval_frames,
-                                         dtype=torch.float64 if fd else torch.float32)
-        groups = (np.arange(X.layout.n_functions) if self.weight_groups == "function"
-                  else X.layout.function_groups())
+        objective = ObservationObjective(
+            X, self.n_components, self.n_eval_frames, dtype=torch.float64 if fd else torch.float32
+        )
+        groups = np.arange(X.layout.n_functions) if self.weight_groups == "function" else X.layout.function_groups()
         n_params = int(groups.max()) + 1
         raw = np.ones(X.layout.n_functions)
         # z-scoring per weight group: sigma_g^2 = mean variance of the group's functions
@@ -331,18 +350,26 @@ class SFPCA(FPCA):
             return w0 * scale[groups]
 
         if fd:
+
             def fun(u):
                 return objective.value(weights(u))
+
             jac = None
         else:
+
             def fun(u):
                 value, grad_w = objective.value_and_grad(weights(u))
                 return value, np.bincount(groups, weights=grad_w * w0, minlength=n_params)[free]
+
             jac = True
         stall = StallTest(int(self.stop_window), float(self.stop_rtol))
         result = minimize(
-            fun, np.ones(len(free)), jac=jac, method="L-BFGS-B",
-            bounds=[self.bounds] * len(free), callback=stall if stall.window else None,
+            fun,
+            np.ones(len(free)),
+            jac=jac,
+            method="L-BFGS-B",
+            bounds=[self.bounds] * len(free),
+            callback=stall if stall.window else None,
             options={"maxiter": int(self.max_iter), "ftol": float(self.tol)},
         )
         w = weights(result.x)

@@ -93,8 +93,14 @@ def reference_axes(rot: np.ndarray) -> np.ndarray:
     return qrot(rot[:, 0, None, :], _AXES)
 
 
-def kind_error(kind: str, pos: np.ndarray | None, rot: np.ndarray | None, target: np.ndarray,
-               mask: np.ndarray | None = None, axes: np.ndarray | None = None) -> np.ndarray:
+def kind_error(
+    kind: str,
+    pos: np.ndarray | None,
+    rot: np.ndarray | None,
+    target: np.ndarray,
+    mask: np.ndarray | None = None,
+    axes: np.ndarray | None = None,
+) -> np.ndarray:
     """(B,) errors of one constraint ``kind`` (module docstring) from the constrained joints'
     positions (B, J', 3) and rotations (B, J', 4) at the key frame (an orientation error
     reads only the rotations, or their :func:`reference_axes` ``axes`` where given; the
@@ -121,8 +127,15 @@ def _angle_2d(u: np.ndarray, v: np.ndarray) -> np.ndarray:
     return np.degrees(np.abs((a + np.pi) % (2 * np.pi) - np.pi))
 
 
-def _slot_errors(slots: Sequence[Constraint], targets: Sequence[np.ndarray], masks: Sequence[np.ndarray | None],
-                 pos: np.ndarray, rot: np.ndarray, frames: Sequence[int], joints: Sequence[int]) -> np.ndarray:
+def _slot_errors(
+    slots: Sequence[Constraint],
+    targets: Sequence[np.ndarray],
+    masks: Sequence[np.ndarray | None],
+    pos: np.ndarray,
+    rot: np.ndarray,
+    frames: Sequence[int],
+    joints: Sequence[int],
+) -> np.ndarray:
     """(B, n_c) errors of the constraints ``slots`` (kind, frame, joints) with ``targets`` and
     ``masks`` (one constraint's or per row) from key-frame poses: positions (B, F, J', 3)
     and rotations (B, F, J', 4) of ``joints`` at ``frames``. ValueError naming the
@@ -134,8 +147,10 @@ def _slot_errors(slots: Sequence[Constraint], targets: Sequence[np.ndarray], mas
         try:
             f, idx = fi[c.frame], [ji[j] for j in c.joints]
         except KeyError:
-            raise ValueError(f"constraint on frame {c.frame}, joints {c.joints} not precomputed (frames "
-                             f"{list(frames)}, joints {list(joints)})") from None
+            raise ValueError(
+                f"constraint on frame {c.frame}, joints {c.joints} not precomputed (frames "
+                f"{list(frames)}, joints {list(joints)})"
+            ) from None
         if c.kind == "orientation":
             out[:, k] = kind_error(c.kind, None, rot[:, f, idx], target, mask)
         else:
@@ -143,14 +158,16 @@ def _slot_errors(slots: Sequence[Constraint], targets: Sequence[np.ndarray], mas
     return out
 
 
-def constraint_errors(constraints: Sequence[Constraint], pos: np.ndarray, rot: np.ndarray, frames: Sequence[int],
-                      joints: Sequence[int]) -> np.ndarray:
+def constraint_errors(
+    constraints: Sequence[Constraint], pos: np.ndarray, rot: np.ndarray, frames: Sequence[int], joints: Sequence[int]
+) -> np.ndarray:
     """(B, n_c) errors of ``constraints`` (the terms of Eq. 4.2) from key-frame poses: global
     positions (B, F, J', 3) and rotations (B, F, J', 4) of ``joints`` at ``frames`` (as
     :meth:`MotionPrimitive.key_frame_pose` gives them). ValueError naming the constraint when
     its frame or joints are not among ``frames`` and ``joints``."""
-    return _slot_errors(constraints, [c.target for c in constraints], [c.active_mask for c in constraints],
-                        pos, rot, frames, joints)
+    return _slot_errors(
+        constraints, [c.target for c in constraints], [c.active_mask for c in constraints], pos, rot, frames, joints
+    )
 
 
 class ConstraintStack:
@@ -172,22 +189,34 @@ class ConstraintStack:
         for i, q in enumerate(queries):
             got = [(c.kind, c.frame, c.joints) for c in q]
             if got != shape:
-                raise ValueError(f"constraint stack: query {i} has constraints {got}, query 0 {shape}: stacked queries "
-                                 "need the same kinds, frames and joints")
+                raise ValueError(
+                    f"constraint stack: query {i} has constraints {got}, query 0 {shape}: stacked queries "
+                    "need the same kinds, frames and joints"
+                )
         self.n_queries = len(queries)
         self.targets = [np.stack([q[k].target for q in queries]) for k in range(len(shape))]
         masks = [[q[k].active_mask for q in queries] for k in range(len(shape))]
         # (Q, 1, 3): broadcasts over the joints of a row; None where no query of a slot masks
-        self.masks = [None if all(m is None for m in ms) else
-                      np.stack([np.ones(3) if m is None else m for m in ms])[:, None] for ms in masks]
+        self.masks = [
+            None if all(m is None for m in ms) else np.stack([np.ones(3) if m is None else m for m in ms])[:, None]
+            for ms in masks
+        ]
 
-    def errors(self, pos: np.ndarray, rot: np.ndarray, frames: Sequence[int], joints: Sequence[int],
-               query: np.ndarray) -> np.ndarray:
+    def errors(
+        self, pos: np.ndarray, rot: np.ndarray, frames: Sequence[int], joints: Sequence[int], query: np.ndarray
+    ) -> np.ndarray:
         """(B, n_c) errors of the poses ``pos`` (B, F, J', 3), ``rot`` (B, F, J', 4) (of
         ``joints`` at ``frames``) under the queries ``query`` (B,) (indices into the stack)."""
         query = np.asarray(query, dtype=np.int64)
-        return _slot_errors(self.slots, [t[query] for t in self.targets],
-                            [None if m is None else m[query] for m in self.masks], pos, rot, frames, joints)
+        return _slot_errors(
+            self.slots,
+            [t[query] for t in self.targets],
+            [None if m is None else m[query] for m in self.masks],
+            pos,
+            rot,
+            frames,
+            joints,
+        )
 
 
 class Objective:
@@ -218,8 +247,9 @@ class Objective:
         return self.errors(S).sum(axis=1)
 
 
-def constraint_from_sample(primitive: MotionPrimitive, s: np.ndarray, kind: str, frame: int,
-                           joints: Sequence[int]) -> Constraint:
+def constraint_from_sample(
+    primitive: MotionPrimitive, s: np.ndarray, kind: str, frame: int, joints: Sequence[int]
+) -> Constraint:
     """The constraint that latent vector ``s`` meets exactly (Sec. 4.6.2: "random
     constraints ... by sampling from the motion models")."""
     pos, rot = primitive.key_frame_pose(np.asarray(s)[None], [frame], list(joints))
@@ -230,8 +260,14 @@ def constraint_from_sample(primitive: MotionPrimitive, s: np.ndarray, kind: str,
     raise ValueError(f"constraint_from_sample: kind must be position or orientation; got {kind!r}")
 
 
-def random_constraints(primitive: MotionPrimitive, kind: str, n: int, joints: Sequence[int], frame: int,
-                       rng: np.random.Generator | int | None = None) -> list[Constraint]:
+def random_constraints(
+    primitive: MotionPrimitive,
+    kind: str,
+    n: int,
+    joints: Sequence[int],
+    frame: int,
+    rng: np.random.Generator | int | None = None,
+) -> list[Constraint]:
     """``n`` constraints of ``kind`` met by fresh GMM samples (Sec. 4.6.2). ``position`` and
     ``orientation`` constrain ``joints[0]``; ``pose`` constrains all ``joints``."""
     S = primitive.sample(n, rng)

@@ -13,8 +13,14 @@ from ...claims import EvaluationResult
 from ...plots import animate_motions, draw_pose, project
 from .evaluations.fig4_12 import CONSTRAINT_KINDS, METHODS
 
-METHOD_COLOURS = {"kmeans": "tab:blue", "gmm": "tab:orange", "median": "tab:green", "median_means": "tab:olive",
-                  "random": "tab:red", "brute_force": "0.5"}
+METHOD_COLOURS = {
+    "kmeans": "tab:blue",
+    "gmm": "tab:orange",
+    "median": "tab:green",
+    "median_means": "tab:olive",
+    "random": "tab:red",
+    "brute_force": "0.5",
+}
 UNITS = {"position": "cm", "orientation": "deg", "pose": "cm per joint"}
 AXIS = "xyz"
 
@@ -32,8 +38,9 @@ def draw_fig4_9(result: EvaluationResult) -> plt.Figure:
         a, b = p["axes"]
         dens = p["density"].T
         (x0, x1), (y0, y1) = p["bounds"]
-        ax.imshow(dens, origin="lower", extent=(x0, x1, y0, y1), cmap="viridis", aspect="equal",
-                  interpolation="bilinear")
+        ax.imshow(
+            dens, origin="lower", extent=(x0, x1, y0, y1), cmap="viridis", aspect="equal", interpolation="bilinear"
+        )
         ax.contour(p["x"], p["y"], dens, levels=[p["threshold"]], colors="white", linewidths=1.2)
         ax.scatter(p["training"][:, a], p["training"][:, b], s=6, c="red", edgecolors="none", label="training clips")
         ax.set_xlabel(f"{AXIS[a]} (cm)", fontsize=8)
@@ -42,8 +49,11 @@ def draw_fig4_9(result: EvaluationResult) -> plt.Figure:
         ax.set_title(f"{p['primitive']}, {p['joint']}, {p['view']}\ncoverage {p['coverage']:.2f}", fontsize=9)
         if n == 0:
             ax.legend(fontsize=7, loc="upper right")
-    fig.suptitle(f"Last-frame end effectors: density of {f['n_samples']} sampled motions (colour, white line: "
-                 f"{f['level']:.0%} region) and training clips (red)", fontsize=10)
+    fig.suptitle(
+        f"Last-frame end effectors: density of {f['n_samples']} sampled motions (colour, white line: "
+        f"{f['level']:.0%} region) and training clips (red)",
+        fontsize=10,
+    )
     fig.tight_layout()
     return fig
 
@@ -59,8 +69,14 @@ def draw_fig4_10(result: EvaluationResult) -> plt.Figure:
     ax0.plot(pos[:, hips, 0], pos[:, hips, 2], color="tab:blue", linewidth=1.5, label="hips of the generated walk")
     for (name, v), style in zip(f.get("variants", {}).items(), ("--", ":")):
         vp = v["walk"].positions()[:, hips]
-        ax0.plot(vp[:, 0], vp[:, 2], style, color="0.35", linewidth=1.0,
-                 label=f"hips, {name} walk ({v['mean_step_cm']:.1f} cm/step, max {v['max_deviation_cm']:.0f} cm off)")
+        ax0.plot(
+            vp[:, 0],
+            vp[:, 2],
+            style,
+            color="0.35",
+            linewidth=1.0,
+            label=f"hips, {name} walk ({v['mean_step_cm']:.1f} cm/step, max {v['max_deviation_cm']:.0f} cm off)",
+        )
     for (foot, j), colour in zip(f["feet"].items(), ("tab:cyan", "tab:red")):
         ax0.plot(pos[::4, j, 0], pos[::4, j, 2], ".", color=colour, markersize=2, label=foot.replace("_", " "))
     for st in steps:
@@ -69,9 +85,12 @@ def draw_fig4_10(result: EvaluationResult) -> plt.Figure:
     ax0.set_aspect("equal")
     ax0.set_xlabel("x (cm)")
     ax0.set_ylabel("z (cm)")
-    ax0.set_title(f"Path following: {len(steps)} primitives "
-                  f"({', '.join(s.primitive.replace('walk_', '') for s in steps[:3])}, ...)"
-                  + (f"\n{f['mode']}" if f.get("mode") else ""), fontsize=8)
+    ax0.set_title(
+        f"Path following: {len(steps)} primitives "
+        f"({', '.join(s.primitive.replace('walk_', '') for s in steps[:3])}, ...)"
+        + (f"\n{f['mode']}" if f.get("mode") else ""),
+        fontsize=8,
+    )
     ax0.legend(fontsize=7, loc="best")
     spacing = 90.0
     for k, (m, t) in enumerate(zip(f["reaches"], f["targets"])):
@@ -94,9 +113,13 @@ def draw_fig4_10(result: EvaluationResult) -> plt.Figure:
 def animate_fig4_10(result: EvaluationResult, path: str, max_seconds: float = 8.0, panel_px: int = 220) -> None:
     """Fig. 4.10 as a GIF at ``path``: the generated walk and the first two reaches."""
     reaches = result.figure["reaches"][:2]
-    animate_motions(path, [result.figure["walk"]] + reaches,
-                    labels=["path following"] + [f"reach {k + 1}" for k in range(len(reaches))],
-                    max_seconds=max_seconds, panel_px=panel_px)
+    animate_motions(
+        path,
+        [result.figure["walk"]] + reaches,
+        labels=["path following"] + [f"reach {k + 1}" for k in range(len(reaches))],
+        max_seconds=max_seconds,
+        panel_px=panel_px,
+    )
 
 
 def _fig4_12_boxes(queries) -> list[tuple[str, object, str]]:
@@ -129,14 +152,16 @@ def draw_fig4_12(result: EvaluationResult) -> plt.Figure:
             sub = sub_p[sub_p["kind"] == k]
             picked = [sub[(sub["method"] == m) & ((sub["beam"] == b) if b is not None else True)] for m, b, _ in boxes]
             data = [np.maximum(x["error"].to_numpy(), 1e-3) for x in picked]
-            bp = ax.boxplot(data, whis=(5, 95), showfliers=False, patch_artist=True,
-                            medianprops=dict(color="black", linewidth=2))
+            bp = ax.boxplot(
+                data, whis=(5, 95), showfliers=False, patch_artist=True, medianprops=dict(color="black", linewidth=2)
+            )
             for box, (m, _, _) in zip(bp["boxes"], boxes):
                 box.set_facecolor(METHOD_COLOURS[m])
                 box.set_alpha(0.6)
             ax.set_xticks(range(1, len(boxes) + 1))
-            ax.set_xticklabels([f"{lab}\n{x['n_evals'].mean():.0f} ev." for (_, _, lab), x in zip(boxes, picked)],
-                               fontsize=6)
+            ax.set_xticklabels(
+                [f"{lab}\n{x['n_evals'].mean():.0f} ev." for (_, _, lab), x in zip(boxes, picked)], fontsize=6
+            )
             ax.set_yscale("log")
             ax.yaxis.set_major_formatter(matplotlib.ticker.FormatStrFormatter("%g"))
             ax.yaxis.set_minor_locator(matplotlib.ticker.LogLocator(subs=(2.0, 5.0)))
@@ -146,10 +171,13 @@ def draw_fig4_12(result: EvaluationResult) -> plt.Figure:
             ax.set_title(f"{p} - {k}", fontsize=9)
             ax.set_ylabel(f"error ({UNITS[k]})", fontsize=8)
     n = int(len(queries[(queries["method"] == "random")]) / max(1, len(prims) * len(kinds)))
-    fig.suptitle(f"Search outcome over {queries['n_evals'].max():.0f} latent samples, {n} random constraints per "
-                 "panel (boxes: quartiles, whiskers 5-95 %, bar: median; ev. = mean objective evaluations)\n"
-                 "b = beam, * = beam of the verdicts (the largest under the evaluation budget); median (kd) = the "
-                 "median tree as DFKI's kd-tree (verdicts), median (means) = our variant", fontsize=8)
+    fig.suptitle(
+        f"Search outcome over {queries['n_evals'].max():.0f} latent samples, {n} random constraints per "
+        "panel (boxes: quartiles, whiskers 5-95 %, bar: median; ev. = mean objective evaluations)\n"
+        "b = beam, * = beam of the verdicts (the largest under the evaluation budget); median (kd) = the "
+        "median tree as DFKI's kd-tree (verdicts), median (means) = our variant",
+        fontsize=8,
+    )
     fig.tight_layout()
     return fig
 
@@ -163,15 +191,18 @@ def draw_sec4_6_1(result: EvaluationResult) -> plt.Figure:
     ax.bar(x - 0.2, t["data_bytes"] / 1e6, 0.4, label="clips (float64 arrays)", color="tab:gray")
     ax.bar(x + 0.2, t["model_bytes"] / 1e6, 0.4, label="model (npz + json)", color="tab:blue")
     for i, r in enumerate(t["ratio"]):
-        ax.text(i, max(t["data_bytes"].iloc[i], t["model_bytes"].iloc[i]) / 1e6 * 1.15, f"{r:.0f}x",
-                ha="center", fontsize=8)
+        ax.text(
+            i, max(t["data_bytes"].iloc[i], t["model_bytes"].iloc[i]) / 1e6 * 1.15, f"{r:.0f}x", ha="center", fontsize=8
+        )
     ax.set_yscale("log")
     ax.set_xticks(x)
     ax.set_xticklabels(t["primitive"], rotation=30, ha="right", fontsize=8)
     ax.set_ylabel("MB (log scale)")
-    ax.set_title(f"Model vs data size: {total['model_bytes'] / 1e6:.2f} MB of models for "
-                 f"{total['data_bytes'] / 1e6:.1f} MB of clips ({total['ratio']:.0f}x; thesis: 41 MB vs 4.2 GB)",
-                 fontsize=9)
+    ax.set_title(
+        f"Model vs data size: {total['model_bytes'] / 1e6:.2f} MB of models for "
+        f"{total['data_bytes'] / 1e6:.1f} MB of clips ({total['ratio']:.0f}x; thesis: 41 MB vs 4.2 GB)",
+        fontsize=9,
+    )
     ax.legend(fontsize=8)
     fig.tight_layout()
     return fig

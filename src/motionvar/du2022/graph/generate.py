@@ -17,7 +17,13 @@ import numpy as np
 from ...core.joint_map import JointMap
 from ...core.motion import Motion
 from .morphable_graph import (
-    MorphableGraph, Path2D, StepResult, WalkSettings, concatenate_steps, follow_path, step_length,
+    MorphableGraph,
+    Path2D,
+    StepResult,
+    WalkSettings,
+    concatenate_steps,
+    follow_path,
+    step_length,
 )
 from .primitive import MotionPrimitive
 from .trees import SpacePartitioningTree
@@ -50,8 +56,9 @@ def walk_settings(settings: Mapping[str, object], max_steps: int | None = None) 
     return WalkSettings(**kw)
 
 
-def steps_for_path(primitives: Mapping[str, MotionPrimitive], path: Path2D, joint_map: JointMap,
-                   settings: WalkSettings) -> int:
+def steps_for_path(
+    primitives: Mapping[str, MotionPrimitive], path: Path2D, joint_map: JointMap, settings: WalkSettings
+) -> int:
     """How many steps ``path`` takes. With the end primitive modelled the walk ends itself
     when the path's end is within a step (:func:`~.morphable_graph.follow_path`): a bound
     of twice the path over the shortest step, plus the start and end steps. Without it the
@@ -62,13 +69,18 @@ def steps_for_path(primitives: Mapping[str, MotionPrimitive], path: Path2D, join
     hips = joint_map.index(sk, "hips")
     lengths = [step_length(primitives[n], hips) for n in settings.cyclic if n in primitives]
     if not lengths:
-        raise ValueError(f"walk: none of the stepping primitives {list(settings.cyclic)} is modelled "
-                         f"(have {', '.join(sorted(primitives))})")
+        raise ValueError(
+            f"walk: none of the stepping primitives {list(settings.cyclic)} is modelled "
+            f"(have {', '.join(sorted(primitives))})"
+        )
     if settings.end in primitives:
         return int(np.ceil(2.0 * path.length / max(min(lengths), 1.0))) + 2
     start = step_length(primitives[settings.start], hips) if settings.start in primitives else 0.0
-    return max(1, int(round(max(path.length - start, 0.0) / max(float(np.median(lengths)), 1.0)))
-               + (settings.start in primitives))
+    return max(
+        1,
+        int(round(max(path.length - start, 0.0) / max(float(np.median(lengths)), 1.0)))
+        + (settings.start in primitives),
+    )
 
 
 @dataclass
@@ -101,8 +113,10 @@ def walk_along_path(
     called after each tree and after the walk."""
     names = [n for n in (settings.start, *settings.cyclic, settings.end) if n in primitives]
     if not any(n in names for n in settings.cyclic):
-        raise ValueError(f"walk: none of the stepping primitives {list(settings.cyclic)} is modelled "
-                         f"(have {', '.join(sorted(primitives))})")
+        raise ValueError(
+            f"walk: none of the stepping primitives {list(settings.cyclic)} is modelled "
+            f"(have {', '.join(sorted(primitives))})"
+        )
     rng = np.random.default_rng([seed, 410])
     total = len(names) + 1
     trees = {}

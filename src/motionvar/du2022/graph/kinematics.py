@@ -12,7 +12,6 @@ from collections.abc import Sequence
 import numpy as np
 
 
-
 def _qmul(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     """Hamilton product (..., 4), scalar first (as core.quaternions.qmul, fewer temporaries)."""
     aw, ax, ay, az = a[..., 0], a[..., 1], a[..., 2], a[..., 3]

@@ -59,8 +59,9 @@ class MorphableGraph:
     primitives: dict[str, MotionPrimitive] = field(default_factory=dict)
 
     @classmethod
-    def from_metadata(cls, metadata: pd.DataFrame, primitives: Mapping[str, MotionPrimitive] | None = None
-                      ) -> "MorphableGraph":
+    def from_metadata(
+        cls, metadata: pd.DataFrame, primitives: Mapping[str, MotionPrimitive] | None = None
+    ) -> "MorphableGraph":
         """Transitions between consecutive primitives of each source clip (prep metadata:
         source_clip, primitive, start_frame)."""
         missing = [c for c in ("source_clip", "primitive", "start_frame") if c not in metadata.columns]
@@ -113,9 +114,15 @@ class StepResult:
     step_errors: np.ndarray | None = None
 
 
-def synthesize_step(primitive: MotionPrimitive, tree: SpacePartitioningTree, constraints: Sequence[Constraint],
-                    beam: int = 2, likelihood_weight: float = 1.0, method: str = "lm",
-                    max_nfev: int = 200) -> tuple[MapResult, float, int]:
+def synthesize_step(
+    primitive: MotionPrimitive,
+    tree: SpacePartitioningTree,
+    constraints: Sequence[Constraint],
+    beam: int = 2,
+    likelihood_weight: float = 1.0,
+    method: str = "lm",
+    max_nfev: int = 200,
+) -> tuple[MapResult, float, int]:
     """Tree search (Eq. 4.2) then LM on Eq. 4.9 from the best candidate (Sec. 4.5.3)."""
     found = tree.search(Objective(primitive, constraints), beam)
     fit = optimize_map(primitive, constraints, found.latent, likelihood_weight, method, max_nfev)
@@ -230,8 +237,14 @@ class WalkSettings:
 class _Walker:
     """State and helpers of one :func:`follow_path` run."""
 
-    def __init__(self, graph: MorphableGraph, trees: Mapping[str, SpacePartitioningTree], path: Path2D,
-                 joint_map: JointMap, st: WalkSettings) -> None:
+    def __init__(
+        self,
+        graph: MorphableGraph,
+        trees: Mapping[str, SpacePartitioningTree],
+        path: Path2D,
+        joint_map: JointMap,
+        st: WalkSettings,
+    ) -> None:
         self.graph, self.trees, self.path, self.st = graph, trees, path, st
         self.usable = [n for n in (st.start, *st.cyclic, st.end) if n in graph.primitives and n in trees]
         if not any(n in self.usable for n in st.cyclic):
@@ -240,8 +253,10 @@ class _Walker:
         self.joints = tuple(joint_map.index(sk, k) for k in ("hips", "left_hip", "right_hip"))
         self.lengths = {n: step_length(graph.primitives[n], self.joints[0]) for n in self.usable}
         self.cyclic_len = float(np.median([self.lengths[n] for n in st.cyclic if n in self.lengths]))
-        self.means = {n: (graph.primitives[n].gmm_.weights_[:, None] * graph.primitives[n].gmm_.means_).sum(axis=0)
-                      for n in self.usable}
+        self.means = {
+            n: (graph.primitives[n].gmm_.weights_[:, None] * graph.primitives[n].gmm_.means_).sum(axis=0)
+            for n in self.usable
+        }
 
     def options(self, node: str | None, remaining: float) -> list[str]:
         st = self.st
@@ -278,8 +293,9 @@ class _Walker:
         (Sec. 4.5.1, Eq. 4.2 summed over the steps)."""
         best = None
         for seq in self.sequences(node, progress, int(self.st.look_ahead)):
-            chain = StepChain([self.graph.primitives[n] for n in seq], self.goals(seq, progress), pos, heading,
-                              *self.joints)
+            chain = StepChain(
+                [self.graph.primitives[n] for n in seq], self.goals(seq, progress), pos, heading, *self.joints
+            )
             err = float(chain.errors(np.concatenate([self.means[n] for n in seq])[None]).sum())
             if best is None or err < best[0]:
                 best = (err, seq)
@@ -291,8 +307,13 @@ class _Walker:
         return cons, self.trees[name].search(Objective(prim, cons), self.st.beam)
 
 
-def follow_path(graph: MorphableGraph, trees: Mapping[str, SpacePartitioningTree], path: Path2D,
-                joint_map: JointMap, settings: WalkSettings | None = None) -> list[StepResult]:
+def follow_path(
+    graph: MorphableGraph,
+    trees: Mapping[str, SpacePartitioningTree],
+    path: Path2D,
+    joint_map: JointMap,
+    settings: WalkSettings | None = None,
+) -> list[StepResult]:
     """Graph-walk generation for a floor path (Algorithm 1, one "walk" action; module
     docstring). Returns the steps in world coordinates."""
     st = settings or WalkSettings()
@@ -319,8 +340,11 @@ def follow_path(graph: MorphableGraph, trees: Mapping[str, SpacePartitioningTree
             chain = StepChain([graph.primitives[n] for n in plan], goals, pos, heading, *w.joints)
             joint = optimize_chain(chain, seeds, st.likelihood_weight, st.joint_method, st.joint_max_nfev)
             fit = _with_latent(prim, cons, fit, joint.latents[0])
-        steps.append(StepResult(name, prim.to_motions(fit.latent[None])[0], cons, fit, found.error, found.n_evals,
-                                goals[0], step_errors))
+        steps.append(
+            StepResult(
+                name, prim.to_motions(fit.latent[None])[0], cons, fit, found.error, found.n_evals, goals[0], step_errors
+            )
+        )
         starts.append((pos, heading))
         pos, heading = _step_end(prim, fit.latent, pos, heading, w.joints)
         progress = max(progress, path.project(pos))
@@ -332,10 +356,10 @@ def follow_path(graph: MorphableGraph, trees: Mapping[str, SpacePartitioningTree
         first = len(steps) - n_joint
         window = steps[first:]
         p0, h0 = starts[first]
-        chain = StepChain([graph.primitives[s.primitive] for s in window], [s.goal for s in window], p0, h0,
-                          *w.joints)
-        joint = optimize_chain(chain, [s.fit.latent for s in window], st.likelihood_weight, st.joint_method,
-                               st.joint_max_nfev)
+        chain = StepChain([graph.primitives[s.primitive] for s in window], [s.goal for s in window], p0, h0, *w.joints)
+        joint = optimize_chain(
+            chain, [s.fit.latent for s in window], st.likelihood_weight, st.joint_method, st.joint_max_nfev
+        )
         pos, heading = p0, h0
         for k, (s, z) in enumerate(zip(window, joint.latents)):
             prim = graph.primitives[s.primitive]
@@ -350,12 +374,17 @@ def follow_path(graph: MorphableGraph, trees: Mapping[str, SpacePartitioningTree
 def _with_latent(prim: MotionPrimitive, cons: Sequence[Constraint], fit: MapResult, latent: np.ndarray) -> MapResult:
     """``fit`` with a new final latent vector (errors_before kept: the tree seed's)."""
     after = Objective(prim, cons).errors(latent[None])[0]
-    return replace(fit, latent=np.asarray(latent, dtype=float).copy(), errors_after=after,
-                   log_prob_after=float(prim.log_prob(latent[None])[0]))
+    return replace(
+        fit,
+        latent=np.asarray(latent, dtype=float).copy(),
+        errors_after=after,
+        log_prob_after=float(prim.log_prob(latent[None])[0]),
+    )
 
 
-def _step_end(prim: MotionPrimitive, latent: np.ndarray, pos: np.ndarray, heading: np.ndarray,
-              joints: tuple[int, int, int]) -> tuple[np.ndarray, np.ndarray]:
+def _step_end(
+    prim: MotionPrimitive, latent: np.ndarray, pos: np.ndarray, heading: np.ndarray, joints: tuple[int, int, int]
+) -> tuple[np.ndarray, np.ndarray]:
     """World floor position and heading (x, 0, z) where a step placed at ``pos`` with
     ``heading`` ends (its last canonical frame): the next step's placement."""
     loc, face = step_end_local(prim, np.asarray(latent)[None], *joints)
@@ -366,8 +395,9 @@ def _step_end(prim: MotionPrimitive, latent: np.ndarray, pos: np.ndarray, headin
     return end, np.array([f[0], 0.0, f[1]])
 
 
-def _goal_constraints(prim: MotionPrimitive, goal: StepGoal, pos: np.ndarray, heading: np.ndarray, hips: int,
-                      lh: int, rh: int) -> list[Constraint]:
+def _goal_constraints(
+    prim: MotionPrimitive, goal: StepGoal, pos: np.ndarray, heading: np.ndarray, hips: int, lh: int, rh: int
+) -> list[Constraint]:
     """A world step goal as the hips floor position and heading constraints at the step's
     last canonical frame, in the step's aligned frame (Sec. 4.5.1)."""
     last = prim.n_frames - 1

@@ -44,11 +44,11 @@ from threadpoolctl import threadpool_limits
 from ...core.motion import Motion
 from ...core.quaternions import qnormalize
 from ...core.skeleton import Skeleton
-from ...io.dataset import MotionDataset
 from ...io.atomic import atomic_write
+from ...io.dataset import MotionDataset
 from ...io.model_file import load_model, model_base
-from ..fda import SFPCA, BSplineBasis, FunctionalMotions, frame_times
 from ...prep import apply_warp, warp_to_median
+from ..fda import SFPCA, BSplineBasis, FunctionalMotions, frame_times
 from .kinematics import chain_fk
 
 FORMAT_VERSION = 1
@@ -96,8 +96,9 @@ class PrimitiveOptions:
             raise ValueError(f"n_basis must be >= 4 (cubic B-splines); got {self.n_basis}")
 
 
-def select_gmm(X: np.ndarray, k_range: tuple[int, int], criterion: str = "bic", reg_covar: float = 1e-6,
-               seed: int = 0) -> tuple[GaussianMixture, dict[int, float]]:
+def select_gmm(
+    X: np.ndarray, k_range: tuple[int, int], criterion: str = "bic", reg_covar: float = 1e-6, seed: int = 0
+) -> tuple[GaussianMixture, dict[int, float]]:
     """Full-covariance GMMs for K = min..max (capped at the number of points) fitted by
     EM; returns the one with the lowest BIC (or AIC) and every K's score (Eq. 4.1)."""
     from sklearn.mixture import GaussianMixture
@@ -141,21 +142,26 @@ def gmm_log_density(gmm: GaussianMixture, X: np.ndarray) -> np.ndarray:
     return np.squeeze(np.log1p(total) + np.log(m) + top, axis=1)
 
 
-def primitive_clips(dataset: MotionDataset, primitive: str,
-                    source: str = "dataset") -> tuple[list[Motion], pd.DataFrame]:
+def primitive_clips(
+    dataset: MotionDataset, primitive: str, source: str = "dataset"
+) -> tuple[list[Motion], pd.DataFrame]:
     """(motions, metadata rows) of one primitive from a loaded dataset
     ; ValueError naming ``source`` (its file) and the
     primitives it has when there are fewer than 3 clips."""
     mask = (dataset.metadata["primitive"] == primitive).to_numpy()
     if mask.sum() < 3:
         have = dataset.metadata["primitive"].value_counts().to_dict()
-        raise ValueError(f"{source}: {int(mask.sum())} clips of primitive {primitive!r} (need >= 3; config "
-                         f"graph.primitives / graph.search.primitives); clips per primitive: {have}")
+        raise ValueError(
+            f"{source}: {int(mask.sum())} clips of primitive {primitive!r} (need >= 3; config "
+            f"graph.primitives / graph.search.primitives); clips per primitive: {have}"
+        )
     pairs = dataset.select(mask)
     short = [f"{row['clip_id']} ({m.n_frames} frame(s))" for row, m in pairs if m.n_frames < 2]
     if short:
-        raise ValueError(f"{source}: clips {', '.join(short)} of primitive {primitive!r} have fewer than 2 frames; "
-                         "DTW needs at least 2 (config prep.min_primitive_s drops such primitives)")
+        raise ValueError(
+            f"{source}: clips {', '.join(short)} of primitive {primitive!r} have fewer than 2 frames; "
+            "DTW needs at least 2 (config prep.min_primitive_s drops such primitives)"
+        )
     return [m for _, m in pairs], dataset.metadata[mask].reset_index(drop=True)
 
 
@@ -185,10 +191,21 @@ class MotionPrimitive:
     ``training_latent_`` (N, n) training scores (not saved: the model holds no data).
     """
 
-    def __init__(self, name: str, skeleton: Skeleton, fps: float, n_frames: int, basis: BSplineBasis,
-                 mean: np.ndarray, weights: np.ndarray, components: np.ndarray, gmm: GaussianMixture,
-                 explained_variance_ratio: np.ndarray | None = None, gmm_scores: dict[int, float] | None = None,
-                 options: PrimitiveOptions | None = None) -> None:
+    def __init__(
+        self,
+        name: str,
+        skeleton: Skeleton,
+        fps: float,
+        n_frames: int,
+        basis: BSplineBasis,
+        mean: np.ndarray,
+        weights: np.ndarray,
+        components: np.ndarray,
+        gmm: GaussianMixture,
+        explained_variance_ratio: np.ndarray | None = None,
+        gmm_scores: dict[int, float] | None = None,
+        options: PrimitiveOptions | None = None,
+    ) -> None:
         self.name = name
         self.skeleton = skeleton
         self.fps = float(fps)
@@ -198,8 +215,11 @@ class MotionPrimitive:
         self.weights_ = np.asarray(weights, dtype=float)
         self.components_ = np.asarray(components, dtype=float)
         self.gmm_ = gmm
-        self.explained_variance_ratio_ = (np.zeros(len(components)) if explained_variance_ratio is None
-                                          else np.asarray(explained_variance_ratio, dtype=float))
+        self.explained_variance_ratio_ = (
+            np.zeros(len(components))
+            if explained_variance_ratio is None
+            else np.asarray(explained_variance_ratio, dtype=float)
+        )
         self.gmm_scores_ = dict(gmm_scores or {})
         self.options = options or PrimitiveOptions()
         self.training_latent_: np.ndarray | None = None
@@ -212,8 +232,13 @@ class MotionPrimitive:
 
     # ---- fitting ---------------------------------------------------------------------
     @classmethod
-    def fit(cls, motions: Sequence[Motion], name: str = "primitive",
-            options: PrimitiveOptions | None = None, clip_ids: Sequence[str] | None = None) -> "MotionPrimitive":
+    def fit(
+        cls,
+        motions: Sequence[Motion],
+        name: str = "primitive",
+        options: PrimitiveOptions | None = None,
+        clip_ids: Sequence[str] | None = None,
+    ) -> "MotionPrimitive":
         """Fit the primitive to aligned clips of one primitive (module docstring, steps 1-4);
         ``clip_ids`` name the clips in errors (else "<name> #<index>")."""
         opt = options or PrimitiveOptions()
@@ -224,32 +249,49 @@ class MotionPrimitive:
         ref, warps = warp_to_median(motions, window=opt.dtw_window, clip_ids=ids)
         n_ref = motions[ref].n_frames
         if n_ref < opt.n_basis:
-            raise ValueError(f"primitive {name}: the canonical clip has {n_ref} frames, fewer than "
-                             f"n_basis = {opt.n_basis}")
+            raise ValueError(
+                f"primitive {name}: the canonical clip has {n_ref} frames, fewer than n_basis = {opt.n_basis}"
+            )
         warped = [apply_warp(m, w, clip_id=c) for m, w, c in zip(motions, warps, ids)]
         fd = FunctionalMotions.from_motions(warped, opt.n_basis, n_frames=n_ref)
         n = int(min(opt.n_components, len(motions) - 1, fd.coefs.shape[1] * fd.coefs.shape[2]))
-        sfpca = SFPCA(n_components=n, max_iter=opt.sfpca_max_iter, weight_groups=opt.sfpca_weight_groups,
-                      n_eval_frames=opt.sfpca_eval_frames).fit(fd)
+        sfpca = SFPCA(
+            n_components=n,
+            max_iter=opt.sfpca_max_iter,
+            weight_groups=opt.sfpca_weight_groups,
+            n_eval_frames=opt.sfpca_eval_frames,
+        ).fit(fd)
         time_coefs = fd.basis.fit(np.stack(warps)[..., None])  # (N, K, 1): f(t) in source frames
         coefs = np.concatenate([fd.coefs, time_coefs], axis=-1)  # Y'(t)
         w_sp = sfpca.function_weights_
         gram_sqrt, _ = fd.basis.gram_sqrt()
         centred = np.einsum("kl,nld->nkd", gram_sqrt, coefs - coefs.mean(axis=0))
-        var = (centred ** 2).sum(axis=(0, 1)) / len(coefs)  # functional variance per function
-        w_t = np.sqrt(np.mean(var[:-1] * w_sp ** 2) / max(var[-1], 1e-12)) if var[-1] > 1e-12 else 1.0
+        var = (centred**2).sum(axis=(0, 1)) / len(coefs)  # functional variance per function
+        w_t = np.sqrt(np.mean(var[:-1] * w_sp**2) / max(var[-1], 1e-12)) if var[-1] > 1e-12 else 1.0
         weights = np.append(w_sp, w_t)
         Z = (centred * weights).reshape(len(coefs), -1)
         _, sv, vt = np.linalg.svd(Z, full_matrices=False)
         comps = vt[:n]
         comps *= np.where(comps[np.arange(n), np.argmax(np.abs(comps), axis=1)] < 0, -1.0, 1.0)[:, None]
-        evr = sv[:n] ** 2 / max(float(np.sum(sv ** 2)), 1e-300)
+        evr = sv[:n] ** 2 / max(float(np.sum(sv**2)), 1e-300)
         latent = Z @ comps.T
         reg = opt.reg_covar * float(np.mean(np.var(latent, axis=0)))
         gmm, scores = select_gmm(latent, opt.gmm_components, opt.gmm_criterion, reg, opt.seed)
         sk = motions[0].skeleton.with_offsets(fd.offsets.mean(axis=0))
-        model = cls(name, sk, motions[0].fps, n_ref, fd.basis, coefs.mean(axis=0), weights, comps, gmm,
-                    explained_variance_ratio=evr, gmm_scores=scores, options=opt)
+        model = cls(
+            name,
+            sk,
+            motions[0].fps,
+            n_ref,
+            fd.basis,
+            coefs.mean(axis=0),
+            weights,
+            comps,
+            gmm,
+            explained_variance_ratio=evr,
+            gmm_scores=scores,
+            options=opt,
+        )
         model.training_latent_ = latent
         return model
 
@@ -304,15 +346,17 @@ class MotionPrimitive:
         key = tuple(int(f) for f in frames)
         if key not in self._maps:
             if any(not 0 <= f < self.n_frames for f in key):
-                raise ValueError(f"primitive {self.name}: frames {key} outside the canonical timeline "
-                                 f"[0, {self.n_frames - 1}]")
+                raise ValueError(
+                    f"primitive {self.name}: frames {key} outside the canonical timeline [0, {self.n_frames - 1}]"
+                )
             B = self.basis.design(frame_times(self.n_frames)[list(key)])
             D = self.n_spatial
             self._maps[key] = (B @ self.mean_[:, :D], np.einsum("fk,nkd->nfd", B, self._eig[..., :D]))
         return self._maps[key]
 
-    def key_frame_pose(self, s: np.ndarray, frames: Sequence[int], joints: Sequence[int]
-                       ) -> tuple[np.ndarray, np.ndarray]:
+    def key_frame_pose(
+        self, s: np.ndarray, frames: Sequence[int], joints: Sequence[int]
+    ) -> tuple[np.ndarray, np.ndarray]:
         """Global positions (N, F, len(joints), 3) and rotations (N, F, len(joints), 4) of
         ``joints`` at canonical ``frames`` for latent vectors s: f_k(M(s)) of Eq. 4.2."""
         s = self._check_latent(s)
@@ -359,13 +403,28 @@ class MotionPrimitive:
         table always were (:func:`~motionvar.io.model_file.save_model` adds one)."""
         base = model_base(path)
         g = self.gmm_
-        arrays = dict(mean=self.mean_, weights=self.weights_, components=self.components_,
-                      explained_variance_ratio=self.explained_variance_ratio_, offsets=self.skeleton.offsets,
-                      parents=self.skeleton.parents, gmm_weights=g.weights_, gmm_means=g.means_,
-                      gmm_covariances=g.covariances_)
-        meta = dict(format_version=FORMAT_VERSION, name=self.name, joint_names=list(self.skeleton.names),
-                    fps=self.fps, n_frames=self.n_frames, n_basis=self.basis.n_basis, degree=self.basis.degree,
-                    gmm_scores={str(k): v for k, v in self.gmm_scores_.items()}, options=asdict(self.options))
+        arrays = dict(
+            mean=self.mean_,
+            weights=self.weights_,
+            components=self.components_,
+            explained_variance_ratio=self.explained_variance_ratio_,
+            offsets=self.skeleton.offsets,
+            parents=self.skeleton.parents,
+            gmm_weights=g.weights_,
+            gmm_means=g.means_,
+            gmm_covariances=g.covariances_,
+        )
+        meta = dict(
+            format_version=FORMAT_VERSION,
+            name=self.name,
+            joint_names=list(self.skeleton.names),
+            fps=self.fps,
+            n_frames=self.n_frames,
+            n_basis=self.basis.n_basis,
+            degree=self.basis.degree,
+            gmm_scores={str(k): v for k, v in self.gmm_scores_.items()},
+            options=asdict(self.options),
+        )
 
         def write_npz(tmp: Path) -> None:
             with open(tmp, "wb") as fh:  # a file object: np.savez would append .npz to the name
@@ -384,13 +443,24 @@ class MotionPrimitive:
         except (OSError, ValueError) as exc:
             raise ValueError(f"{base}: not a readable motion primitive ({exc})") from exc
         if meta.get("format_version") != FORMAT_VERSION:
-            raise ValueError(f"{base.with_suffix('.json')}: format_version {meta.get('format_version')} "
-                             f"(expected {FORMAT_VERSION})")
+            raise ValueError(
+                f"{base.with_suffix('.json')}: format_version {meta.get('format_version')} (expected {FORMAT_VERSION})"
+            )
         opts = dict(meta["options"])
         opts["gmm_components"] = tuple(opts["gmm_components"])
         sk = Skeleton(names=tuple(meta["joint_names"]), parents=a["parents"], offsets=a["offsets"])
         gmm = _gmm_from_arrays(a["gmm_weights"], a["gmm_means"], a["gmm_covariances"])
-        return cls(meta["name"], sk, meta["fps"], meta["n_frames"], BSplineBasis(meta["n_basis"], meta["degree"]),
-                   a["mean"], a["weights"], a["components"], gmm,
-                   explained_variance_ratio=a["explained_variance_ratio"],
-                   gmm_scores={int(k): v for k, v in meta["gmm_scores"].items()}, options=PrimitiveOptions(**opts))
+        return cls(
+            meta["name"],
+            sk,
+            meta["fps"],
+            meta["n_frames"],
+            BSplineBasis(meta["n_basis"], meta["degree"]),
+            a["mean"],
+            a["weights"],
+            a["components"],
+            gmm,
+            explained_variance_ratio=a["explained_variance_ratio"],
+            gmm_scores={int(k): v for k, v in meta["gmm_scores"].items()},
+            options=PrimitiveOptions(**opts),
+        )

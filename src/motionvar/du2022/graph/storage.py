@@ -36,17 +36,26 @@ def _counts(d: dict[str, int], p: str) -> dict[str, np.ndarray]:
     return {f"{p}.names": np.array(names, dtype=str), f"{p}.counts": np.array([d[n] for n in names], dtype=np.int64)}
 
 
-def save_graph(path: str | Path, graph: MorphableGraph, joint_map: JointMap, settings: dict | None = None) -> list[Path]:
+def save_graph(
+    path: str | Path, graph: MorphableGraph, joint_map: JointMap, settings: dict | None = None
+) -> list[Path]:
     """Write the graph's edges and node counts (``<base>.npz``) with ``joint_map`` and the
     JSON-able synthesis ``settings`` (``<base>.json``); returns both paths."""
     table = graph.edge_table()
-    arrays = {"edges.from": table["from"].to_numpy(dtype=str), "edges.to": table["to"].to_numpy(dtype=str),
-              "edges.count": table["count"].to_numpy(dtype=np.int64),
-              "nodes": np.array(graph.nodes, dtype=str), **_counts(graph.start_nodes, "start"),
-              **_counts(graph.end_nodes, "end")}
-    info = {"kind": KIND, "version": VERSION,
-            "joint_map": {"joints": dict(joint_map.joints), "groups": {g: list(v) for g, v in joint_map.groups.items()}},
-            "settings": dict(settings or {})}
+    arrays = {
+        "edges.from": table["from"].to_numpy(dtype=str),
+        "edges.to": table["to"].to_numpy(dtype=str),
+        "edges.count": table["count"].to_numpy(dtype=np.int64),
+        "nodes": np.array(graph.nodes, dtype=str),
+        **_counts(graph.start_nodes, "start"),
+        **_counts(graph.end_nodes, "end"),
+    }
+    info = {
+        "kind": KIND,
+        "version": VERSION,
+        "joint_map": {"joints": dict(joint_map.joints), "groups": {g: list(v) for g, v in joint_map.groups.items()}},
+        "settings": dict(settings or {}),
+    }
     return save_model(path, arrays, info)
 
 

@@ -64,20 +64,27 @@ ANCHOR_WEIGHT = 1e-3  # the padding rows of optimize_chain: a pull towards the s
 def on_grid(x: np.ndarray, bits: int = GRID_BITS) -> np.ndarray:
     """``x`` rounded to ``bits`` bits of mantissa (relative spacing 2^-bits; 0 stays 0)."""
     m, e = np.frexp(np.asarray(x, dtype=float))
-    return np.ldexp(np.round(m * 2.0 ** bits) / 2.0 ** bits, e)
+    return np.ldexp(np.round(m * 2.0**bits) / 2.0**bits, e)
 
 
-def map_residuals(primitive: MotionPrimitive, objective: Objective, S: np.ndarray,
-                  likelihood_weight: float) -> np.ndarray:
+def map_residuals(
+    primitive: MotionPrimitive, objective: Objective, S: np.ndarray, likelihood_weight: float
+) -> np.ndarray:
     """(B, n_c) residuals r_i(s) of the module docstring for latent vectors S (B, d)."""
     err = objective.errors(S)
     nll = -primitive.log_prob(S) - primitive.nll_reference()
     return err + likelihood_weight * np.maximum(nll, 0.0)[:, None] / err.shape[1]
 
 
-def optimize_map(primitive: MotionPrimitive, constraints: Sequence[Constraint], s0: np.ndarray,
-                 likelihood_weight: float = 1.0, method: str = "lm", max_nfev: int = 200,
-                 fd_step: float = 1e-4) -> MapResult:
+def optimize_map(
+    primitive: MotionPrimitive,
+    constraints: Sequence[Constraint],
+    s0: np.ndarray,
+    likelihood_weight: float = 1.0,
+    method: str = "lm",
+    max_nfev: int = 200,
+    fd_step: float = 1e-4,
+) -> MapResult:
     """Minimise Eq. 4.9 from ``s0`` with Levenberg-Marquardt ("lm") or scipy's "trf"."""
     if method not in ("lm", "trf"):
         raise ValueError(f"optimize_map: method must be 'lm' or 'trf'; got {method!r}")
@@ -105,10 +112,15 @@ def optimize_map(primitive: MotionPrimitive, constraints: Sequence[Constraint], 
     result = least_squares(fun, on_grid(s0), jac=jac, method=method, max_nfev=int(max_nfev))
     s = on_grid(result.x)
     after = objective.errors(s[None])[0]
-    return MapResult(latent=s, errors_before=before, errors_after=after,
-                     log_prob_before=float(primitive.log_prob(s0[None])[0]),
-                     log_prob_after=float(primitive.log_prob(s[None])[0]),
-                     n_evals=int(objective.n_evals), status=int(result.status))
+    return MapResult(
+        latent=s,
+        errors_before=before,
+        errors_after=after,
+        log_prob_before=float(primitive.log_prob(s0[None])[0]),
+        log_prob_after=float(primitive.log_prob(s[None])[0]),
+        n_evals=int(objective.n_evals),
+        status=int(result.status),
+    )
 
 
 _UP = np.array([0.0, 1.0, 0.0])
@@ -135,12 +147,18 @@ class StepGoal:
 def rotate_floor(v: np.ndarray, heading: np.ndarray) -> np.ndarray:
     """Floor vectors (..., 2) of a step's aligned frame (x, z; heading +x) in the world
     frame of a step placed with floor heading (..., 2) (unit; ``place_motion``'s turn)."""
-    return np.stack([v[..., 0] * heading[..., 0] - v[..., 1] * heading[..., 1],
-                     v[..., 0] * heading[..., 1] + v[..., 1] * heading[..., 0]], axis=-1)
+    return np.stack(
+        [
+            v[..., 0] * heading[..., 0] - v[..., 1] * heading[..., 1],
+            v[..., 0] * heading[..., 1] + v[..., 1] * heading[..., 0],
+        ],
+        axis=-1,
+    )
 
 
-def step_end_local(primitive: MotionPrimitive, S: np.ndarray, hips: int, left_hip: int, right_hip: int
-                   ) -> tuple[np.ndarray, np.ndarray]:
+def step_end_local(
+    primitive: MotionPrimitive, S: np.ndarray, hips: int, left_hip: int, right_hip: int
+) -> tuple[np.ndarray, np.ndarray]:
     """Hips floor position (B, 2) and unit facing (B, 2) (up x (left hip -> right hip), as
     the heading constraint) at the last canonical frame of latent vectors S (B, d), in the
     step's aligned frame."""
@@ -161,11 +179,20 @@ class StepChain:
     frame; ``residuals(X, w)`` adds each step's likelihood term as :func:`map_residuals`.
     """
 
-    def __init__(self, primitives: Sequence[MotionPrimitive], goals: Sequence[StepGoal], start_xz: np.ndarray,
-                 start_heading: np.ndarray, hips: int, left_hip: int, right_hip: int) -> None:
+    def __init__(
+        self,
+        primitives: Sequence[MotionPrimitive],
+        goals: Sequence[StepGoal],
+        start_xz: np.ndarray,
+        start_heading: np.ndarray,
+        hips: int,
+        left_hip: int,
+        right_hip: int,
+    ) -> None:
         if len(primitives) != len(goals) or not primitives:
-            raise ValueError(f"step chain: one goal per step and at least one step; got {len(primitives)} steps, "
-                             f"{len(goals)} goals")
+            raise ValueError(
+                f"step chain: one goal per step and at least one step; got {len(primitives)} steps, {len(goals)} goals"
+            )
         self.primitives, self.goals = list(primitives), list(goals)
         self.joints = (int(hips), int(left_hip), int(right_hip))
         h = np.asarray(start_heading, dtype=float).reshape(-1)
@@ -235,12 +262,18 @@ class ChainResult:
     def cost(self, which: str = "after") -> float:
         """Sum of squared constraint errors (without the likelihood term)."""
         e = self.errors_after if which == "after" else self.errors_before
-        return float(np.sum(e ** 2))
+        return float(np.sum(e**2))
 
 
-def optimize_chain(chain: StepChain, latents: Sequence[np.ndarray], likelihood_weight: float = 1.0,
-                   method: str = "lm", max_nfev: int = 100, fd_step: float = 1e-4,
-                   anchor_weight: float = ANCHOR_WEIGHT) -> ChainResult:
+def optimize_chain(
+    chain: StepChain,
+    latents: Sequence[np.ndarray],
+    likelihood_weight: float = 1.0,
+    method: str = "lm",
+    max_nfev: int = 100,
+    fd_step: float = 1e-4,
+    anchor_weight: float = ANCHOR_WEIGHT,
+) -> ChainResult:
     """Algorithm 1, line 9: minimise Eq. 4.9 summed over the steps of ``chain`` (module
     docstring) over their latent vectors together, from ``latents`` (one per step).
 
@@ -276,6 +309,12 @@ def optimize_chain(chain: StepChain, latents: Sequence[np.ndarray], likelihood_w
     x = on_grid(result.x)
     after = chain.errors(x[None])[0]
     lp_after = -(chain.nll(x[None])[0] + np.array([p.nll_reference() for p in chain.primitives]))
-    return ChainResult(latents=[v.copy() for v in chain.split(x)], errors_before=before, errors_after=after,
-                       log_prob_before=lp_before, log_prob_after=lp_after, n_evals=int(chain.n_evals),
-                       status=int(result.status))
+    return ChainResult(
+        latents=[v.copy() for v in chain.split(x)],
+        errors_before=before,
+        errors_after=after,
+        log_prob_before=lp_before,
+        log_prob_after=lp_after,
+        n_evals=int(chain.n_evals),
+        status=int(result.status),
+    )

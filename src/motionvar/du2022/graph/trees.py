@@ -122,8 +122,14 @@ class SpacePartitioningTree:
     BLAS/OpenMP threads made the many small clusterings 10-30x slower.
     """
 
-    def __init__(self, samples: np.ndarray, kind: str = "kmeans", n_children: int | None = None,
-                 leaf_size: int = 16, seed: int = 0) -> None:
+    def __init__(
+        self,
+        samples: np.ndarray,
+        kind: str = "kmeans",
+        n_children: int | None = None,
+        leaf_size: int = 16,
+        seed: int = 0,
+    ) -> None:
         if kind not in TREE_KINDS:
             raise ValueError(f"tree kind must be one of {TREE_KINDS}; got {kind!r}")
         X = np.asarray(samples, dtype=float)
@@ -205,7 +211,7 @@ class SpacePartitioningTree:
             kids = np.where((live & ~leaf)[..., None], kids_of[node], -1).reshape(len(q_all), -1)
             err = _evaluate_padded(evaluate, kids, offset=len(self.samples))
             n_evals += (kids >= 0).sum(axis=1)
-            order = np.lexsort((err, kids < 0), axis=-1)[:, :int(beam)]  # stable: as heapq.nsmallest
+            order = np.lexsort((err, kids < 0), axis=-1)[:, : int(beam)]  # stable: as heapq.nsmallest
             frontier = np.take_along_axis(kids, order, axis=1)
         return _results(self.samples, best, best_err, n_evals)
 
@@ -216,9 +222,9 @@ class SpacePartitioningTree:
             kids = np.full((self.n_nodes, max(len(c) for c in self.children)), -1, dtype=np.int64)
             leaf_samples = np.full((self.n_nodes, max(len(v) for v in self.leaves.values())), -1, dtype=np.int64)
             for n, c in enumerate(self.children):
-                kids[n, :len(c)] = c
+                kids[n, : len(c)] = c
             for n, idx in self.leaves.items():
-                leaf_samples[n, :len(idx)] = idx
+                leaf_samples[n, : len(idx)] = idx
             is_leaf = np.zeros(self.n_nodes, dtype=bool)
             is_leaf[list(self.leaves)] = True
             self._padded = (kids, leaf_samples, is_leaf)
@@ -263,7 +269,7 @@ class MedianKDTree:
             order = idx[np.argsort(X[idx, ax], kind="stable")]
             m = len(order) // 2
             self.point[node], self.axis[node] = order[m], ax
-            for side, part in ((self.left, order[:m]), (self.right, order[m + 1:])):
+            for side, part in ((self.left, order[:m]), (self.right, order[m + 1 :])):
                 if len(part):
                     side[node] = n_nodes
                     node_depth[n_nodes] = depth + 1
@@ -337,16 +343,19 @@ def _evaluate_padded(evaluate: BatchObjective, cand: np.ndarray, offset: int = 0
     return err
 
 
-def brute_force(samples: np.ndarray, objective: Callable[[np.ndarray], np.ndarray],
-                batch: int = 2500) -> SearchResult:
+def brute_force(samples: np.ndarray, objective: Callable[[np.ndarray], np.ndarray], batch: int = 2500) -> SearchResult:
     """Exact best of all ``samples`` (the ground truth of Fig. 4.12), in batches."""
-    errs = np.concatenate([objective(samples[i:i + batch]) for i in range(0, len(samples), batch)])
+    errs = np.concatenate([objective(samples[i : i + batch]) for i in range(0, len(samples), batch)])
     i = int(np.argmin(errs))
     return SearchResult(i, samples[i].copy(), float(errs[i]), len(samples))
 
 
-def random_search(primitive: MotionPrimitive, objective: Callable[[np.ndarray], np.ndarray], n: int = 100,
-                  rng: np.random.Generator | int | None = None) -> SearchResult:
+def random_search(
+    primitive: MotionPrimitive,
+    objective: Callable[[np.ndarray], np.ndarray],
+    n: int = 100,
+    rng: np.random.Generator | int | None = None,
+) -> SearchResult:
     """The best of ``n`` fresh samples of the primitive's GMM ("100 random samples are
     used in parallel", Sec. 4.6.2)."""
     S = primitive.sample(n, rng)
@@ -355,8 +364,12 @@ def random_search(primitive: MotionPrimitive, objective: Callable[[np.ndarray], 
     return SearchResult(-1, S[i].copy(), float(errs[i]), n)
 
 
-def random_search_many(primitive: MotionPrimitive, queries: Sequence[Sequence[Constraint]], n: int = 100,
-                       rng: np.random.Generator | int | None = None) -> list[SearchResult]:
+def random_search_many(
+    primitive: MotionPrimitive,
+    queries: Sequence[Sequence[Constraint]],
+    n: int = 100,
+    rng: np.random.Generator | int | None = None,
+) -> list[SearchResult]:
     """:func:`random_search` for many queries of the same structure (:class:`ConstraintStack`):
     ``n`` fresh GMM samples per query, drawn from ``rng`` query by query as one
     :func:`random_search` per query draws them, their key-frame poses computed in batches and
@@ -364,8 +377,9 @@ def random_search_many(primitive: MotionPrimitive, queries: Sequence[Sequence[Co
     rng = np.random.default_rng(rng)
     stack = ConstraintStack(queries)
     fresh = np.concatenate([primitive.sample(n, rng) for _ in range(stack.n_queries)])  # (Q n, d), query-major
-    index = KeyFramePositionIndex(primitive, fresh, sorted({c.frame for c in stack.slots}),
-                                  sorted({j for c in stack.slots for j in c.joints}))
+    index = KeyFramePositionIndex(
+        primitive, fresh, sorted({c.frame for c in stack.slots}), sorted({j for c in stack.slots for j in c.joints})
+    )
     rows = np.arange(len(fresh))
     err = index.objective_many(stack)(rows // n, rows).reshape(stack.n_queries, n)
     best = np.argmin(err, axis=1)
@@ -387,12 +401,20 @@ class KeyFramePositionIndex:
       (:meth:`SpacePartitioningTree.search_many`, :meth:`MedianKDTree.search_many`).
     """
 
-    def __init__(self, primitive: MotionPrimitive, samples: np.ndarray, frames: Sequence[int],
-                 joints: Sequence[int], batch: int = 2500) -> None:
+    def __init__(
+        self,
+        primitive: MotionPrimitive,
+        samples: np.ndarray,
+        frames: Sequence[int],
+        joints: Sequence[int],
+        batch: int = 2500,
+    ) -> None:
         self.samples = np.asarray(samples, dtype=float)
         self.frames, self.joints = [int(f) for f in frames], [int(j) for j in joints]
-        parts = [primitive.key_frame_pose(self.samples[i:i + batch], self.frames, self.joints)
-                 for i in range(0, len(self.samples), batch)]
+        parts = [
+            primitive.key_frame_pose(self.samples[i : i + batch], self.frames, self.joints)
+            for i in range(0, len(self.samples), batch)
+        ]
         self.positions = np.concatenate([p for p, _ in parts])  # (N, F, J', 3)
         self.rotations = np.concatenate([r for _, r in parts])
         self._inputs: dict[tuple, tuple[np.ndarray | None, np.ndarray | None]] = {}
@@ -405,11 +427,14 @@ class KeyFramePositionIndex:
             try:
                 f, idx = self.frames.index(c.frame), [self.joints.index(j) for j in c.joints]
             except ValueError:
-                raise ValueError(f"KeyFramePositionIndex: constraint on frame {c.frame}, joints {c.joints} not "
-                                 f"precomputed (frames {self.frames}, joints {self.joints})") from None
+                raise ValueError(
+                    f"KeyFramePositionIndex: constraint on frame {c.frame}, joints {c.joints} not "
+                    f"precomputed (frames {self.frames}, joints {self.joints})"
+                ) from None
             orient = c.kind == "orientation"
-            self._inputs[key] = (None, reference_axes(self.rotations[:, f, idx])) if orient else \
-                (self.positions[:, f, idx], None)
+            self._inputs[key] = (
+                (None, reference_axes(self.rotations[:, f, idx])) if orient else (self.positions[:, f, idx], None)
+            )
         return self._inputs[key]
 
     def errors(self, constraints: Sequence[Constraint]) -> np.ndarray:
@@ -423,6 +448,7 @@ class KeyFramePositionIndex:
     def objective_many(self, stack: ConstraintStack) -> BatchObjective:
         """O(s, c) of Eq. 4.2 for the queries of ``stack``: ``f(query, rows)`` -> (B,), query
         ``query[b]`` at sample ``rows[b]``."""
+
         def f(query: np.ndarray, rows: np.ndarray) -> np.ndarray:
             return stack.errors(self.positions[rows], self.rotations[rows], self.frames, self.joints, query).sum(axis=1)
 
@@ -439,7 +465,8 @@ class KeyFramePositionIndex:
         return SearchResult(i, self.samples[i].copy(), float(total[i]), 0)
 
 
-def tree_search(tree: SpacePartitioningTree, primitive: MotionPrimitive, constraints: Sequence[Constraint],
-                beam: int = 2) -> SearchResult:
+def tree_search(
+    tree: SpacePartitioningTree, primitive: MotionPrimitive, constraints: Sequence[Constraint], beam: int = 2
+) -> SearchResult:
     """Convenience: tree search with the Eq. 4.2 objective of ``constraints``."""
     return tree.search(Objective(primitive, constraints), beam)

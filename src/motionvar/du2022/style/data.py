@@ -23,7 +23,12 @@ from ...core.motion import Motion
 from ...io.dataset import MotionDataset
 from ...prep.resample import resample_motion
 from .features import (
-    FeatureLayout, motion_features, motions_features, positions_to_features, sliding_windows, style_joints,
+    FeatureLayout,
+    motion_features,
+    motions_features,
+    positions_to_features,
+    sliding_windows,
+    style_joints,
 )
 
 
@@ -44,7 +49,11 @@ def window_counts(dataset: MotionDataset, size: int = 60, stride: int = 30) -> n
 
 
 def training_windows(
-    dataset: MotionDataset, layout: FeatureLayout, size: int = 60, stride: int = 30, subset: np.ndarray | None = None,
+    dataset: MotionDataset,
+    layout: FeatureLayout,
+    size: int = 60,
+    stride: int = 30,
+    subset: np.ndarray | None = None,
 ) -> np.ndarray:
     """(W, size, C) windows of all clips' features (clips shorter than a window skipped),
     or with ``subset`` (sorted indices into those windows, numbered clip by clip) only these,
@@ -61,8 +70,10 @@ def training_windows(
         raise ValueError(f"training_windows: subset must be non-empty increasing indices below the {ends[-1]} windows")
     clip = np.searchsorted(ends, subset, side="right")
     first = ends - counts
-    out = [_clip_windows(dataset.motion(int(i)), layout, stride * (subset[clip == i] - first[i]), size)
-           for i in np.unique(clip)]
+    out = [
+        _clip_windows(dataset.motion(int(i)), layout, stride * (subset[clip == i] - first[i]), size)
+        for i in np.unique(clip)
+    ]
     return np.concatenate(out).astype(np.float32)
 
 
@@ -78,8 +89,9 @@ def _clip_windows(motion: Motion, layout: FeatureLayout, starts: np.ndarray, siz
     if at_end.any():
         frames = np.concatenate([frames, np.arange(T - size, T)])
     tr = None if motion.translations is None else motion.translations[frames]
-    pos = fk(motion.rotations[frames], motion.root_pos[frames], motion.skeleton.offsets, motion.skeleton.parents,
-             tr)[:, layout.joints]
+    pos = fk(motion.rotations[frames], motion.root_pos[frames], motion.skeleton.offsets, motion.skeleton.parents, tr)[
+        :, layout.joints
+    ]
     n = len(inner) * (size + 1)
     windows = []
     if len(inner):
@@ -104,16 +116,23 @@ def primitive_mask(metadata: pd.DataFrame, primitive: str, style: str | None = N
     return mask
 
 
-def primitive_clips(dataset: MotionDataset, primitive: str, style: str | None, n_frames: int) -> tuple[pd.DataFrame, list]:
+def primitive_clips(
+    dataset: MotionDataset, primitive: str, style: str | None, n_frames: int
+) -> tuple[pd.DataFrame, list]:
     """(metadata rows, Motions resampled to ``n_frames``) of one primitive and style."""
     idx = np.flatnonzero(primitive_mask(dataset.metadata, primitive, style))
     ids = dataset.metadata["clip_id"].astype(str).to_numpy()
     return dataset.metadata.iloc[idx].reset_index(drop=True), [
-        resample_motion(dataset.motion(int(i)), n_frames, clip_id=ids[i]) for i in idx]
+        resample_motion(dataset.motion(int(i)), n_frames, clip_id=ids[i]) for i in idx
+    ]
 
 
 def primitive_features(
-    dataset: MotionDataset, layout: FeatureLayout, primitive: str, style: str | None, n_frames: int,
+    dataset: MotionDataset,
+    layout: FeatureLayout,
+    primitive: str,
+    style: str | None,
+    n_frames: int,
 ) -> tuple[pd.DataFrame, np.ndarray]:
     """(metadata rows, features (N, n_frames, C)) of one primitive and style."""
     rows, motions = primitive_clips(dataset, primitive, style, n_frames)

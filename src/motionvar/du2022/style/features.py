@@ -39,11 +39,27 @@ from ...core.skeleton import Skeleton
 # The joint map's semantic joints in the order of the feature channels; the clavicles
 # (rig parents of the shoulders) are inserted before each shoulder.
 _ORDER = (
-    "hips", "spine", "chest", "neck", "head",
-    "left_clavicle", "left_shoulder", "left_elbow", "left_hand",
-    "right_clavicle", "right_shoulder", "right_elbow", "right_hand",
-    "left_hip", "left_knee", "left_ankle", "left_toe",
-    "right_hip", "right_knee", "right_ankle", "right_toe",
+    "hips",
+    "spine",
+    "chest",
+    "neck",
+    "head",
+    "left_clavicle",
+    "left_shoulder",
+    "left_elbow",
+    "left_hand",
+    "right_clavicle",
+    "right_shoulder",
+    "right_elbow",
+    "right_hand",
+    "left_hip",
+    "left_knee",
+    "left_ankle",
+    "left_toe",
+    "right_hip",
+    "right_knee",
+    "right_ankle",
+    "right_toe",
 )
 N_ROOT_CHANNELS = 3
 
@@ -114,7 +130,9 @@ def style_joints(skeleton: Skeleton, joint_map: JointMap) -> FeatureLayout:
     return FeatureLayout(
         joints=np.array(picked, dtype=np.int64),
         names=tuple(skeleton.names[j] for j in picked),
-        parents=parents, left=left, right=right,
+        parents=parents,
+        left=left,
+        right=right,
     )
 
 
@@ -201,7 +219,7 @@ def split_features(features: np.ndarray, n_joints: int) -> tuple[np.ndarray, np.
     """(local positions (..., T, J, 3), ground velocity (..., T, 2), yaw rate (..., T))."""
     J = n_joints
     local = features[..., : 3 * J].reshape(*features.shape[:-1], J, 3)
-    return local, features[..., 3 * J: 3 * J + 2], features[..., 3 * J + 2]
+    return local, features[..., 3 * J : 3 * J + 2], features[..., 3 * J + 2]
 
 
 def sliding_windows(clips: Sequence[np.ndarray], size: int = 60, stride: int = 30) -> np.ndarray:

@@ -36,9 +36,16 @@ def _heat(ax, table: pd.DataFrame, title: str) -> None:
         j_min = int(np.nanargmin(values[i]))
         for j in range(values.shape[1]):
             txt = f"{values[i, j]:.3g}"
-            ax.text(j, i, txt, ha="center", va="center", fontsize=6.5,
-                    color="white" if values[i, j] > mid else "black",
-                    fontweight="bold" if j == j_min else "normal")
+            ax.text(
+                j,
+                i,
+                txt,
+                ha="center",
+                va="center",
+                fontsize=6.5,
+                color="white" if values[i, j] > mid else "black",
+                fontweight="bold" if j == j_min else "normal",
+            )
         ax.add_patch(plt.Rectangle((j_min - 0.5, i - 0.5), 1, 1, fill=False, ec="red", lw=1.5))
     plt.colorbar(im, ax=ax, fraction=0.046, pad=0.04)
 
@@ -74,11 +81,20 @@ def diversity_figure(table: pd.DataFrame, measures: Sequence[str] = ("pose_sd", 
             if pub is not None and pd.notna(pub.get("training data")):
                 ok = pub.notna().to_numpy()  # the thesis has no row for our baselines
                 ax.bar(x[ok] + 0.2, (pub / pub.loc["training data"])[ok], 0.4, label="published", color="#ff7f0e")
-            for col, marker, label in ((f"training_{m}", "_", "own training data"),
-                                       (f"posterior_mean_{m}", ".", "at the posterior means")):
+            for col, marker, label in (
+                (f"training_{m}", "_", "own training data"),
+                (f"posterior_mean_{m}", ".", "at the posterior means"),
+            ):
                 if col in t and t[col].notna().any():
-                    ax.scatter(x - 0.2, t[col] / t.loc["training data", m], marker=marker, s=110, color="k",
-                               zorder=3, label=label)
+                    ax.scatter(
+                        x - 0.2,
+                        t[col] / t.loc["training data", m],
+                        marker=marker,
+                        s=110,
+                        color="k",
+                        zorder=3,
+                        label=label,
+                    )
             ax.axhline(1.0, color="0.4", lw=0.8, ls="--")
             ax.set_xticks(x, models, rotation=45, ha="right", fontsize=7)
             ax.set_title(f"{prim}: {m.replace('_sd', '_SD')} / training", fontsize=9)
@@ -101,11 +117,18 @@ def training_curves(histories: Mapping[str, pd.DataFrame], groups: Mapping[str, 
         ax = axes[0, c]
         for name in names:
             h = histories[name]
-            line, = ax.plot(h["epoch"], h["loss"], label=name, lw=1.2)
+            (line,) = ax.plot(h["epoch"], h["loss"], label=name, lw=1.2)
             if "kept" in h and h["kept"].any() and not h["kept"].iloc[-1]:  # weights of an earlier epoch kept
                 k = h.loc[h["kept"]].iloc[0]
-                ax.plot([k["epoch"]], [k["loss"]], marker="o", mfc="none", color=line.get_color(), ms=6,
-                        label=f"{name}: kept epoch {int(k['epoch'])}")
+                ax.plot(
+                    [k["epoch"]],
+                    [k["loss"]],
+                    marker="o",
+                    mfc="none",
+                    color=line.get_color(),
+                    ms=6,
+                    label=f"{name}: kept epoch {int(k['epoch'])}",
+                )
         ax.set_yscale("log")
         ax.set_xlabel("epoch", fontsize=8)
         ax.set_ylabel("training loss", fontsize=8)
@@ -146,7 +169,9 @@ def samples_figure(
     the samples in grey. Each character starts ``spacing_cm`` to the side of the one
     before; the last frame is drawn, seen from the front-side."""
     n_cols = max(len(p) for _, p, _ in rows)
-    fig, axes = plt.subplots(len(rows), 1, figsize=(max(5.5, 1.0 + 0.9 * (n_cols + 1.5)), 1.9 * len(rows)), squeeze=False)
+    fig, axes = plt.subplots(
+        len(rows), 1, figsize=(max(5.5, 1.0 + 0.9 * (n_cols + 1.5)), 1.9 * len(rows)), squeeze=False
+    )
     screen = np.array([0.0, 0.0, 1.0])
     for ax, (label, samples, example) in zip(axes[:, 0], rows):
         lateral = np.array([0.0, 0.0, spacing_cm])
@@ -159,7 +184,9 @@ def samples_figure(
         if example is not None:
             xy = project(example[-1], screen, elevation_deg, azimuth_deg)
             draw_pose(ax, xy, parents, None, linewidth=1.6).set_color("0.6")
-            ax.text(float(xy[:, 0].mean()), float(xy[:, 1].max()) + 8, "style example", ha="center", fontsize=7, color="0.4")
+            ax.text(
+                float(xy[:, 0].mean()), float(xy[:, 1].max()) + 8, "style example", ha="center", fontsize=7, color="0.4"
+            )
             xs.append(xy[:, 0])
         allx = np.concatenate(xs)
         ax.set_xlim(allx.min() - 20, allx.max() + 20)
@@ -199,14 +226,24 @@ def animate_fig5_4(result: EvaluationResult, group: str, panel_px: int = 200, lo
     if not clips:
         raise ValueError(f"du2022_fig5_4: no {group} models to animate")
     # loop i starts where the clip ended: shifted by i times its net root travel along x
-    pos = [np.concatenate([p + np.array([i * (p[-1, 0, 0] - p[0, 0, 0]), 0, 0]) for i in range(loops)])
-           for p, _, _ in clips]
-    return render_frames(pos, [f["parents"]] * len(clips), [fps for _, fps, _ in clips],
-                         names=[f["names"]] * len(clips), labels=[label for _, _, label in clips], panel_px=panel_px)
+    pos = [
+        np.concatenate([p + np.array([i * (p[-1, 0, 0] - p[0, 0, 0]), 0, 0]) for i in range(loops)])
+        for p, _, _ in clips
+    ]
+    return render_frames(
+        pos,
+        [f["parents"]] * len(clips),
+        [fps for _, fps, _ in clips],
+        names=[f["names"]] * len(clips),
+        labels=[label for _, _, label in clips],
+        panel_px=panel_px,
+    )
 
 
 def draw_training(
-    autoencoder: pd.DataFrame, vaes: Mapping[str, pd.DataFrame], cvaes: Mapping[tuple[str, str], pd.DataFrame],
+    autoencoder: pd.DataFrame,
+    vaes: Mapping[str, pd.DataFrame],
+    cvaes: Mapping[tuple[str, str], pd.DataFrame],
 ) -> Figure:
     """Training curves (:func:`training_curves`) of the autoencoder, the neutral VAEs (by
     primitive) and the CVAEs (by (primitive, style), one panel per primitive)."""

@@ -63,10 +63,17 @@ def fit_rig(dataset: MotionDataset, joint_map: JointMap, n_frames: int = 60) -> 
     and a frame rate per primitive of its metadata."""
     a = dataset.arrays
     sk0 = dataset.motion(0).skeleton
-    sk = Skeleton(names=sk0.names, parents=sk0.parents, offsets=np.asarray(a["offsets"], dtype=float).mean(axis=0),
-                  end_sites={int(j): np.asarray(a["end_site_offsets"], dtype=float)[:, k].mean(axis=0)
-                             for k, j in enumerate(a["end_site_joints"])},
-                  rotation_orders=sk0.rotation_orders, position_channels=sk0.position_channels)
+    sk = Skeleton(
+        names=sk0.names,
+        parents=sk0.parents,
+        offsets=np.asarray(a["offsets"], dtype=float).mean(axis=0),
+        end_sites={
+            int(j): np.asarray(a["end_site_offsets"], dtype=float)[:, k].mean(axis=0)
+            for k, j in enumerate(a["end_site_joints"])
+        },
+        rotation_orders=sk0.rotation_orders,
+        position_channels=sk0.position_channels,
+    )
     meta = dataset.metadata
     prims = sorted({str(p) for p in meta["primitive"].dropna()} - {""}) if "primitive" in meta else []
     fps = {p: float(primitive_clip_fps(meta, p, n_frames)) for p in prims}
@@ -77,15 +84,30 @@ def save_rig(path: str | Path, rig: StyleRig) -> list[Path]:
     """Write ``<base>.npz`` + ``<base>.json``; returns both paths."""
     sk, lay = rig.skeleton, rig.layout
     ends = np.array(sorted(sk.end_sites), dtype=np.int64)
-    arrays = {"parents": sk.parents, "offsets": sk.offsets, "end_site_joints": ends,
-              "end_site_offsets": np.array([sk.end_sites[j] for j in ends], dtype=float).reshape(-1, 3),
-              "layout.joints": lay.joints, "layout.parents": lay.parents, "layout.left": lay.left,
-              "layout.right": lay.right}
-    info = {"kind": RIG_KIND, "version": RIG_VERSION, "names": list(sk.names),
-            "rotation_orders": list(sk.rotation_orders), "position_channels": [bool(p) for p in sk.position_channels],
-            "layout_names": list(lay.names), "fps": dict(rig.fps), "n_frames": rig.n_frames,
-            "joint_map": {"joints": dict(rig.joint_map.joints),
-                          "groups": {g: list(v) for g, v in rig.joint_map.groups.items()}}}
+    arrays = {
+        "parents": sk.parents,
+        "offsets": sk.offsets,
+        "end_site_joints": ends,
+        "end_site_offsets": np.array([sk.end_sites[j] for j in ends], dtype=float).reshape(-1, 3),
+        "layout.joints": lay.joints,
+        "layout.parents": lay.parents,
+        "layout.left": lay.left,
+        "layout.right": lay.right,
+    }
+    info = {
+        "kind": RIG_KIND,
+        "version": RIG_VERSION,
+        "names": list(sk.names),
+        "rotation_orders": list(sk.rotation_orders),
+        "position_channels": [bool(p) for p in sk.position_channels],
+        "layout_names": list(lay.names),
+        "fps": dict(rig.fps),
+        "n_frames": rig.n_frames,
+        "joint_map": {
+            "joints": dict(rig.joint_map.joints),
+            "groups": {g: list(v) for g, v in rig.joint_map.groups.items()},
+        },
+    }
     return save_model(path, arrays, info)
 
 
@@ -94,12 +116,21 @@ def load_rig(path: str | Path) -> StyleRig:
     a, info = load_model(path, kind=RIG_KIND)
     base = model_base(path)
     try:
-        sk = Skeleton(names=tuple(info["names"]), parents=a["parents"], offsets=a["offsets"],
-                      end_sites={int(j): np.asarray(o) for j, o in zip(a["end_site_joints"], a["end_site_offsets"])},
-                      rotation_orders=tuple(info["rotation_orders"]),
-                      position_channels=tuple(bool(p) for p in info["position_channels"]))
-        lay = FeatureLayout(joints=a["layout.joints"], names=tuple(info["layout_names"]), parents=a["layout.parents"],
-                            left=a["layout.left"], right=a["layout.right"])
+        sk = Skeleton(
+            names=tuple(info["names"]),
+            parents=a["parents"],
+            offsets=a["offsets"],
+            end_sites={int(j): np.asarray(o) for j, o in zip(a["end_site_joints"], a["end_site_offsets"])},
+            rotation_orders=tuple(info["rotation_orders"]),
+            position_channels=tuple(bool(p) for p in info["position_channels"]),
+        )
+        lay = FeatureLayout(
+            joints=a["layout.joints"],
+            names=tuple(info["layout_names"]),
+            parents=a["layout.parents"],
+            left=a["layout.left"],
+            right=a["layout.right"],
+        )
         jm = JointMap.from_dict(info["joint_map"], origin=f"{base}.json")
         return StyleRig(sk, lay, {str(k): float(v) for k, v in info["fps"].items()}, int(info["n_frames"]), jm)
     except (KeyError, TypeError, ValueError) as exc:
@@ -113,7 +144,9 @@ def _swing(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     opposite = w[:, 0] < _EPS  # a half turn about any axis perpendicular to a
     if opposite.any():
         perp = np.cross(a[opposite], np.array([1.0, 0.0, 0.0]))
-        perp = np.where(np.linalg.norm(perp, axis=-1, keepdims=True) < 1e-3, np.cross(a[opposite], [0.0, 1.0, 0.0]), perp)
+        perp = np.where(
+            np.linalg.norm(perp, axis=-1, keepdims=True) < 1e-3, np.cross(a[opposite], [0.0, 1.0, 0.0]), perp
+        )
         xyz[opposite], w[opposite] = perp, 0.0
     return qnormalize(np.concatenate([w, xyz], axis=-1))
 

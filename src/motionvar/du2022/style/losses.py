@@ -42,7 +42,9 @@ def kl_loss(mu: torch.Tensor, logvar: torch.Tensor) -> torch.Tensor:
     return 0.5 * (mu.pow(2) + logvar.exp() - 1.0 - logvar).sum(dim=-1).mean()
 
 
-def vae_loss(recon: torch.Tensor, y: torch.Tensor, mu: torch.Tensor, logvar: torch.Tensor) -> tuple[torch.Tensor, torch.Tensor]:
+def vae_loss(
+    recon: torch.Tensor, y: torch.Tensor, mu: torch.Tensor, logvar: torch.Tensor
+) -> tuple[torch.Tensor, torch.Tensor]:
     """Eq. 5.6 as (content, KL); the loss is their sum."""
     return content_loss(recon, y), kl_loss(mu, logvar)
 
@@ -85,7 +87,11 @@ STYLE_NORMS = ("frobenius", "mean_squared")
 
 
 def style_loss(
-    recon_maps: torch.Tensor, style_maps: torch.Tensor, alpha: float, norm: str = "frobenius", gram_reduce: str = "sum",
+    recon_maps: torch.Tensor,
+    style_maps: torch.Tensor,
+    alpha: float,
+    norm: str = "frobenius",
+    gram_reduce: str = "sum",
 ) -> torch.Tensor:
     """Eq. 5.10: alpha ||Gram(decoder(z)) - Gram(y_s)||, averaged over samples;
     recon_maps (..., K, T) decoded feature maps, style_maps (K, S) the encoded style example,

@@ -59,11 +59,17 @@ class FeatureSpace:
     def save(self, path: str | Path) -> None:
         """Write ``<base>.pt`` (the autoencoder's state dict) and ``<base>.json`` (its
         hyper-parameters and the scaler's mean and scale with their dtype: exact in JSON)."""
-        save_torch_model(path, self.ae.state_dict(), {
-            "kind": AUTOENCODER_KIND, "hparams": self.ae.hparams,
-            "scaler_dtype": str(np.asarray(self.scaler.mean).dtype),
-            "scaler_mean": np.asarray(self.scaler.mean).tolist(), "scaler_std": np.asarray(self.scaler.std).tolist(),
-        })
+        save_torch_model(
+            path,
+            self.ae.state_dict(),
+            {
+                "kind": AUTOENCODER_KIND,
+                "hparams": self.ae.hparams,
+                "scaler_dtype": str(np.asarray(self.scaler.mean).dtype),
+                "scaler_mean": np.asarray(self.scaler.mean).tolist(),
+                "scaler_std": np.asarray(self.scaler.std).tolist(),
+            },
+        )
 
     @classmethod
     def load(cls, path: str | Path) -> "FeatureSpace":
@@ -72,19 +78,30 @@ class FeatureSpace:
         ae.load_state_dict(state)
         ae.eval()
         dtype = np.dtype(settings["scaler_dtype"])
-        scaler = FeatureScaler(mean=np.asarray(settings["scaler_mean"], dtype=dtype),
-                               std=np.asarray(settings["scaler_std"], dtype=dtype))
+        scaler = FeatureScaler(
+            mean=np.asarray(settings["scaler_mean"], dtype=dtype), std=np.asarray(settings["scaler_std"], dtype=dtype)
+        )
         return cls(ae=ae, scaler=scaler)
 
 
 def save_vae(
-    path: str | Path, vae: MotionVAE, map_shape: tuple[int, int], info: Mapping[str, str | float] | None = None,
+    path: str | Path,
+    vae: MotionVAE,
+    map_shape: tuple[int, int],
+    info: Mapping[str, str | float] | None = None,
 ) -> None:
     """Save a VAE/CVAE (``<base>.pt`` + ``<base>.json``) with the (K, T') shape of its
     feature maps and string/number ``info`` (primitive, style, style example's clip id...)."""
-    save_torch_model(path, vae.state_dict(), {
-        "kind": VAE_KIND, "hparams": vae.hparams, "map_shape": [int(k) for k in map_shape], "info": dict(info or {}),
-    })
+    save_torch_model(
+        path,
+        vae.state_dict(),
+        {
+            "kind": VAE_KIND,
+            "hparams": vae.hparams,
+            "map_shape": [int(k) for k in map_shape],
+            "info": dict(info or {}),
+        },
+    )
 
 
 def load_vae(path: str | Path) -> tuple[MotionVAE, tuple[int, int], dict]:
@@ -105,7 +122,12 @@ def sample_maps(vae: MotionVAE, map_shape: tuple[int, int], n: int, seed: int) -
 
 
 def sample_features(
-    vae: MotionVAE, map_shape: tuple[int, int], space: FeatureSpace, n: int, seed: int, chunk: int = 1000,
+    vae: MotionVAE,
+    map_shape: tuple[int, int],
+    space: FeatureSpace,
+    n: int,
+    seed: int,
+    chunk: int = 1000,
 ) -> np.ndarray:
     """n random clips of a model as features (n, T, C) (VAE decoder, then motion decoder),
     decoded ``chunk`` clips at a time into one array (the draws do not depend on ``chunk``)."""
@@ -113,7 +135,7 @@ def sample_features(
     ae = space.ae
     out = np.empty((n, maps.shape[-1] * ae.pool, ae.hparams["n_channels"]))
     for i in range(0, n, chunk):
-        space.decode(maps[i:i + chunk], out=out[i:i + chunk])
+        space.decode(maps[i : i + chunk], out=out[i : i + chunk])
     return out
 
 

@@ -40,7 +40,11 @@ class ConvAutoencoder(nn.Module):
     """
 
     def __init__(
-        self, n_channels: int, n_kernels: int = 256, kernel_width: int = 15, pool: int = 2,
+        self,
+        n_channels: int,
+        n_kernels: int = 256,
+        kernel_width: int = 15,
+        pool: int = 2,
         decoder_order: str = "conv_depool",
     ) -> None:
         super().__init__()
@@ -49,7 +53,10 @@ class ConvAutoencoder(nn.Module):
         if kernel_width % 2 != 1:
             raise ValueError(f"ConvAutoencoder: kernel_width must be odd (same-length convolution); got {kernel_width}")
         self.hparams = dict(
-            n_channels=n_channels, n_kernels=n_kernels, kernel_width=kernel_width, pool=pool,
+            n_channels=n_channels,
+            n_kernels=n_kernels,
+            kernel_width=kernel_width,
+            pool=pool,
             decoder_order=decoder_order,
         )
         pad = kernel_width // 2

@@ -109,8 +109,12 @@ class SlicedAdam:
     training rule."""
 
     def __init__(
-        self, params: Iterable[torch.nn.Parameter], lr: float, betas: tuple[float, float] = (0.9, 0.999),
-        eps: float = 1e-8, slice_size: int = 1 << 18,
+        self,
+        params: Iterable[torch.nn.Parameter],
+        lr: float,
+        betas: tuple[float, float] = (0.9, 0.999),
+        eps: float = 1e-8,
+        slice_size: int = 1 << 18,
     ) -> None:
         if not lr > 0 or slice_size < 1:
             raise ValueError(f"SlicedAdam: lr must be > 0 and slice_size >= 1; got {lr}, {slice_size}")
@@ -132,8 +136,11 @@ class SlicedAdam:
             if p.grad is None:
                 continue
             if p not in self.state:
-                self.state[p] = {"step": torch.tensor(0.0), "exp_avg": torch.zeros_like(p),
-                                 "exp_avg_sq": torch.zeros_like(p)}
+                self.state[p] = {
+                    "step": torch.tensor(0.0),
+                    "exp_avg": torch.zeros_like(p),
+                    "exp_avg_sq": torch.zeros_like(p),
+                }
             state = self.state[p]
             tensors, bounds = (p, p.grad, state["exp_avg"], state["exp_avg_sq"]), [(0, None)]
             if p.is_contiguous():  # flat views (reshape copies a non-contiguous gradient, which is only read)
@@ -146,8 +153,22 @@ class SlicedAdam:
             state["step"] += 1
         params, grads, exp_avgs, exp_avg_sqs, steps = lists
         beta1, beta2 = self.betas
-        adam_update(params, grads, exp_avgs, exp_avg_sqs, [], steps, foreach=False, amsgrad=False, beta1=beta1,
-                    beta2=beta2, lr=self.lr, weight_decay=0.0, eps=self.eps, maximize=False)
+        adam_update(
+            params,
+            grads,
+            exp_avgs,
+            exp_avg_sqs,
+            [],
+            steps,
+            foreach=False,
+            amsgrad=False,
+            beta1=beta1,
+            beta2=beta2,
+            lr=self.lr,
+            weight_decay=0.0,
+            eps=self.eps,
+            maximize=False,
+        )
 
 
 def _batches(n: int, batch_size: int, gen: torch.Generator) -> list[torch.Tensor]:
@@ -155,8 +176,12 @@ def _batches(n: int, batch_size: int, gen: torch.Generator) -> list[torch.Tensor
 
 
 def train_autoencoder(
-    windows: np.ndarray, cfg: TrainConfig, decoder_order: str = "conv_depool", n_kernels: int = 256,
-    kernel_width: int = 15, keep: str = "last",
+    windows: np.ndarray,
+    cfg: TrainConfig,
+    decoder_order: str = "conv_depool",
+    n_kernels: int = 256,
+    kernel_width: int = 15,
+    keep: str = "last",
 ) -> tuple[ConvAutoencoder, pd.DataFrame]:
     """Train Eq. 5.1-5.2 on scaled windows (W, T, C). ``keep``: "last" returns the weights
     of the last epoch (the thesis' final model), "best" those of the epoch whose
@@ -192,8 +217,7 @@ def train_autoencoder(
                 end_loss = float(sum(torch.sum((model(xb) - xb) ** 2) for xb in x.split(512)) / x.numel())
         if keep == "best" and end_loss < best_loss:
             best_loss, best_state, kept = end_loss, copy.deepcopy(model.state_dict()), epoch
-        rows.append({"epoch": epoch, "loss": total / len(x), "end_loss": end_loss,
-                     "seconds": time.perf_counter() - t0})
+        rows.append({"epoch": epoch, "loss": total / len(x), "end_loss": end_loss, "seconds": time.perf_counter() - t0})
     if keep == "best":
         model.load_state_dict(best_state)
     model.eval()
@@ -254,8 +278,11 @@ def train_vae(
             eps = torch.randn((n_samples, len(idx), model.latent), generator=gen)
             recon = model.decode(model.reparameterize(mu, logvar, eps))
             c, k = content_loss(recon, yb), kl_loss(mu, logvar)
-            s = (style_loss(recon.reshape(n_samples, len(idx), K, Tf), style_maps, alpha, style_norm, gram_reduce)
-                 if style_maps is not None else torch.zeros(()))
+            s = (
+                style_loss(recon.reshape(n_samples, len(idx), K, Tf), style_maps, alpha, style_norm, gram_reduce)
+                if style_maps is not None
+                else torch.zeros(())
+            )
             loss = c + k + s
             opt.zero_grad()
             loss.backward()
@@ -263,10 +290,17 @@ def train_vae(
             sums += len(idx) * np.array([float(v.detach()) for v in (loss, c, k, s)])
         sums /= N
         seconds = time.perf_counter() - t0
-        rows.append({
-            "epoch": epoch, "loss": sums[0], "content": sums[1], "kl": sums[2], "style": sums[3],
-            "seconds": seconds, "active": active_units(model, y),
-        })
+        rows.append(
+            {
+                "epoch": epoch,
+                "loss": sums[0],
+                "content": sums[1],
+                "kl": sums[2],
+                "style": sums[3],
+                "seconds": seconds,
+                "active": active_units(model, y),
+            }
+        )
     model.eval()
     return model, pd.DataFrame(rows)
 
@@ -299,19 +333,35 @@ def fit_feature_space(
         if 0 < max_windows < n_all:  # only the drawn windows' frames are computed
             subset = np.sort(np.random.default_rng(cfg.seed).choice(n_all, max_windows, replace=False))
         windows = training_windows(dataset, layout, window, stride, subset)
-        log.info("%d windows of %d frames (%d in all) from %d clips; joints %s", len(windows),
-                 windows.shape[1], n_all, len(dataset), ", ".join(layout.names))
+        log.info(
+            "%d windows of %d frames (%d in all) from %d clips; joints %s",
+            len(windows),
+            windows.shape[1],
+            n_all,
+            len(dataset),
+            ", ".join(layout.names),
+        )
         scaler = FeatureScaler.fit(windows, layout.n_joints)
         ae, history = train_autoencoder(
-            scaler.transform(windows), cfg, decoder_order=decoder_order, n_kernels=n_kernels, kernel_width=kernel_width,
+            scaler.transform(windows),
+            cfg,
+            decoder_order=decoder_order,
+            n_kernels=n_kernels,
+            kernel_width=kernel_width,
             keep=keep,
         )
         space = FeatureSpace(ae, scaler)
         history["windows"] = len(windows)
         kept = history.loc[history["kept"]].iloc[0]
-        log.info("trained in %.1f s; kept epoch %d of %d (end-of-epoch loss %.4g; last %.4g); reconstruction RMSE %.3f",
-                 history["seconds"].iloc[-1], kept["epoch"], len(history), kept["end_loss"],
-                 history["end_loss"].iloc[-1], space.reconstruction_rmse(windows[:512]))
+        log.info(
+            "trained in %.1f s; kept epoch %d of %d (end-of-epoch loss %.4g; last %.4g); reconstruction RMSE %.3f",
+            history["seconds"].iloc[-1],
+            kept["epoch"],
+            len(history),
+            kept["end_loss"],
+            history["end_loss"].iloc[-1],
+            space.reconstruction_rmse(windows[:512]),
+        )
         return space, history
 
 
@@ -333,11 +383,22 @@ def fit_primitive_vae(
     maps = space.encode(feats)
     log.info("%s: %d neutral clips, feature maps %s", primitive, len(rows), tuple(maps.shape))
     vae, history = train_vae(maps, cfg, n_samples=n_samples, hidden=hidden, latent=latent)
-    log.info("trained in %.1f s; final loss %.4g (content %.4g, KL %.4g); %d of %d latent dimensions active",
-             history["seconds"].iloc[-1], history["loss"].iloc[-1], history["content"].iloc[-1],
-             history["kl"].iloc[-1], history["active"].iloc[-1], latent)
-    info = {"primitive": primitive, "style": "neutral", "n_clips": len(rows),
-            "active_units": int(history["active"].iloc[-1]), "regime": f"{cfg.describe()}, L = {n_samples}"}
+    log.info(
+        "trained in %.1f s; final loss %.4g (content %.4g, KL %.4g); %d of %d latent dimensions active",
+        history["seconds"].iloc[-1],
+        history["loss"].iloc[-1],
+        history["content"].iloc[-1],
+        history["kl"].iloc[-1],
+        history["active"].iloc[-1],
+        latent,
+    )
+    info = {
+        "primitive": primitive,
+        "style": "neutral",
+        "n_clips": len(rows),
+        "active_units": int(history["active"].iloc[-1]),
+        "regime": f"{cfg.describe()}, L = {n_samples}",
+    }
     return vae, tuple(maps.shape[1:]), info, history
 
 
@@ -370,18 +431,46 @@ def fit_style_cvae(
     maps = space.encode(feats)
     log.info("%s/%s: %d neutral clips, style example %s", primitive, style, len(rows), example_id)
     cvae, history = train_vae(
-        maps, cfg, n_samples=n_samples, style_maps=example, alpha=alpha, style_norm=style_norm,
-        init=neutral if init_from_neutral else None, hidden=hidden, latent=latent, gram_reduce=gram_reduce,
+        maps,
+        cfg,
+        n_samples=n_samples,
+        style_maps=example,
+        alpha=alpha,
+        style_norm=style_norm,
+        init=neutral if init_from_neutral else None,
+        hidden=hidden,
+        latent=latent,
+        gram_reduce=gram_reduce,
     )
     first = history.iloc[0]
-    log.info("epoch 1: content %.4g, KL %.4g, style %.4g; %d active latent dimensions", first["content"],
-             first["kl"], first["style"], first["active"])
-    log.info("trained in %.1f s (%s, lr %g, %d epochs); final loss %.4g (content %.4g, KL %.4g, style %.4g); "
-             "%d of %d latent dimensions active", history["seconds"].iloc[-1], cfg.optimizer, cfg.lr, cfg.epochs,
-             history["loss"].iloc[-1], history["content"].iloc[-1], history["kl"].iloc[-1],
-             history["style"].iloc[-1], history["active"].iloc[-1], latent)
-    info = {"primitive": primitive, "style": style, "example": example_id, "n_clips": len(rows),
-            "active_units": int(history["active"].iloc[-1]),
-            "regime": f"{cfg.describe()}; alpha {alpha:g}, {style_norm.replace('_', ' ')} norm, Gram {gram_reduce} "
-                      f"over frames" + (", from the neutral VAE" if init_from_neutral else "")}
+    log.info(
+        "epoch 1: content %.4g, KL %.4g, style %.4g; %d active latent dimensions",
+        first["content"],
+        first["kl"],
+        first["style"],
+        first["active"],
+    )
+    log.info(
+        "trained in %.1f s (%s, lr %g, %d epochs); final loss %.4g (content %.4g, KL %.4g, style %.4g); "
+        "%d of %d latent dimensions active",
+        history["seconds"].iloc[-1],
+        cfg.optimizer,
+        cfg.lr,
+        cfg.epochs,
+        history["loss"].iloc[-1],
+        history["content"].iloc[-1],
+        history["kl"].iloc[-1],
+        history["style"].iloc[-1],
+        history["active"].iloc[-1],
+        latent,
+    )
+    info = {
+        "primitive": primitive,
+        "style": style,
+        "example": example_id,
+        "n_clips": len(rows),
+        "active_units": int(history["active"].iloc[-1]),
+        "regime": f"{cfg.describe()}; alpha {alpha:g}, {style_norm.replace('_', ' ')} norm, Gram {gram_reduce} "
+        f"over frames" + (", from the neutral VAE" if init_from_neutral else ""),
+    }
     return cvae, tuple(maps.shape[1:]), info, history

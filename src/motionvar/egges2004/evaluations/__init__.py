@@ -29,6 +29,15 @@ _EXPORTS = {
 __getattr__, __dir__ = lazy_exports(__name__, _EXPORTS)
 
 __all__ = [
-    "FittingParams", "IdentificationParams", "RepetitionParams", "SpeedParams", "category_check", "fitting",
-    "identification", "idle_animation", "pc_extrema", "repetition", "speed",
+    "FittingParams",
+    "IdentificationParams",
+    "RepetitionParams",
+    "SpeedParams",
+    "category_check",
+    "fitting",
+    "identification",
+    "idle_animation",
+    "pc_extrema",
+    "repetition",
+    "speed",
 ]

@@ -24,8 +24,11 @@ def perlin_sds(model: IdleModel, recordings: dict[str, list[Recording]]) -> np.n
     """One generic amplitude per varied PC for the Perlin baseline: the RMS deviation of
     each PC from its subject's mean posture, pooled over all subjects (not personalised)."""
     n = next(iter(model.databases.values())).variations.pcs.size
-    dev = [r.pcs[:, :n] - np.concatenate([q.pcs for q in recs]).mean(axis=0)[:n]
-           for recs in recordings.values() for r in recs]
+    dev = [
+        r.pcs[:, :n] - np.concatenate([q.pcs for q in recs]).mean(axis=0)[:n]
+        for recs in recordings.values()
+        for r in recs
+    ]
     return np.sqrt(np.mean(np.concatenate(dev) ** 2, axis=0))
 
 

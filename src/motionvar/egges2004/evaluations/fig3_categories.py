@@ -25,7 +25,7 @@ def category_check(
     of the first ``figure_subjects`` subjects."""
     rows = []
     for subject, db in model.databases.items():
-        found, truth = [], []
+        found = []
         for row, motion in train[subject]:
             segs, cats = db.segments[str(row["clip_id"])]
             spec = row.get("idle_postures", "")
@@ -39,14 +39,16 @@ def category_check(
             offsets = np.concatenate([[0], np.cumsum([len(f[2]) for f in found])[:-1]])
             segs = np.concatenate([f[0] + o for f, o in zip(found, offsets)])
             acc, ari = segment_agreement(segs, names, labels)
-        rows.append({
-            "subject": subject,
-            "categories": " ".join(db.categories.names),
-            "resting_segments": int(sum(len(s) for s, _ in db.segments.values())),
-            "balance_shifts": len(db.animations),
-            "rest_speed_threshold": db.rest_speed,
-            "category_accuracy": acc,
-            "category_ari": ari,
-        })
+        rows.append(
+            {
+                "subject": subject,
+                "categories": " ".join(db.categories.names),
+                "resting_segments": int(sum(len(s) for s, _ in db.segments.values())),
+                "balance_shifts": len(db.animations),
+                "rest_speed_threshold": db.rest_speed,
+                "category_accuracy": acc,
+                "category_ari": ari,
+            }
+        )
     graphs = {s: model.databases[s].graph for s in list(model.databases)[:figure_subjects]}
     return EvaluationResult(pd.DataFrame(rows), [], {"graphs": graphs})

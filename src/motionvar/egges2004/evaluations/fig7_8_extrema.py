@@ -12,9 +12,7 @@ from ..pipeline import IdleModel
 from ..variations import find_extrema
 
 
-def pc_extrema(
-    model: IdleModel, recordings: dict[str, list[Recording]], pc: int, eps_sd: float, subjects: int
-) -> dict:
+def pc_extrema(model: IdleModel, recordings: dict[str, list[Recording]], pc: int, eps_sd: float, subjects: int) -> dict:
     """For each of the first ``subjects`` subjects, PC ``pc`` (1 = the first) over the
     longest resting segment of their training ``recordings`` and its extrema with error
     epsilon = ``eps_sd`` times the RMS of that PC's mean-removed resting values (as in

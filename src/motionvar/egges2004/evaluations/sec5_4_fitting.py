@@ -76,14 +76,23 @@ def fitting(model: IdleModel, params: FittingParams, seed: int) -> EvaluationRes
             err_s = _posture_error_cm(model, s, np.array(starts), np.array(fit_s))
             err_e = _posture_error_cm(model, s, np.array(ends), np.array(fit_e))
             seq, events = synthesize_balance(db, int(round(params.sequence_s * db.fps)) + 1, rng, ramp=ramp)
-            cuts = np.array([e.start for e in events if e.kind == "shift"] + [e.stop for e in events if e.kind == "shift"])
+            cuts = np.array(
+                [e.start for e in events if e.kind == "shift"] + [e.stop for e in events if e.kind == "shift"]
+            )
             j_step, j_acc = junction_steps(seq, cuts, db.weights)
-            rows.append({
-                "subject": s, "ramp": ramp, "test": "fitAnim_part (p, q)", "cases": len(starts),
-                "max_start_error_cm": float(err_s.max()), "max_end_error_cm": float(err_e.max()),
-                "junctions": len(j_step), "max_junction_step_ratio": float(j_step.max(initial=0) / step_q),
-                "max_junction_accel_ratio": float(j_acc.max(initial=0) / acc_q),
-            })
+            rows.append(
+                {
+                    "subject": s,
+                    "ramp": ramp,
+                    "test": "fitAnim_part (p, q)",
+                    "cases": len(starts),
+                    "max_start_error_cm": float(err_s.max()),
+                    "max_end_error_cm": float(err_e.max()),
+                    "junctions": len(j_step),
+                    "max_junction_step_ratio": float(j_step.max(initial=0) / step_q),
+                    "max_junction_accel_ratio": float(j_acc.max(initial=0) / acc_q),
+                }
+            )
         starts, ends, fit_s, fit_e, steps, accs = [], [], [], [], [], []
         routes = db.graph.routable_pairs()
         for c0, c1 in routes[rng.integers(len(routes), size=max(1, params.pairs // 10))]:
@@ -96,12 +105,19 @@ def fitting(model: IdleModel, params: FittingParams, seed: int) -> EvaluationRes
         err_s = _posture_error_cm(model, s, np.array(starts), np.array(fit_s))
         err_e = _posture_error_cm(model, s, np.array(ends), np.array(fit_e))
         steps, accs = np.concatenate(steps), np.concatenate(accs)
-        rows.append({
-            "subject": s, "ramp": "linear", "test": "idle_between (p0, p1)", "cases": len(starts),
-            "max_start_error_cm": float(err_s.max()), "max_end_error_cm": float(err_e.max()),
-            "junctions": len(steps), "max_junction_step_ratio": float(steps.max(initial=0) / step_q),
-            "max_junction_accel_ratio": float(accs.max(initial=0) / acc_q),
-        })
+        rows.append(
+            {
+                "subject": s,
+                "ramp": "linear",
+                "test": "idle_between (p0, p1)",
+                "cases": len(starts),
+                "max_start_error_cm": float(err_s.max()),
+                "max_end_error_cm": float(err_e.max()),
+                "junctions": len(steps),
+                "max_junction_step_ratio": float(steps.max(initial=0) / step_q),
+                "max_junction_accel_ratio": float(accs.max(initial=0) / acc_q),
+            }
+        )
     table = pd.DataFrame(rows)
     faithful = table[table.ramp == "linear"]
     end_err = float(faithful[["max_start_error_cm", "max_end_error_cm"]].to_numpy().max())
@@ -113,7 +129,8 @@ def fitting(model: IdleModel, params: FittingParams, seed: int) -> EvaluationRes
     smooth = table[table.ramp == "smoothstep"]
     claim = Claim(
         claim_id=f"{PAPER}.sec5_4.fitting_hits_end_postures",
-        paper=PAPER, source="Sec. 5.4.4, 7.1, Fig. 4-5",
+        paper=PAPER,
+        source="Sec. 5.4.4, 7.1, Fig. 4-5",
         statement=(
             "fitAnim_part makes the best-fitting animation start at posture p and end at q, so that the next "
             "animation joins continuously (also for idle motion between two given postures, Sec. 7.1)."
@@ -129,7 +146,10 @@ def fitting(model: IdleModel, params: FittingParams, seed: int) -> EvaluationRes
         verdict=verdict,
         # the main condition: the largest junction step against the recorded steps' quantile; exact ends
         # (end_err <= 1e-6 cm) are required beside it (without them: not reproduced)
-        value=step_ratio, bound=1.0, unit="ratio", direction="<=",
+        value=step_ratio,
+        bound=1.0,
+        unit="ratio",
+        direction="<=",
         note=(
             "Errors are between the joint positions (forward kinematics) of the target posture and of the fitted "
             "frame. Reproduced = exact ends (<= 1e-6 cm) and no junction step larger than the "
@@ -154,9 +174,14 @@ def _figure_data(model: IdleModel, example: dict, params: FittingParams, seed: i
     n = int(round(params.figure_balance_s * db.fps)) + 1
     seq, events = synthesize_balance(db, n, subject_rng(seed, s, "figure"))
     return {
-        "subject": s, "fps": db.fps, "original": a[:, 0], "p": ex["p"][0], "q": ex["q"][0],
+        "subject": s,
+        "fps": db.fps,
+        "original": a[:, 0],
+        "p": ex["p"][0],
+        "q": ex["q"][0],
         "fitted": {r: fit_anim_part(a, 0, len(a) - 1, ex["p"], ex["q"], r)[:, 0] for r in RAMPS},
-        "balance": seq[:, 0], "balance_s": params.figure_balance_s,
+        "balance": seq[:, 0],
+        "balance_s": params.figure_balance_s,
         "shifts_s": [(e.start / db.fps, e.stop / db.fps) for e in events if e.kind == "shift"],
         "quantile": params.quantile,
     }

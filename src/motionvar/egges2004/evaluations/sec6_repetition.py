@@ -39,17 +39,16 @@ def window_best_match(x: np.ndarray, window: int, stride: int, chunk: int = 512)
 
     starts = np.arange(0, len(x) - window + 1, stride)
     own = np.arange(0, len(x) - window + 1, window)
-    query = normalise(np.stack([x[s: s + window] for s in own]))
+    query = normalise(np.stack([x[s : s + window] for s in own]))
     best = np.full(len(own), -np.inf)
     view = np.lib.stride_tricks.sliding_window_view(x, window, axis=0)  # (T-w+1, C, w)
     for k in range(0, len(starts), chunk):
-        s = starts[k: k + chunk]
+        s = starts[k : k + chunk]
         cand = normalise(np.moveaxis(view[s], 2, 1))
         ncc = query @ cand.T
         ncc[np.abs(own[:, None] - s[None, :]) < window] = -np.inf
         best = np.maximum(best, ncc.max(axis=1))
     return best
-
 
 
 @dataclass(frozen=True)
@@ -65,11 +64,16 @@ class RepetitionParams:
 
 
 GEN_VAR, GEN_VAR_CUT, REC_VAR, LOOP_VAR = (
-    "generated variations (Sec. 6)", "generated variations, cut to the recorded length",
-    "recorded rest variations", "looped rest variations",
+    "generated variations (Sec. 6)",
+    "generated variations, cut to the recorded length",
+    "recorded rest variations",
+    "looped rest variations",
 )
 GEN_IDLE, REC_IDLE, LOOP_IDLE, PERLIN_IDLE = (
-    "generated idle (both layers)", "recorded idle", "looped recorded clip", "Perlin noise on PCs",
+    "generated idle (both layers)",
+    "recorded idle",
+    "looped recorded clip",
+    "Perlin noise on PCs",
 )
 REPETITION_SOURCES = (GEN_VAR, GEN_VAR_CUT, REC_VAR, LOOP_VAR, GEN_IDLE, REC_IDLE, LOOP_IDLE, PERLIN_IDLE)
 
@@ -113,11 +117,16 @@ def repetition(
             # a recording too short for two windows has nothing to repeat: left out (windows 0)
             best = window_best_match(y, window, stride) if len(y) >= 2 * window else np.empty(0)
             pooled[source].append(best)
-            rows.append({
-                "subject": s, "source": source, "seconds": len(x) / fps, "windows": len(best),
-                "median_best_ncc": float(np.median(best)) if len(best) else np.nan,
-                "max_best_ncc": float(best.max()) if len(best) else np.nan,
-            })
+            rows.append(
+                {
+                    "subject": s,
+                    "source": source,
+                    "seconds": len(x) / fps,
+                    "windows": len(best),
+                    "median_best_ncc": float(np.median(best)) if len(best) else np.nan,
+                    "max_best_ncc": float(best.max()) if len(best) else np.nan,
+                }
+            )
     table = pd.DataFrame(rows)
     pooled = {k: np.concatenate(v) for k, v in pooled.items()}
     med = {k: float(np.median(v)) if len(v) else np.nan for k, v in pooled.items()}
@@ -132,7 +141,8 @@ def repetition(
     rec_s = measured_rec["seconds"].mean()
     claim = Claim(
         claim_id=f"{PAPER}.sec6.variations_show_little_repetition",
-        paper=PAPER, source="Sec. 6.2",
+        paper=PAPER,
+        source="Sec. 6.2",
         statement="Small posture variations generated from clustered (distance, value) pairs show very little repetition.",
         published="qualitative: 'the variations show very little repetition' (no number)",
         measured=(
@@ -145,7 +155,10 @@ def repetition(
         verdict=verdict,
         # the main condition: at the recorded length, no more repetition than the recorded rest (rec is NaN when no
         # recorded rest is long enough); before it, generated variations must repeat less than a loop (gen < loop)
-        value=cut, bound=rec, unit="ncc", direction="<=",
+        value=cut,
+        bound=rec,
+        unit="ncc",
+        direction="<=",
         note=(
             "Repetition = for each non-overlapping window, the highest normalised cross-correlation with any other "
             "non-overlapping window of the same sequence (1 = an exact repeat). Reproduced = generated variations "

@@ -60,7 +60,9 @@ def window_features(
         raise ValueError(f"feature_set must be one of {FEATURE_SETS}, got {feature_set!r}")
     length = int(round(window_s * fps))
     if length < 2 or len(pcs) < length:
-        raise ValueError(f"window_features: a window of {window_s} s needs {length} frames; the sequence has {len(pcs)}")
+        raise ValueError(
+            f"window_features: a window of {window_s} s needs {length} frames; the sequence has {len(pcs)}"
+        )
     w = _windows(np.asarray(pcs)[:, :n_pcs], length)
     lam = _windows(np.asarray(support), length)
     freqs, power = welch(
@@ -78,7 +80,6 @@ def window_features(
 def make_identifier(seed: int = 0) -> Pipeline:
     """Standardised multinomial logistic regression naming the subject of a window."""
     return make_pipeline(StandardScaler(), LogisticRegression(max_iter=5000, random_state=seed))
-
 
 
 REC, GEN, PERLIN = "recorded (held out)", "generated (Egges 2004)", "Perlin noise on PCs"
@@ -117,14 +118,21 @@ def identification(
         db, pca, sk = model.databases[s], model.pca, model.skeletons[s]
         sequences[REC] += [(s, r.pcs, r.support) for r in held_out[s]]
         gen, _ = generate_idle_pcs(db, n_gen, subject_rng(seed, s, "identification"))
-        per = perlin_sequence(model, recordings[s], sds, params.perlin_frequency_hz, n_gen,
-                              int(subject_rng(seed, s, "perlin").integers(2**31)))
+        per = perlin_sequence(
+            model,
+            recordings[s],
+            sds,
+            params.perlin_frequency_hz,
+            n_gen,
+            int(subject_rng(seed, s, "perlin").integers(2**31)),
+        )
         for name, pcs in ((GEN, gen), (PERLIN, per)):
             sequences[name].append((s, pcs, support_ratio(pca.reconstruct(pcs, sk, fps), joint_map)))
 
     def features(items, fs):
-        blocks = [(window_features(p, lam, fps, params.window_s, params.feature_pcs, fs, margin), s)
-                  for s, p, lam in items]
+        blocks = [
+            (window_features(p, lam, fps, params.window_s, params.feature_pcs, fs, margin), s) for s, p, lam in items
+        ]
         return np.concatenate([b for b, _ in blocks]), np.concatenate([[s] * len(b) for b, s in blocks])
 
     rows, confusion = [], {}
@@ -136,11 +144,17 @@ def identification(
             Xs, ys = features(items, fs)
             pred = clf.predict(Xs)
             n_ok = int(np.sum(pred == ys))
-            rows.append({
-                "source": source, "features": fs, "subjects": len(subjects), "windows": len(ys),
-                "accuracy": n_ok / len(ys), "chance": chance,
-                "p_value": binomtest(n_ok, len(ys), chance, alternative="greater").pvalue,
-            })
+            rows.append(
+                {
+                    "source": source,
+                    "features": fs,
+                    "subjects": len(subjects),
+                    "windows": len(ys),
+                    "accuracy": n_ok / len(ys),
+                    "chance": chance,
+                    "p_value": binomtest(n_ok, len(ys), chance, alternative="greater").pvalue,
+                }
+            )
             if fs == "all" and source == GEN:
                 confusion = {"labels": subjects, "confusion": confusion_matrix(ys, pred, labels=subjects)}
     table = pd.DataFrame(rows)
@@ -164,16 +178,21 @@ def identification(
         note += " Generated motion is recognised above chance but not better than the Perlin baseline."
     claim = Claim(
         claim_id=f"{PAPER}.sec8.generated_idle_identifies_person",
-        paper=PAPER, source="Sec. 5.6, 8",
+        paper=PAPER,
+        source="Sec. 5.6, 8",
         statement="Idle motion generated from a person's database lets viewers recognise that person.",
         published="informal viewing test: 'in general, test subjects could recognise the person' (no number)",
         measured=(
             f"accuracy {gen:.2f} on generated windows (chance {chance:.2f}, p = {p_gen:.1e}, "
             f"{len(subjects)} subjects); Perlin baseline {per:.2f}; held-out recordings {rec:.2f}"
         ),
-        verdict=verdict, note=note,
+        verdict=verdict,
+        note=note,
         # the main condition: generated windows named at least as well as the Perlin baseline's (accuracy generated
         # minus Perlin); above chance (binomial p < alpha) is required beside it (without it: not reproduced)
-        value=gen - per, bound=0.0, unit="share", direction=">=",
+        value=gen - per,
+        bound=0.0,
+        unit="share",
+        direction=">=",
     )
     return EvaluationResult(table, [claim], {**confusion, "window_s": params.window_s})

@@ -59,15 +59,22 @@ def speed(model: IdleModel, params: SpeedParams, seed: int) -> EvaluationResult:
         db = model.databases[s]
         n = int(round(params.sequence_s * db.fps)) + 1
         t = generation_seconds(db, model.pca, n, seed, params.repeats)
-        rows.append({
-            "subject": s, "frames": n, "playback_fps": db.fps, **{f"{k}_s": v for k, v in t.items()},
-            "frames_per_second": n / t["total"], "realtime_ratio": n / t["total"] / db.fps,
-        })
+        rows.append(
+            {
+                "subject": s,
+                "frames": n,
+                "playback_fps": db.fps,
+                **{f"{k}_s": v for k, v in t.items()},
+                "frames_per_second": n / t["total"],
+                "realtime_ratio": n / t["total"] / db.fps,
+            }
+        )
     table = pd.DataFrame(rows)
     worst = float(table["realtime_ratio"].min())
     claim = Claim(
         claim_id=f"{PAPER}.sec8.real_time",
-        paper=PAPER, source="Sec. 8",
+        paper=PAPER,
+        source="Sec. 8",
         statement="Idle motions are generated in real time (faster than they play back).",
         published="real time on a 1.8 GHz desktop PC (no number)",
         measured=(
@@ -75,7 +82,10 @@ def speed(model: IdleModel, params: SpeedParams, seed: int) -> EvaluationResult:
             f"of {table['playback_fps'].iloc[0]:g} fps ({params.sequence_s:g}-s sequences, best of {params.repeats})"
         ),
         verdict=verdict_threshold(worst, 1.0, ">="),
-        value=worst, bound=1.0, unit="ratio", direction=">=",
+        value=worst,
+        bound=1.0,
+        unit="ratio",
+        direction=">=",
         note=(
             "Measured on one core of the CI machine, generating whole sequences at once (the paper's engine runs "
             "frame by frame inside an animation system); includes the exponential maps back to joint rotations, "

@@ -14,10 +14,9 @@ for as many frames as asked, far beyond the length of the examples (Sec. 7.4 of 
 
 from __future__ import annotations
 
+import warnings
 from collections.abc import Sequence
 from dataclasses import dataclass
-
-import warnings
 
 import numpy as np
 from sklearn.exceptions import ConvergenceWarning
@@ -51,9 +50,9 @@ def _fit_nodes(inputs: np.ndarray, targets: np.ndarray, max_parents: int) -> lis
             continue
         with warnings.catch_warnings():  # LARS reports collinear candidates (consecutive frames) as it drops them
             warnings.simplefilter("ignore", ConvergenceWarning)
-            lasso = LassoLarsIC(
-                criterion="bic", max_iter=max_parents, noise_variance=noise[d], precompute=gram
-            ).fit(z, y)
+            lasso = LassoLarsIC(criterion="bic", max_iter=max_parents, noise_variance=noise[d], precompute=gram).fit(
+                z, y
+            )
         parents = np.flatnonzero(lasso.coef_)[:max_parents]
         design = np.concatenate([inputs[:, parents], np.ones((len(y), 1))], axis=1)
         coef = np.linalg.lstsq(design, y, rcond=None)[0]

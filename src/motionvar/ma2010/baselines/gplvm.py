@@ -14,7 +14,9 @@ from __future__ import annotations
 import numpy as np
 
 
-def helix_trajectory(latent: np.ndarray, n_samples: int, n_turns: float, phase: float = 0.0, radius_scale: float = 1.0) -> np.ndarray:
+def helix_trajectory(
+    latent: np.ndarray, n_samples: int, n_turns: float, phase: float = 0.0, radius_scale: float = 1.0
+) -> np.ndarray:
     """A helix (M = n_samples, q) through a latent point cloud (N, q): a circle in the plane
     of the cloud's two main axes around its centre, with the cloud's mean radius (times
     ``radius_scale``), turning ``n_turns`` times, while the coordinate along the third axis

@@ -20,7 +20,11 @@ class StyleClipInterpolation:
     """Whole clips as a function of style, interpolated by ``method`` ('kriging' or 'rbf')."""
 
     def __init__(
-        self, method: str = "kriging", variogram_model: str = "linear", flight: bool = False, trend_rcond: float = 0.0,
+        self,
+        method: str = "kriging",
+        variogram_model: str = "linear",
+        flight: bool = False,
+        trend_rcond: float = 0.0,
     ):
         if method not in ("kriging", "rbf"):
             raise ValueError(f"StyleClipInterpolation: method must be 'kriging' or 'rbf'; got {method!r}")
@@ -33,8 +37,11 @@ class StyleClipInterpolation:
         self.codec_ = ClipCodec.fit(clips, np.arange(clips.skeleton.n_joints), timing=True, root_height=self.flight)
         self.n_keys_ = len(clips.reference_keys)
         self.reference_keys_ = clips.reference_keys
-        interp = (UniversalKriging(self.variogram_model, trend_rcond=self.trend_rcond) if self.method == "kriging"
-                  else RBFInterpolation(linear_rcond=self.trend_rcond))
+        interp = (
+            UniversalKriging(self.variogram_model, trend_rcond=self.trend_rcond)
+            if self.method == "kriging"
+            else RBFInterpolation(linear_rcond=self.trend_rcond)
+        )
         self.interpolator_ = interp.fit(clips.style, self.codec_.encode(clips))
         return self
 
@@ -43,7 +50,9 @@ class StyleClipInterpolation:
         return ClipPrediction(rotations=rot, key_times=keys, root_height=height)
 
 
-def mk05_kriging(variogram_model: str = "linear", flight: bool = False, trend_rcond: float = 0.0) -> StyleClipInterpolation:
+def mk05_kriging(
+    variogram_model: str = "linear", flight: bool = False, trend_rcond: float = 0.0
+) -> StyleClipInterpolation:
     """Universal Kriging over the style parameters only (Mukai & Kuriyama 2005)."""
     return StyleClipInterpolation("kriging", variogram_model, flight, trend_rcond)
 

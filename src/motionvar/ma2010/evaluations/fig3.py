@@ -98,10 +98,20 @@ def fig3_keyframes(
                 shown_source[behaviour] = "ground truth" if truth[0] else "detected"
                 for f, kind in zip(ex.frames, ex.kinds):
                     near = np.abs(strikes - f).min() / m.fps if len(strikes) else np.nan
-                    rows.append({"clip_id": meta["clip_id"].iloc[int(i)], "behaviour": behaviour, "frame": int(f),
-                                 "time_s": f / m.fps, "extremum": "max" if kind == 1 else "min",
-                                 "S_M": float(ex.signal.signal[f]), "to_foot_strike_s": near,
-                                 "D_l": ex.signal.d_lower, "D_u": ex.signal.d_upper, "part": ex.signal.part})
+                    rows.append(
+                        {
+                            "clip_id": meta["clip_id"].iloc[int(i)],
+                            "behaviour": behaviour,
+                            "frame": int(f),
+                            "time_s": f / m.fps,
+                            "extremum": "max" if kind == 1 else "min",
+                            "S_M": float(ex.signal.signal[f]),
+                            "to_foot_strike_s": near,
+                            "D_l": ex.signal.d_lower,
+                            "D_u": ex.signal.d_upper,
+                            "part": ex.signal.part,
+                        }
+                    )
         if phases:
             counts[behaviour] = (circular_sd(phases), len(phases), float(np.median(offsets)))
         elif len(idx):
@@ -110,14 +120,17 @@ def fig3_keyframes(
                 f"none of the {n} {behaviour} clips has a maximum of S_M(t) (legs farthest apart) between two foot "
                 f"strikes: {n_struck} of them have two or more {strike_source[behaviour]} foot strikes, {n_maxima} "
                 "maxima in all; the claim measures where in the step the maxima fall, so it needs clips holding at "
-                "least one whole step, from a foot strike to the next")
+                "least one whole step, from a foot strike to the next"
+            )
 
     claims = []
     for behaviour in ("walk", "run"):
         common = dict(
-            claim_id=f"{PAPER}.fig3.{behaviour}_keyframes_at_one_gait_phase", paper=PAPER, source="Fig. 3, Sec. 4.1-4.2",
+            claim_id=f"{PAPER}.fig3.{behaviour}_keyframes_at_one_gait_phase",
+            paper=PAPER,
+            source="Fig. 3, Sec. 4.1-4.2",
             statement=f"The key frames (extrema of S_M(t)) of {GERUNDS.get(behaviour, behaviour)} fall at the same gait phase in every "
-                      "step, so they can segment and time-warp the motion.",
+            "step, so they can segment and time-warp the motion.",
             published="each local extremum of S_M(t) is a key frame, used to cut and time-warp clips (no number given)",
         )
         if behaviour in missing:
@@ -126,16 +139,25 @@ def fig3_keyframes(
         if behaviour not in counts:
             continue
         sd, n, offset = counts[behaviour]
-        source = {"ground truth": "generator ground truth", "detected": "detected from foot contacts, motionvar.prep",
-                  "mixed": "ground truth where the metadata has it, else detected"}[strike_source[behaviour]]
-        claims.append(Claim(
-            **common,
-            measured=f"circular SD of the maxima's phase within the step: {sd:.3f} of a step over {n} maxima; median "
-                     f"offset from the nearest foot strike {offset * 1000:+.0f} ms",
-            verdict=verdict_threshold(sd, phase_sd_bound, "<=", tolerance=1.0),
-            value=sd, bound=phase_sd_bound, unit="step", direction="<=",
-            note=f"Reproduced when the SD is at most {phase_sd_bound:g} of a step (partial: twice that; our bound, the "
-                 f"paper gives none). Steps run from one foot strike ({source}) to the next. {PROTOCOL}",
-        ))
-    return EvaluationResult(table=pd.DataFrame(rows), claims=claims,
-                            figure={"shown": shown, "strike_source": shown_source})
+        source = {
+            "ground truth": "generator ground truth",
+            "detected": "detected from foot contacts, motionvar.prep",
+            "mixed": "ground truth where the metadata has it, else detected",
+        }[strike_source[behaviour]]
+        claims.append(
+            Claim(
+                **common,
+                measured=f"circular SD of the maxima's phase within the step: {sd:.3f} of a step over {n} maxima; median "
+                f"offset from the nearest foot strike {offset * 1000:+.0f} ms",
+                verdict=verdict_threshold(sd, phase_sd_bound, "<=", tolerance=1.0),
+                value=sd,
+                bound=phase_sd_bound,
+                unit="step",
+                direction="<=",
+                note=f"Reproduced when the SD is at most {phase_sd_bound:g} of a step (partial: twice that; our bound, the "
+                f"paper gives none). Steps run from one foot strike ({source}) to the next. {PROTOCOL}",
+            )
+        )
+    return EvaluationResult(
+        table=pd.DataFrame(rows), claims=claims, figure={"shown": shown, "strike_source": shown_source}
+    )

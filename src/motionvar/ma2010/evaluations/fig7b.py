@@ -34,11 +34,16 @@ def reliability_map(
     pred, _ = model.synthesize_clips(grid, noise=False)
     measured = predicted_strides(pred, model.reference_keys_, solver, clips.fps)
     dist, _ = cKDTree(clips.style).query(grid)
-    return pd.DataFrame({
-        "left_cm": grid[:, 0], "right_cm": grid[:, 1],
-        "measured_left_cm": measured[:, 0], "measured_right_cm": measured[:, 1],
-        "stride_error_cm": np.max(np.abs(measured - grid), axis=1), "nearest_example_cm": dist,
-    })
+    return pd.DataFrame(
+        {
+            "left_cm": grid[:, 0],
+            "right_cm": grid[:, 1],
+            "measured_left_cm": measured[:, 0],
+            "measured_right_cm": measured[:, 1],
+            "stride_error_cm": np.max(np.abs(measured - grid), axis=1),
+            "nearest_example_cm": dist,
+        }
+    )
 
 
 def fig7b_reliability(
@@ -53,17 +58,22 @@ def fig7b_reliability(
     ranked = np.where(failed, np.inf, table["stride_error_cm"].to_numpy())  # a failed synthesis ranks last
     rho, p = spearmanr(ranked, table["nearest_example_cm"])
     claim = Claim(
-        claim_id=f"{PAPER}.fig7b.error_grows_with_distance", paper=PAPER, source="Fig. 7b, Sec. 7.2",
+        claim_id=f"{PAPER}.fig7b.error_grows_with_distance",
+        paper=PAPER,
+        source="Fig. 7b, Sec. 7.2",
         statement="The distance between a requested style and the examples' styles correlates strongly with the "
-                  "(un)reliability of the synthesized motion.",
+        "(un)reliability of the synthesized motion.",
         published="strong correlation (map, no number)",
         measured=f"Spearman rho = {rho:.2f} (p = {p:.1g}) between stride error and distance to the nearest example, "
-                 f"{len(table)} grid points ({int(failed.sum())} failed syntheses ranked last)",
+        f"{len(table)} grid points ({int(failed.sum())} failed syntheses ranked last)",
         verdict=verdict_from_bool(rho > 0 and p < 0.05),
-        value=rho, bound=0.0, unit="rho", direction=">",  # the main condition; p < 0.05 is required beside it
+        value=rho,
+        bound=0.0,
+        unit="rho",
+        direction=">",  # the main condition; p < 0.05 is required beside it
         note="Reproduced when rho > 0 at p < 0.05. Reliability = stride error of the synthesized cycle (the paper "
-             f"does not define its reliability level). Grid: the examples' range widened by {margin:g} "
-             f"of its extent on each side. {PROTOCOL}",
+        f"does not define its reliability level). Grid: the examples' range widened by {margin:g} "
+        f"of its extent on each side. {PROTOCOL}",
     )
     figure = {"n_grid": n_grid, "example_style": walks.clips.style, "rho": rho, "p": p, "failed": failed}
     return EvaluationResult(table=table, claims=[claim], figure=figure)

@@ -11,16 +11,21 @@ import numpy as np
 import pandas as pd
 
 from ...claims import Claim, EvaluationResult, verdict_from_bool, verdict_from_fraction
+from ...core.kinematics import fk
 from ..baselines.mukai_kuriyama import StyleClipInterpolation, mk05_kriging, rose98_rbf
 from ..correspondence import retime
 from ..examples import WalkCycles
-from ...core.kinematics import fk
 from ..svi import ClipPrediction, StyleVariationModel
 from ..synthesis import RootSolver
 from ..variation import joint_variation
 from .common import (
-    PAPER, PROTOCOL, PUBLISHED_MAX_STRIDE_ERROR_CM, group_spread, nearest_clips, prediction_key_frames,
+    PAPER,
+    PROTOCOL,
+    PUBLISHED_MAX_STRIDE_ERROR_CM,
+    group_spread,
+    nearest_clips,
     predicted_strides,
+    prediction_key_frames,
 )
 
 GROUPS = ("legs", "left_arm", "right_arm", "upper_body")  # A, B, C, D (Fig. 4)
@@ -98,13 +103,31 @@ def fig8_fixed_style(
         "data, mean posture removed": posture_free_spread(clips.rotations[near], groups, solver),
         "RBF": group_spread(interpolation_variants(rose98_rbf().fit(clips), style, n).rotations, groups, solver),
         "Kriging": group_spread(
-            interpolation_variants(mk05_kriging(variogram_model).fit(clips), style, n).rotations, groups, solver),
+            interpolation_variants(mk05_kriging(variogram_model).fit(clips), style, n).rotations, groups, solver
+        ),
     }
-    rows = [{"kind": "variant", "name": f"variant {k + 1}", **{g: float(xi[g][k]) for g in GROUPS},
-             "left_cm": strides[k, 0], "right_cm": strides[k, 1], "stride_error_cm": errors[k]} for k in range(n)]
-    rows += [{"kind": "ceiling", "name": f"own xi of {clips.clip_ids[i]}", **{g: float(ceil_xi[g][k]) for g in GROUPS},
-              "left_cm": ceil_strides[k, 0], "right_cm": ceil_strides[k, 1], "stride_error_cm": ceil_errors[k]}
-             for k, i in enumerate(near)]
+    rows = [
+        {
+            "kind": "variant",
+            "name": f"variant {k + 1}",
+            **{g: float(xi[g][k]) for g in GROUPS},
+            "left_cm": strides[k, 0],
+            "right_cm": strides[k, 1],
+            "stride_error_cm": errors[k],
+        }
+        for k in range(n)
+    ]
+    rows += [
+        {
+            "kind": "ceiling",
+            "name": f"own xi of {clips.clip_ids[i]}",
+            **{g: float(ceil_xi[g][k]) for g in GROUPS},
+            "left_cm": ceil_strides[k, 0],
+            "right_cm": ceil_strides[k, 1],
+            "stride_error_cm": ceil_errors[k],
+        }
+        for k, i in enumerate(near)
+    ]
     rows += [{"kind": "spread_cm", "name": name, **s} for name, s in spreads.items()]
 
     motions, keys = [], []
@@ -117,8 +140,11 @@ def fig8_fixed_style(
     ours, ref, ceil = spreads["ours"], spreads[data_name], spreads["ceiling (their own xi)"]
     static = spreads["data, mean posture removed"]
     ratios = {g: ours[g] / max(ref[g], 1e-12) for g in GROUPS}
-    checks = [all(ours[g] > 1e-6 for g in GROUPS), all(lo <= r <= hi for r in ratios.values()),
-              float(errors.max()) <= PUBLISHED_MAX_STRIDE_ERROR_CM]
+    checks = [
+        all(ours[g] > 1e-6 for g in GROUPS),
+        all(lo <= r <= hi for r in ratios.values()),
+        float(errors.max()) <= PUBLISHED_MAX_STRIDE_ERROR_CM,
+    ]
     none_vary = max(max(spreads["RBF"].values()), max(spreads["Kriging"].values()))
 
     def share(g: str) -> str:  # the method's share of the gap ours -> data in group g, and the posture offsets' in it
@@ -126,50 +152,75 @@ def fig8_fixed_style(
         if gap <= 1e-9:
             return f"{g}: no gap"
         posture = (ref[g] - static[g]) / method if method > 1e-9 else 0.0
-        return (f"{g} {100 * min(max(method / gap, 0.0), 1.0):.0f}% (posture offsets "
-                f"{100 * min(max(posture, 0.0), 1.0):.0f}% of it)")
+        return (
+            f"{g} {100 * min(max(method / gap, 0.0), 1.0):.0f}% (posture offsets "
+            f"{100 * min(max(posture, 0.0), 1.0):.0f}% of it)"
+        )
 
     claims = [
         Claim(
-            claim_id=f"{PAPER}.fig8.variants_differ_at_fixed_style", paper=PAPER, source="Fig. 8a, Sec. 7.3",
+            claim_id=f"{PAPER}.fig8.variants_differ_at_fixed_style",
+            paper=PAPER,
+            source="Fig. 8a, Sec. 7.3",
             statement="Clips synthesized with the same style parameter differ visibly while their stride lengths "
-                      "coincide with the requested one.",
+            "coincide with the requested one.",
             published="differences easy to notice; strides coincide with the style parameter",
             measured="spread ours / ceiling / data per group: "
-                     + ", ".join(f"{g} {ours[g]:.2f}/{ceil[g]:.2f}/{ref[g]:.2f} cm" for g in GROUPS)
-                     + f"; max stride error {errors.max():.2f} cm ({int(np.sum(errors > PUBLISHED_MAX_STRIDE_ERROR_CM))}"
-                     f"/{n} over 1.2 cm; ceiling {ceil_errors.max():.2f} cm)",
+            + ", ".join(f"{g} {ours[g]:.2f}/{ceil[g]:.2f}/{ref[g]:.2f} cm" for g in GROUPS)
+            + f"; max stride error {errors.max():.2f} cm ({int(np.sum(errors > PUBLISHED_MAX_STRIDE_ERROR_CM))}"
+            f"/{n} over 1.2 cm; ceiling {ceil_errors.max():.2f} cm)",
             verdict=verdict_from_fraction(sum(checks), len(checks), full=1.0, partial=0.6),
-            value=sum(checks) / len(checks), bound=1.0, unit="share", direction=">=",
+            value=sum(checks) / len(checks),
+            bound=1.0,
+            unit="share",
+            direction=">=",
             note=f"Three checks: spread > 0 in every group; spread within [{lo:g}, {hi:g}] x the spread of the "
-                 f"{len(near)} example cycles nearest the style (one per subject, as Fig. 1); every stride error <= "
-                 f"{PUBLISHED_MAX_STRIDE_ERROR_CM} cm (Fig. 6's bound). Passed: {checks}. Ceiling: the same style "
-                 "synthesized from those examples' own xi instead of sampled xi, the most variation the model can "
-                 "give them. Eq. 7's xi sums frame-to-frame rotation changes, so a constant posture offset (torso "
-                 "lean, head pitch, elbow flexion: much of the variation between subjects) cancels out of xi "
-                 "exactly and cannot reach the synthesis. Of the gap in spread ours -> data, the part between ceiling "
-                 "and data is the method's, the rest comes from sampling "
-                 f"{n} xi (per group, in cm of SD; posture offsets = data minus the data with each clip's mean "
-                 "posture removed): " + ", ".join(share(g) for g in GROUPS) + ". The examples with each clip's mean "
-                 "posture removed spread "
-                 + ", ".join(f"{g} {static[g]:.2f}" for g in GROUPS) + " cm. Previous full-config run (root "
-                 "rotation in group D): spread ours 0.03-1.42 cm vs data 0.35-2.39 cm; ceiling 0.43/1.60/1.64/0.03 "
-                 "cm vs data 0.92/2.22/2.39/0.35 cm; 6/20 strides over 1.2 cm. Changed: "
-                 + ("the root rotation moved to the legs group A (config ma2010.root_group; a sampled xi_D no longer "
-                    "tilts the pelvis and breaks the stride), and " if walks.root_group == "legs" else "")
-                 + f"the ceiling is reported. Root rotation in: {walks.root_group}. {PROTOCOL}",
+            f"{len(near)} example cycles nearest the style (one per subject, as Fig. 1); every stride error <= "
+            f"{PUBLISHED_MAX_STRIDE_ERROR_CM} cm (Fig. 6's bound). Passed: {checks}. Ceiling: the same style "
+            "synthesized from those examples' own xi instead of sampled xi, the most variation the model can "
+            "give them. Eq. 7's xi sums frame-to-frame rotation changes, so a constant posture offset (torso "
+            "lean, head pitch, elbow flexion: much of the variation between subjects) cancels out of xi "
+            "exactly and cannot reach the synthesis. Of the gap in spread ours -> data, the part between ceiling "
+            "and data is the method's, the rest comes from sampling "
+            f"{n} xi (per group, in cm of SD; posture offsets = data minus the data with each clip's mean "
+            "posture removed): " + ", ".join(share(g) for g in GROUPS) + ". The examples with each clip's mean "
+            "posture removed spread "
+            + ", ".join(f"{g} {static[g]:.2f}" for g in GROUPS)
+            + " cm. Previous full-config run (root "
+            "rotation in group D): spread ours 0.03-1.42 cm vs data 0.35-2.39 cm; ceiling 0.43/1.60/1.64/0.03 "
+            "cm vs data 0.92/2.22/2.39/0.35 cm; 6/20 strides over 1.2 cm. Changed: "
+            + (
+                "the root rotation moved to the legs group A (config ma2010.root_group; a sampled xi_D no longer "
+                "tilts the pelvis and breaks the stride), and "
+                if walks.root_group == "legs"
+                else ""
+            )
+            + f"the ceiling is reported. Root rotation in: {walks.root_group}. {PROTOCOL}",
         ),
         Claim(
-            claim_id=f"{PAPER}.sec7_4.rbf_kriging_give_no_variation", paper=PAPER, source="Sec. 7.3-7.4",
+            claim_id=f"{PAPER}.sec7_4.rbf_kriging_give_no_variation",
+            paper=PAPER,
+            source="Sec. 7.3-7.4",
             statement="RBFs and universal Kriging cannot produce variants with the same style parameters.",
             published="constant output for a constant style",
             measured=f"largest spread of {n} RBF / Kriging clips at one style: {none_vary:.2e} cm (ours: "
-                     f"{min(ours.values()):.2f}-{max(ours.values()):.2f} cm)",
+            f"{min(ours.values()):.2f}-{max(ours.values()):.2f} cm)",
             verdict=verdict_from_bool(none_vary < 1e-6),
-            value=none_vary, bound=1e-6, unit="cm", direction="<",
+            value=none_vary,
+            bound=1e-6,
+            unit="cm",
+            direction="<",
             note="Both interpolate over the style alone, so a repeated style gives the same clip.",
         ),
     ]
-    figure = {"motions": motions, "key_frames": keys, "style": style, "errors": errors, "spreads": spreads,
-              "groups": GROUPS, "ceiling_errors": ceil_errors, "data_name": data_name}
+    figure = {
+        "motions": motions,
+        "key_frames": keys,
+        "style": style,
+        "errors": errors,
+        "spreads": spreads,
+        "groups": GROUPS,
+        "ceiling_errors": ceil_errors,
+        "data_name": data_name,
+    }
     return EvaluationResult(table=pd.DataFrame(rows), claims=claims, figure=figure)

@@ -16,8 +16,16 @@ from ...claims import Claim, EvaluationResult, NotApplicable, verdict_from_fract
 from ...core.threads import fixed_threads
 from ...metrics.jerk import mean_jerk, root_free_jerk
 from ..comparison import (
-    LABELS, METHODS, NATURALNESS_SCORES, NaturalnessReference, best_with_variation, example_pose_sequences,
-    method_sequences, naturalness, naturalness_scores, variation_between,
+    LABELS,
+    METHODS,
+    NATURALNESS_SCORES,
+    NaturalnessReference,
+    best_with_variation,
+    example_pose_sequences,
+    method_sequences,
+    naturalness,
+    naturalness_scores,
+    variation_between,
 )
 from ..examples import WalkCycles
 from .common import PAPER, PROTOCOL, nearest_clips
@@ -70,15 +78,27 @@ def sec7_4_comparison(
         raise NotApplicable(
             f"{walks.source}: {len(set(walks.subjects))} subject(s) among the {walks.clips.n_clips} walking cycles; "
             "Sec. 7.4 takes its example cycles one per subject (as the five clips of Fig. 1), so it needs cycles of "
-            "at least 2 subjects")
+            "at least 2 subjects"
+        )
     five = walks.clips.subset(near)
     with fixed_threads(threads):
         out = method_sequences(
-            five, walks.groups, walks.solver, seconds, n_sequences, seed, structure=structure,
-            variogram_model=variogram_model, perlin_amplitude=perlin_amplitude,
-            perlin_frequency_hz=perlin_frequency_hz, gplvm_latent_dim=gplvm_latent_dim,
-            gplvm_iterations=gplvm_iterations, gplvm_frame_step=gplvm_frame_step, dbn_max_parents=dbn_max_parents,
-            xi_per=xi_per, landing_rule=landing_rule,
+            five,
+            walks.groups,
+            walks.solver,
+            seconds,
+            n_sequences,
+            seed,
+            structure=structure,
+            variogram_model=variogram_model,
+            perlin_amplitude=perlin_amplitude,
+            perlin_frequency_hz=perlin_frequency_hz,
+            gplvm_latent_dim=gplvm_latent_dim,
+            gplvm_iterations=gplvm_iterations,
+            gplvm_frame_step=gplvm_frame_step,
+            dbn_max_parents=dbn_max_parents,
+            xi_per=xi_per,
+            landing_rule=landing_rule,
         )
     examples = [walks.solver.motion(r, five.fps) for r in example_pose_sequences(five)]
     ref = NaturalnessReference.from_examples(examples, walks.solver, contact_height_cm, discontinuity_factor)
@@ -94,14 +114,29 @@ def sec7_4_comparison(
             scores = naturalness_scores(meas, example_jerk, example_root_free_jerk)
             if m.duration < full:  # the sequence broke down before its end: unusable, least natural
                 scores = {k: np.inf for k in scores}
-            rows.append({"method": method, "sequence": s + 1, "seconds": m.duration, **meas, **scores,
-                         "variation_between_sequences_cm": var})
+            rows.append(
+                {
+                    "method": method,
+                    "sequence": s + 1,
+                    "seconds": m.duration,
+                    **meas,
+                    **scores,
+                    "variation_between_sequences_cm": var,
+                }
+            )
             log.info("%s %d: %.1f s, %s", method, s + 1, m.duration, meas)
     for s, m in enumerate(examples):  # reference: the examples themselves, root-solved alike
         meas = naturalness(m, ref)
-        rows.append({"method": "examples", "sequence": s + 1, "seconds": m.duration, **meas,
-                     **naturalness_scores(meas, example_jerk, example_root_free_jerk),
-                     "variation_between_sequences_cm": np.nan})
+        rows.append(
+            {
+                "method": "examples",
+                "sequence": s + 1,
+                "seconds": m.duration,
+                **meas,
+                **naturalness_scores(meas, example_jerk, example_root_free_jerk),
+                "variation_between_sequences_cm": np.nan,
+            }
+        )
     table = pd.DataFrame(rows)
     means = table.groupby("method", sort=False).mean(numeric_only=True)
     scores = {m: {k: float(means.loc[m, k]) for k in NATURALNESS_SCORES} for m in METHODS}
@@ -112,39 +147,53 @@ def sec7_4_comparison(
     ours_varies = variation["ours"] > 1e-6
     n_best = sum(best.values()) if ours_varies else 0
     claim = Claim(
-        claim_id=f"{PAPER}.sec7_4.ours_most_natural_with_variation", paper=PAPER, source="Sec. 7.4",
+        claim_id=f"{PAPER}.sec7_4.ours_most_natural_with_variation",
+        paper=PAPER,
+        source="Sec. 7.4",
         statement="Three long sequences by our method are visually different but more natural than those of Perlin "
-                  "noise, a GPLVM, RBFs, Kriging and a DBN built from the same five example clips.",
+        "noise, a GPLVM, RBFs, Kriging and a DBN built from the same five example clips.",
         published="ours natural and varied; the others unnatural (Perlin, GPLVM jerks, DBN after many iterations) "
-                  "or without variation (RBF, Kriging); judged from video",
+        "or without variation (RBF, Kriging); judged from video",
         measured=f"ours best on {n_best}/{len(best)} naturalness scores among the methods that vary ({', '.join(rivals)}): "
-                 + "; ".join(f"{NATURALNESS_SCORES[k]}: ours {scores['ours'][k]:.3g}, best rival "
-                             f"{min((scores[m][k] for m in METHODS if m != 'ours' and variation[m] > 1e-6), default=float('nan')):.3g}"
-                             + (" (ours best)" if best[k] else "") for k in NATURALNESS_SCORES)
-                 + f"; variation between ours' sequences {variation['ours']:.2f} cm",
+        + "; ".join(
+            f"{NATURALNESS_SCORES[k]}: ours {scores['ours'][k]:.3g}, best rival "
+            f"{min((scores[m][k] for m in METHODS if m != 'ours' and variation[m] > 1e-6), default=float('nan')):.3g}"
+            + (" (ours best)" if best[k] else "")
+            for k in NATURALNESS_SCORES
+        )
+        + f"; variation between ours' sequences {variation['ours']:.2f} cm",
         verdict=verdict_from_fraction(n_best, len(best), full=1.0, partial=0.5),
-        value=n_best / len(best) if best else float("nan"), bound=1.0, unit="share", direction=">=",
-        note=("Diverged (unrolled process left the rotation range before the end): "
-              + ", ".join(f"{LABELS[m]} after {min(x.duration for x in out[m]):.1f} s" for m in METHODS
-                          if any(x.duration < full for x in out[m])) + ". " if any(
-                  x.duration < full for m in METHODS for x in out[m]) else "")
-             + f"The paper judges naturalness by eye; here {len(best)} scores stand in for it (all best: reproduced; at "
-             "least half: partial). RBF and Kriging make identical sequences (variation 0) and are not rivals. "
-             f"Ours draws xi once per {xi_per} ({'one person per sequence' if xi_per == 'sequence' else 'a new person every cycle'}; "
-             f"the paper does not say); transitions land on the {landing_rule.replace('_', ' ')} of the pose distance "
-             "(Eq. 15). The GPLVM rival is a Bayesian GPLVM along a fitted helix, stronger than the MAP GPLVM of "
-             "[Law03] that the paper drives 'roughly'. Perlin "
-             f"amplitude {perlin_amplitude:g} rad at {perlin_frequency_hz:g} Hz (set by hand, as in the "
-             f"paper). Changed from the previous run (full config: ours best on 0/4, skating ours vs best rival "
-             "not distinguishable): foot skating now counts only frames where the contact detection has a foot down "
-             "and takes its contact point's speed (the generator's walks score ~0.1 cm/s; the earlier "
-             "height-threshold measure, in the table as low_joint_speed_cm_s, scored them 13-47 cm/s: heel and toe "
-             "roll); root-free jerk is scored beside whole-body jerk (5 scores, was 4: the shared root cleanup "
-             "dominated whole-body jerk); xi per sequence (was per cycle) and the significant-maximum landing "
-             "(was the first local maximum, 3-5 frames in) are the new defaults (config ma2010.comparison_xi, "
-             "comparison_landing); the shared footskate cleanup keeps each support foot at least 0.1 s (was the "
-             f"lower foot of every frame, which flickered in double support and jolted the root). {PROTOCOL}",
+        value=n_best / len(best) if best else float("nan"),
+        bound=1.0,
+        unit="share",
+        direction=">=",
+        note=(
+            "Diverged (unrolled process left the rotation range before the end): "
+            + ", ".join(
+                f"{LABELS[m]} after {min(x.duration for x in out[m]):.1f} s"
+                for m in METHODS
+                if any(x.duration < full for x in out[m])
+            )
+            + ". "
+            if any(x.duration < full for m in METHODS for x in out[m])
+            else ""
+        )
+        + f"The paper judges naturalness by eye; here {len(best)} scores stand in for it (all best: reproduced; at "
+        "least half: partial). RBF and Kriging make identical sequences (variation 0) and are not rivals. "
+        f"Ours draws xi once per {xi_per} ({'one person per sequence' if xi_per == 'sequence' else 'a new person every cycle'}; "
+        f"the paper does not say); transitions land on the {landing_rule.replace('_', ' ')} of the pose distance "
+        "(Eq. 15). The GPLVM rival is a Bayesian GPLVM along a fitted helix, stronger than the MAP GPLVM of "
+        "[Law03] that the paper drives 'roughly'. Perlin "
+        f"amplitude {perlin_amplitude:g} rad at {perlin_frequency_hz:g} Hz (set by hand, as in the "
+        f"paper). Changed from the previous run (full config: ours best on 0/4, skating ours vs best rival "
+        "not distinguishable): foot skating now counts only frames where the contact detection has a foot down "
+        "and takes its contact point's speed (the generator's walks score ~0.1 cm/s; the earlier "
+        "height-threshold measure, in the table as low_joint_speed_cm_s, scored them 13-47 cm/s: heel and toe "
+        "roll); root-free jerk is scored beside whole-body jerk (5 scores, was 4: the shared root cleanup "
+        "dominated whole-body jerk); xi per sequence (was per cycle) and the significant-maximum landing "
+        "(was the first local maximum, 3-5 frames in) are the new defaults (config ma2010.comparison_xi, "
+        "comparison_landing); the shared footskate cleanup keeps each support foot at least 0.1 s (was the "
+        f"lower foot of every frame, which flickered in double support and jolted the root). {PROTOCOL}",
     )
-    figure = {"means": means, "n_examples": len(near), "seconds": seconds, "n_sequences": n_sequences,
-              "sequences": out}
+    figure = {"means": means, "n_examples": len(near), "seconds": seconds, "n_sequences": n_sequences, "sequences": out}
     return EvaluationResult(table=table, claims=[claim], figure=figure)

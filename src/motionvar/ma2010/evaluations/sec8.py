@@ -20,7 +20,12 @@ PUBLISHED_SECONDS_PER_SECOND = 0.15  # Sec. 8
 
 
 def synthesis_seconds_per_second(
-    model: StyleVariationModel, style: np.ndarray, solver: RootSolver, seconds: float, repeats: int = 3, seed: int = 0,
+    model: StyleVariationModel,
+    style: np.ndarray,
+    solver: RootSolver,
+    seconds: float,
+    repeats: int = 3,
+    seed: int = 0,
     clock: Callable[[], float] = time.perf_counter,
 ) -> tuple[float, float]:
     """Sec. 8: computation time per second of synthesized motion for a sequence of about
@@ -33,7 +38,9 @@ def synthesis_seconds_per_second(
         rng = np.random.default_rng(seed + r)
         t0 = clock()
         pred, _ = model.synthesize_clips(np.tile(np.atleast_2d(style), (n, 1)), rng=rng)
-        motion = sequence_motion(pred.rotations, pred.key_times, model.reference_keys_, solver, model.fps_, pred.root_height)
+        motion = sequence_motion(
+            pred.rotations, pred.key_times, model.reference_keys_, solver, model.fps_, pred.root_height
+        )
         elapsed = clock() - t0
         length = motion.duration
         best = min(best, elapsed / max(length, 1e-9))
@@ -41,7 +48,11 @@ def synthesis_seconds_per_second(
 
 
 def sec8_timing(
-    walks: WalkCycles, model: StyleVariationModel, seconds: float = 60.0, repeats: int = 3, seed: int = 0,
+    walks: WalkCycles,
+    model: StyleVariationModel,
+    seconds: float = 60.0,
+    repeats: int = 3,
+    seed: int = 0,
     clock: Callable[[], float] = time.perf_counter,
 ) -> EvaluationResult:
     """Sec. 8 for ``model`` fitted to ``walks``: about ``seconds`` s of walking at the
@@ -50,22 +61,40 @@ def sec8_timing(
     style = np.median(walks.clips.style, axis=0)
     sps, length = synthesis_seconds_per_second(model, style, walks.solver, seconds, repeats, seed, clock)
     n_cycles = walks.clips.n_clips
-    table = pd.DataFrame([{
-        "example_cycles": n_cycles, "subjects": len(set(walks.subjects)), "frames_per_cycle": walks.clips.n_frames,
-        "motion_seconds": length, "seconds_per_second": sps, "times_faster_than_real_time": 1.0 / sps,
-        "paper_seconds_per_second": PUBLISHED_SECONDS_PER_SECOND, "ratio_to_paper": sps / PUBLISHED_SECONDS_PER_SECOND,
-    }])
+    table = pd.DataFrame(
+        [
+            {
+                "example_cycles": n_cycles,
+                "subjects": len(set(walks.subjects)),
+                "frames_per_cycle": walks.clips.n_frames,
+                "motion_seconds": length,
+                "seconds_per_second": sps,
+                "times_faster_than_real_time": 1.0 / sps,
+                "paper_seconds_per_second": PUBLISHED_SECONDS_PER_SECOND,
+                "ratio_to_paper": sps / PUBLISHED_SECONDS_PER_SECOND,
+            }
+        ]
+    )
     claim = Claim(
-        claim_id=f"{PAPER}.sec8.synthesis_at_most_0_15s_per_s", paper=PAPER, source="Sec. 8",
+        claim_id=f"{PAPER}.sec8.synthesis_at_most_0_15s_per_s",
+        paper=PAPER,
+        source="Sec. 8",
         statement="On average 0.15 s of computation synthesizes 1 s of motion.",
         published=f"{PUBLISHED_SECONDS_PER_SECOND} s per s",
         measured=f"{sps:.4f} s per s ({1 / sps:.0f}x real time) for {length:.1f} s from {n_cycles} example "
-                 f"cycles, best of {repeats}",
+        f"cycles, best of {repeats}",
         verdict=verdict_threshold(sps, PUBLISHED_SECONDS_PER_SECOND, "<="),
-        value=sps, bound=PUBLISHED_SECONDS_PER_SECOND, unit="s per s", direction="<=",
+        value=sps,
+        bound=PUBLISHED_SECONDS_PER_SECOND,
+        unit="s per s",
+        direction="<=",
         note="One core (the rule has one thread); wall-clock time of the synthesis call, data already loaded and the "
-             f"model fitted (the paper times synthesis, not training). Machines differ: 2010 hardware vs ours. {PROTOCOL}",
+        f"model fitted (the paper times synthesis, not training). Machines differ: 2010 hardware vs ours. {PROTOCOL}",
     )
-    figure = {"seconds_per_second": sps, "motion_seconds": length, "n_cycles": n_cycles,
-              "published_seconds_per_second": PUBLISHED_SECONDS_PER_SECOND}
+    figure = {
+        "seconds_per_second": sps,
+        "motion_seconds": length,
+        "n_cycles": n_cycles,
+        "published_seconds_per_second": PUBLISHED_SECONDS_PER_SECOND,
+    }
     return EvaluationResult(table=table, claims=[claim], figure=figure)

@@ -21,7 +21,12 @@ import pandas as pd
 from ...claims import EvaluationResult
 from ..examples import WalkCycles
 from ..kriging import (
-    AUTO_MODELS, UniversalKriging, VariogramFit, empirical_semivariogram, fit_semivariogram, pair_semivariances,
+    AUTO_MODELS,
+    UniversalKriging,
+    VariogramFit,
+    empirical_semivariogram,
+    fit_semivariogram,
+    pair_semivariances,
 )
 from ..representation import ClipCodec
 from ..svi import GROUP_ORDER, StyleVariationModel
@@ -30,13 +35,29 @@ STYLE_ONLY = "style only (MK05)"
 MAX_CLOUD = 20000  # pairs drawn per panel at most (a seeded subset beyond)
 
 
-def _rows(name: str, series: str, fit: VariogramFit, lag: np.ndarray, gamma: np.ndarray, pairs: np.ndarray,
-          candidates: VariogramFit | None) -> list[dict]:
+def _rows(
+    name: str,
+    series: str,
+    fit: VariogramFit,
+    lag: np.ndarray,
+    gamma: np.ndarray,
+    pairs: np.ndarray,
+    candidates: VariogramFit | None,
+) -> list[dict]:
     d = fit.variogram.describe()
     rows = []
     for k in range(len(lag)):  # loop over the bins (at most 100)
-        row = {"group": name, "series": series, "lag": lag[k], "gamma": gamma[k], "pairs": int(pairs[k]),
-               "fitted": float(fit.variogram.curve(lag[k])), **d, "scale": fit.scale, "weights": fit.weights}
+        row = {
+            "group": name,
+            "series": series,
+            "lag": lag[k],
+            "gamma": gamma[k],
+            "pairs": int(pairs[k]),
+            "fitted": float(fit.variogram.curve(lag[k])),
+            **d,
+            "scale": fit.scale,
+            "weights": fit.weights,
+        }
         for m in AUTO_MODELS:  # a candidate that could not be fitted (too few bins) is left blank
             model = candidates.candidates.get(m) if candidates is not None else None
             row[f"fitted_{m}"] = float(model.curve(lag[k])) if model is not None else np.nan
@@ -45,7 +66,10 @@ def _rows(name: str, series: str, fit: VariogramFit, lag: np.ndarray, gamma: np.
 
 
 def variogram_fits(
-    walks: WalkCycles, structure: str = "auto", variogram_model: str = "auto", variogram_scale: str = "sd",
+    walks: WalkCycles,
+    structure: str = "auto",
+    variogram_model: str = "auto",
+    variogram_scale: str = "sd",
     seed: int = 0,
 ) -> EvaluationResult:
     """The semivariograms and fitted variograms of the model fitted to all walking cycles
@@ -76,10 +100,23 @@ def variogram_fits(
         h, g = pair_semivariances(k.x_, k.residuals_, fit.scale)
         sw = np.zeros(len(h), dtype=bool) if same_walk is None else same_walk
         pick = np.sort(rng.choice(len(h), MAX_CLOUD, replace=False)) if len(h) > MAX_CLOUD else np.arange(len(h))
-        clouds[name] = {"lag": h[pick], "gamma": g[pick], "same_walk": sw[pick],
-                        "max_lag": float(k.max_lag * h.max()) if len(h) else 0.0}
+        clouds[name] = {
+            "lag": h[pick],
+            "gamma": g[pick],
+            "same_walk": sw[pick],
+            "max_lag": float(k.max_lag * h.max()) if len(h) else 0.0,
+        }
         fits[name] = {"chosen": fit.variogram, "candidates": every.candidates}
     table = pd.DataFrame(rows)
-    return EvaluationResult(table=table, claims=[], figure={
-        "clouds": clouds, "fits": fits, "scale": variogram_scale, "model": variogram_model, "n_clips": clips.n_clips,
-        "has_walks": same_walk is not None})
+    return EvaluationResult(
+        table=table,
+        claims=[],
+        figure={
+            "clouds": clouds,
+            "fits": fits,
+            "scale": variogram_scale,
+            "model": variogram_model,
+            "n_clips": clips.n_clips,
+            "has_walks": same_walk is not None,
+        },
+    )

@@ -25,6 +25,14 @@ _EXPORTS = {
 __getattr__, __dir__ = lazy_exports(__name__, _EXPORTS)
 
 __all__ = [
-    "curves_table", "evaluate_fig3_10", "evaluate_fig3_11", "evaluate_fig3_9", "evaluate_table3_1", "feature_error",
-    "knn_accuracy", "latent_separation", "observation_error", "reconstruction_curves",
+    "curves_table",
+    "evaluate_fig3_10",
+    "evaluate_fig3_11",
+    "evaluate_fig3_9",
+    "evaluate_table3_1",
+    "feature_error",
+    "knn_accuracy",
+    "latent_separation",
+    "observation_error",
+    "reconstruction_curves",
 ]

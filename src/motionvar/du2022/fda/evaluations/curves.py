@@ -49,8 +49,11 @@ def fitted_sfpca(model: SFPCA, fd: FunctionalMotions, sfpca: Mapping[str, Any], 
 
     model.check_fitted_on(fd, source)
     wanted = sfpca_for(fd, int(model.n_components), **sfpca)
-    differ = {n: (getattr(model, n), getattr(wanted, n)) for n in SFPCA._SAVED_PARAMS
-              if getattr(model, n) != getattr(wanted, n)}
+    differ = {
+        n: (getattr(model, n), getattr(wanted, n))
+        for n in SFPCA._SAVED_PARAMS
+        if getattr(model, n) != getattr(wanted, n)
+    }
     if differ:
         said = ", ".join(f"{n} {a!r} (wanted {b!r})" for n, (a, b) in differ.items())
         raise ValueError(f"{source}: fitted with other options: {said}; rerun the rule that wrote it")
@@ -58,8 +61,15 @@ def fitted_sfpca(model: SFPCA, fd: FunctionalMotions, sfpca: Mapping[str, Any], 
 
 
 def method_curves(
-    method: str, fd: FunctionalMotions, reference: np.ndarray, dims: Sequence[int], latent_dim: int, seed: int,
-    sfpca: Mapping[str, Any], gplvm: Mapping[str, Any], fitted: Mapping[int, SFPCA] | None = None,
+    method: str,
+    fd: FunctionalMotions,
+    reference: np.ndarray,
+    dims: Sequence[int],
+    latent_dim: int,
+    seed: int,
+    sfpca: Mapping[str, Any],
+    gplvm: Mapping[str, Any],
+    fitted: Mapping[int, SFPCA] | None = None,
 ) -> tuple[list[tuple[float, float, float, str]], np.ndarray]:
     """([(feature error, observation error, fit seconds, note) per d in ``dims``], latent
     coordinates at ``latent_dim``) of one method. ``reference``: the clips' joint positions
@@ -103,10 +113,14 @@ def method_curves(
             model = sfpca_for(fd, d, **sfpca).fit(fd)
             note = model.fit_summary()
         else:
-            model = FunctionalGPLVM(d, n_inducing=gplvm["n_inducing"], max_iter=gplvm["max_iter"],
-                                    noise_init=gplvm["noise_init"],
-                                    discriminative_sigma2=gplvm["discriminative_sigma2"],
-                                    random_state=seed).fit(fd, labels_dp)
+            model = FunctionalGPLVM(
+                d,
+                n_inducing=gplvm["n_inducing"],
+                max_iter=gplvm["max_iter"],
+                noise_init=gplvm["noise_init"],
+                discriminative_sigma2=gplvm["discriminative_sigma2"],
+                random_state=seed,
+            ).fit(fd, labels_dp)
             note = f"{model.gplvm_.n_iter_} it, {model.gplvm_.message_[:40]}"
         fit_s = time.perf_counter() - start
         if method == "sfpca" and d in fitted:  # the time of the fit itself, made elsewhere
@@ -120,8 +134,15 @@ def method_curves(
 
 
 def reconstruction_curves(
-    fd: FunctionalMotions, labels: Sequence[str], primitive: str, methods: Sequence[str], dims: Sequence[int],
-    latent_dim: int, seed: int, sfpca: Mapping[str, Any], gplvm: Mapping[str, Any],
+    fd: FunctionalMotions,
+    labels: Sequence[str],
+    primitive: str,
+    methods: Sequence[str],
+    dims: Sequence[int],
+    latent_dim: int,
+    seed: int,
+    sfpca: Mapping[str, Any],
+    gplvm: Mapping[str, Any],
     sfpca_models: Sequence[SFPCA] = (),
 ) -> dict[str, np.ndarray]:
     """The Fig. 3.10-3.11 measurements of one primitive (module docstring) for ``methods``.
@@ -137,17 +158,27 @@ def reconstruction_curves(
     latent_dim = min(latent_dim, n_max)
     reference = fd.positions()
     out = {
-        "primitive": np.array(primitive), "dims": np.array(dims), "latent_dim": np.array(latent_dim),
+        "primitive": np.array(primitive),
+        "dims": np.array(dims),
+        "latent_dim": np.array(latent_dim),
         "labels": np.array([str(v) for v in labels], dtype=str),
-        "n_basis": np.array(fd.basis.n_basis), "n_clips": np.array(fd.n_clips),
-        "canonical_frames": np.array(fd.n_frames), "methods": np.array(methods, dtype=str),
+        "n_basis": np.array(fd.basis.n_basis),
+        "n_clips": np.array(fd.n_clips),
+        "canonical_frames": np.array(fd.n_frames),
+        "methods": np.array(methods, dtype=str),
     }
     for method in methods:
         rows, latent = method_curves(method, fd, reference, dims, latent_dim, seed, sfpca, gplvm, fitted)
         feat, obs, seconds, notes = zip(*rows)
-        out.update({f"{method}/feature_error": np.array(feat), f"{method}/observation_error": np.array(obs),
-                    f"{method}/fit_seconds": np.array(seconds), f"{method}/info": np.array(notes, dtype=str),
-                    f"{method}/latent": latent})
+        out.update(
+            {
+                f"{method}/feature_error": np.array(feat),
+                f"{method}/observation_error": np.array(obs),
+                f"{method}/fit_seconds": np.array(seconds),
+                f"{method}/info": np.array(notes, dtype=str),
+                f"{method}/latent": latent,
+            }
+        )
     return out
 
 
@@ -158,11 +189,17 @@ def curves_table(curves: Sequence[Mapping[str, np.ndarray]]) -> pd.DataFrame:
     for z in curves:
         for method in z["methods"]:
             for i, d in enumerate(z["dims"]):
-                rows.append({
-                    "primitive": str(z["primitive"]), "method": str(method), "dims": int(d),
-                    "feature_error": float(z[f"{method}/feature_error"][i]),
-                    "observation_error_cm": float(z[f"{method}/observation_error"][i]),
-                    "fit_seconds": float(z[f"{method}/fit_seconds"][i]), "n_clips": int(z["n_clips"]),
-                    "n_basis": int(z["n_basis"]), "info": str(z[f"{method}/info"][i]),
-                })
+                rows.append(
+                    {
+                        "primitive": str(z["primitive"]),
+                        "method": str(method),
+                        "dims": int(d),
+                        "feature_error": float(z[f"{method}/feature_error"][i]),
+                        "observation_error_cm": float(z[f"{method}/observation_error"][i]),
+                        "fit_seconds": float(z[f"{method}/fit_seconds"][i]),
+                        "n_clips": int(z["n_clips"]),
+                        "n_basis": int(z["n_basis"]),
+                        "info": str(z[f"{method}/info"][i]),
+                    }
+                )
     return pd.DataFrame(rows)

@@ -16,8 +16,13 @@ from .measures import latent_separation
 
 
 def evaluate_fig3_11(
-    curves: Sequence[Mapping[str, np.ndarray]], methods: Sequence[str], primitives: Sequence[str],
-    pick_primitive: str, knn: int, tsne_perplexity: float, seed: int,
+    curves: Sequence[Mapping[str, np.ndarray]],
+    methods: Sequence[str],
+    primitives: Sequence[str],
+    pick_primitive: str,
+    knn: int,
+    tsne_perplexity: float,
+    seed: int,
 ) -> EvaluationResult:
     """Fig. 3.11 from the latent coordinates in the measurements of
     :func:`.curves.reconstruction_curves` (one per primitive), for ``primitives`` x
@@ -39,12 +44,29 @@ def evaluate_fig3_11(
         for method in methods:
             latent, labels, dim = data[(primitive, method)]
             sep = latent_separation(latent, labels, knn)
-            rows.append({"primitive": primitive, "method": method, "latent_dim": dim, "n_clips": len(labels),
-                         "silhouette": sep["silhouette"], f"knn{knn}_accuracy": sep["knn_accuracy"]})
+            rows.append(
+                {
+                    "primitive": primitive,
+                    "method": method,
+                    "latent_dim": dim,
+                    "n_clips": len(labels),
+                    "silhouette": sep["silhouette"],
+                    f"knn{knn}_accuracy": sep["knn_accuracy"],
+                }
+            )
             perplexity = min(tsne_perplexity, (len(labels) - 1) / 3.0)
             xy = TSNE(n_components=2, perplexity=perplexity, init="pca", random_state=seed).fit_transform(latent)
-            row.append({"primitive": primitive, "method": method, "dim": dim, "labels": labels, "xy": xy,
-                        "silhouette": sep["silhouette"], "knn_accuracy": sep["knn_accuracy"]})
+            row.append(
+                {
+                    "primitive": primitive,
+                    "method": method,
+                    "dim": dim,
+                    "labels": labels,
+                    "xy": xy,
+                    "silhouette": sep["silhouette"],
+                    "knn_accuracy": sep["knn_accuracy"],
+                }
+            )
         panels.append(row)
     table = pd.DataFrame(rows)
 
@@ -55,19 +77,26 @@ def evaluate_fig3_11(
         best_sil = sub["silhouette"].idxmax()
         best_knn = sub[col].max()
         n_best = int(best_sil == "sfpca") + int(sub.loc["sfpca", col] >= best_knn)
-        claims.append(Claim(
-            claim_id="du2022.fig3_11.sfpca_best_separation_pick",
-            paper="du2022", source="Fig. 3.11",
-            statement="For two-hand pick reach, SFPCA's latent space separates the three kinds of picking "
-            "(low, forward, high) best of the four methods.",
-            published="SFPCA clearly separates three types of picking; FPCA mislocates some low picks, "
-            "GPLVM and normalized FPCA keep the main structure with a few mislocated (visual, t-SNE)",
-            measured=f"{pick_primitive} ({sub['latent_dim'].iloc[0]}-D): silhouette "
-            + ", ".join(f"{m} {sub.loc[m, 'silhouette']:.3f}" for m in methods)
-            + f"; {knn}-NN accuracy " + ", ".join(f"{m} {sub.loc[m, col]:.3f}" for m in methods),
-            verdict=verdict_from_fraction(n_best, 2),
-            value=n_best / 2, bound=1.0, unit="share", direction=">=",
-            note="The thesis judges t-SNE plots by eye; we measure in the latent space itself. Reproduced: SFPCA "
-            "best by both silhouette and k-NN accuracy (ties count); partial: by one of them.",
-        ))
+        claims.append(
+            Claim(
+                claim_id="du2022.fig3_11.sfpca_best_separation_pick",
+                paper="du2022",
+                source="Fig. 3.11",
+                statement="For two-hand pick reach, SFPCA's latent space separates the three kinds of picking "
+                "(low, forward, high) best of the four methods.",
+                published="SFPCA clearly separates three types of picking; FPCA mislocates some low picks, "
+                "GPLVM and normalized FPCA keep the main structure with a few mislocated (visual, t-SNE)",
+                measured=f"{pick_primitive} ({sub['latent_dim'].iloc[0]}-D): silhouette "
+                + ", ".join(f"{m} {sub.loc[m, 'silhouette']:.3f}" for m in methods)
+                + f"; {knn}-NN accuracy "
+                + ", ".join(f"{m} {sub.loc[m, col]:.3f}" for m in methods),
+                verdict=verdict_from_fraction(n_best, 2),
+                value=n_best / 2,
+                bound=1.0,
+                unit="share",
+                direction=">=",
+                note="The thesis judges t-SNE plots by eye; we measure in the latent space itself. Reproduced: SFPCA "
+                "best by both silhouette and k-NN accuracy (ties count); partial: by one of them.",
+            )
+        )
     return EvaluationResult(table=table, claims=claims, figure={"panels": panels, "knn": knn})

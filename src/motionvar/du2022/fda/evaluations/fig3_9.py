@@ -49,7 +49,10 @@ def evaluate_fig3_9(rmse: pd.DataFrame, min_relative_drop: float) -> EvaluationR
         measured=f"{n_ok}/{len(decreasing)} behaviours strictly decreasing; {measured}; chosen K: "
         + ", ".join(f"{c['primitive']} {c['n_basis']}" for c in chosen),
         verdict=verdict_from_fraction(n_ok, len(decreasing)),
-        value=n_ok / len(decreasing) if decreasing else float("nan"), bound=1.0, unit="share", direction=">=",
+        value=n_ok / len(decreasing) if decreasing else float("nan"),
+        bound=1.0,
+        unit="share",
+        direction=">=",
         note="RMSE of FK joint positions between the B-spline functions evaluated at the canonical "
         "frames and the canonical (time-warped) frames themselves.",
     )

@@ -58,7 +58,10 @@ def reference_dims(n_clips: int, reference_components: int, max_components: int)
 
 
 def fit_reference_sfpca(
-    fd: FunctionalMotions, sfpca: Mapping[str, Any], reference_components: int, max_components: int,
+    fd: FunctionalMotions,
+    sfpca: Mapping[str, Any],
+    reference_components: int,
+    max_components: int,
 ) -> SFPCA:
     """The SFPCA of Table 3.1 for one primitive: fitted at the reference dimension
     (:func:`reference_dims`) with options ``sfpca`` of :func:`sfpca_for`. For the Fig. 3.10
@@ -69,8 +72,13 @@ def fit_reference_sfpca(
 
 
 def evaluate_table3_1(
-    dataset, chosen: pd.DataFrame, sfpca: Mapping[str, Any], reference_components: int, max_components: int,
-    observation_error_cm: float, sfpca_models: Mapping[str, SFPCA] | None = None,
+    dataset,
+    chosen: pd.DataFrame,
+    sfpca: Mapping[str, Any],
+    reference_components: int,
+    max_components: int,
+    observation_error_cm: float,
+    sfpca_models: Mapping[str, SFPCA] | None = None,
 ) -> EvaluationResult:
     """Table 3.1 for the canonical primitives of ``dataset`` (``motionvar.io.MotionDataset``)
     with the basis sizes of ``chosen`` (the table of :func:`motionvar.du2022.fda.choose_basis_sizes`).
@@ -94,13 +102,25 @@ def evaluate_table3_1(
             weighted = _given_model(sfpca_models[c["primitive"]], c["primitive"], fd, d_ref)
         else:
             weighted = fit_reference_sfpca(fd, sfpca, reference_components, max_components)
-        log.info("%s: SFPCA(%d) %.1f s, %s", c["primitive"], d_ref, getattr(weighted, "fit_time_s_", np.nan),
-                 weighted.fit_summary())
+        log.info(
+            "%s: SFPCA(%d) %.1f s, %s",
+            c["primitive"],
+            d_ref,
+            getattr(weighted, "fit_time_s_", np.nan),
+            weighted.fit_summary(),
+        )
         reference = fd.positions()
         models = {"sfpca": WeightedFPCA(d_max, weighted.function_weights_).fit(fd), "fpca": FPCA(d_max).fit(fd)}
-        row = {"primitive": c["primitive"], "behaviour": c["behaviour"], "clips": fd.n_clips,
-               "basis_functions": int(c["n_basis"]), "canonical_frames": fd.n_frames, "sfpca_reference_dims": d_ref}
+        row = {
+            "primitive": c["primitive"],
+            "behaviour": c["behaviour"],
+            "clips": fd.n_clips,
+            "basis_functions": int(c["n_basis"]),
+            "canonical_frames": fd.n_frames,
+            "sfpca_reference_dims": d_ref,
+        }
         for name, model in models.items():
+
             def error(d, model=model):
                 return observation_error(fd, model.reconstruct(fd, d), reference=reference)
 
@@ -110,8 +130,13 @@ def evaluate_table3_1(
             grid = sorted(set(np.unique(np.geomspace(1, d_max, 8).round().astype(int))) | set(seen))
             curves[(c["primitive"], name)] = [(g, seen[g] if g in seen else error(g)) for g in grid]
         pub = PUBLISHED.get(c["primitive"])
-        row.update({"published_clips": pub[0] if pub else np.nan, "published_basis": pub[1] if pub else np.nan,
-                    "published_dims": pub[2] if pub else np.nan})
+        row.update(
+            {
+                "published_clips": pub[0] if pub else np.nan,
+                "published_basis": pub[1] if pub else np.nan,
+                "published_dims": pub[2] if pub else np.nan,
+            }
+        )
         rows.append(row)
     table = pd.DataFrame(rows)
     figure = {"curves": curves, "primitives": list(table["primitive"]), "threshold": observation_error_cm}
@@ -122,6 +147,8 @@ def _given_model(model: SFPCA, primitive: str, fd: FunctionalMotions, d_ref: int
     """A given SFPCA of ``primitive``, checked against its clips and the reference dimension."""
     model.check_fitted_on(fd, f"SFPCA model of {primitive}")
     if int(model.n_components) != d_ref:
-        raise ValueError(f"SFPCA model of {primitive}: fitted at d = {model.n_components}, Table 3.1's reference "
-                         f"dimension is {d_ref} (config fda.table.reference_components): rerun rule du2022_fda_sfpca")
+        raise ValueError(
+            f"SFPCA model of {primitive}: fitted at d = {model.n_components}, Table 3.1's reference "
+            f"dimension is {d_ref} (config fda.table.reference_components): rerun rule du2022_fda_sfpca"
+        )
     return model

@@ -15,14 +15,31 @@ from ....core.lazy import lazy_exports
 _EXPORTS = {
     ".fig4_9": ["binned_kde", "coverage", "evaluate_fig4_9"],
     ".fig4_10": ["evaluate_fig4_10"],
-    ".fig4_12": ["CONSTRAINT_KINDS", "METHODS", "SearchSettings", "evaluate_fig4_12", "search_comparison",
-                 "search_primitive", "summarize_search"],
+    ".fig4_12": [
+        "CONSTRAINT_KINDS",
+        "METHODS",
+        "SearchSettings",
+        "evaluate_fig4_12",
+        "search_comparison",
+        "search_primitive",
+        "summarize_search",
+    ],
     ".sec4_6_1": ["evaluate_sec4_6_1", "motion_bytes"],
 }
 __getattr__, __dir__ = lazy_exports(__name__, _EXPORTS)
 
 __all__ = [
-    "CONSTRAINT_KINDS", "METHODS", "SearchSettings", "binned_kde", "coverage", "evaluate_fig4_10", "evaluate_fig4_12",
-    "evaluate_fig4_9", "evaluate_sec4_6_1", "motion_bytes", "search_comparison", "search_primitive",
+    "CONSTRAINT_KINDS",
+    "METHODS",
+    "SearchSettings",
+    "binned_kde",
+    "coverage",
+    "evaluate_fig4_10",
+    "evaluate_fig4_12",
+    "evaluate_fig4_9",
+    "evaluate_sec4_6_1",
+    "motion_bytes",
+    "search_comparison",
+    "search_primitive",
     "summarize_search",
 ]

@@ -26,23 +26,35 @@ from .common import semantic_index
 
 PAPER = "du2022"
 REACH_JOINT = "right_hand"
-VARIANT_LABELS = {"greedy": "greedy (T = 1, no line 9; the earlier walk)",
-                  "line9": "line 9 alone (T = 1, all steps optimised together)"}
+VARIANT_LABELS = {
+    "greedy": "greedy (T = 1, no line 9; the earlier walk)",
+    "line9": "line 9 alone (T = 1, all steps optimised together)",
+}
 PATH_CLOSE_CM = 10.0  # "follows the path": mean remaining hips position error per step
 REACH_CLOSE_CM = 2.0  # "reaches the target": remaining hand distance
 
 
 def _mode(look_ahead: int, joint_steps: int | str) -> str:
-    line9 = ("all steps optimised together (Algorithm 1, line 9)" if joint_steps == "all" else
-             f"the last {joint_steps} steps optimised together (Algorithm 1, line 9)" if joint_steps else
-             "no joint optimisation (Algorithm 1, line 9 left out)")
+    line9 = (
+        "all steps optimised together (Algorithm 1, line 9)"
+        if joint_steps == "all"
+        else f"the last {joint_steps} steps optimised together (Algorithm 1, line 9)"
+        if joint_steps
+        else "no joint optimisation (Algorithm 1, line 9 left out)"
+    )
     ahead = f"look-ahead T = {look_ahead} (receding horizon)" if look_ahead > 1 else "look-ahead T = 1 (greedy)"
     return f"{ahead}, {line9}"
 
 
-def fig4_10_claims(table: pd.DataFrame, n_steps: int, end_gap_cm: float, reach_offset_cm: float,
-                   mode: str = "", max_deviation_cm: float = float("nan"),
-                   variants: Mapping[str, Mapping] | None = None) -> list[Claim]:
+def fig4_10_claims(
+    table: pd.DataFrame,
+    n_steps: int,
+    end_gap_cm: float,
+    reach_offset_cm: float,
+    mode: str = "",
+    max_deviation_cm: float = float("nan"),
+    variants: Mapping[str, Mapping] | None = None,
+) -> list[Claim]:
     """Path following (mean remaining hips error per step <= :data:`PATH_CLOSE_CM`) and
     reaching (every remaining hand error <= :data:`REACH_CLOSE_CM`) from the table of
     :func:`evaluate_fig4_10`; ``mode`` names the look-ahead and line-9 settings,
@@ -59,33 +71,50 @@ def fig4_10_claims(table: pd.DataFrame, n_steps: int, end_gap_cm: float, reach_o
     compared = "".join(
         f" {VARIANT_LABELS.get(k, k)}: {v['n_steps']} steps, {v['mean_step_cm']:.1f} cm per step, at most "
         f"{v['max_deviation_cm']:.1f} cm from the path, end {v['end_gap_cm']:.0f} cm from it."
-        for k, v in (variants or {}).items())
+        for k, v in (variants or {}).items()
+    )
     return [
-        Claim(f"{PAPER}.fig4_10.follows_path", PAPER, "Fig. 4.10 (left)",
-              "A graph walk of walking primitives follows a floor path.",
-              "path following (qualitative figure)",
-              f"{n_steps} steps; hips position error per step, final {mean_step:.1f} cm (tree: "
-              f"{path_rows['position_error_tree_cm'].mean():.1f} cm{greedy}), heading "
-              f"{path_rows['heading_error_deg'].mean():.1f} deg; end of walk {end_gap_cm:.0f} cm from the path's "
-              f"end{dev}",
-              verdict_threshold(mean_step, PATH_CLOSE_CM, "<=", tolerance=1.0),
-              value=mean_step, bound=PATH_CLOSE_CM, unit="cm", direction="<=",
-              note=f"reproduced when the mean remaining step position error is <= {PATH_CLOSE_CM:.0f} cm (partial up "
-                   f"to twice that). Synthesis: {mode or 'see the caption'}; steps are not blended. Changed since the "
-                   "previous run (issue 13): Algorithm 1 line 9 and a look-ahead of T steps implemented (the walk "
-                   "looked one step ahead and drifted 24-45 cm after the first 45-degree corner at full size); the "
-                   "next step is placed at the previous step's last canonical frame."
-                   + (f" Compared walks (same trees):{compared}" if compared else "")),
-        Claim(f"{PAPER}.fig4_10.reaches_targets", PAPER, "Fig. 4.10 (right)",
-              "Targets within the variation range are reached by the picking primitive.",
-              "reaching targets (qualitative figure)",
-              f"{ok} of {len(reach_rows)} targets within {REACH_CLOSE_CM:.0f} cm; errors after LM "
-              + ", ".join(f"{e:.2f}" for e in reach_rows["position_error_cm"]) + " cm (tree: "
-              + ", ".join(f"{e:.1f}" for e in reach_rows["position_error_tree_cm"]) + " cm)",
-              verdict_from_fraction(ok, len(reach_rows)),
-              value=ok / len(reach_rows) if len(reach_rows) else float("nan"), bound=1.0, unit="share", direction=">=",
-              note=f"targets: training end positions of the {REACH_JOINT} moved {reach_offset_cm:g} cm in a random "
-                   f"direction; reproduced when every remaining error is <= {REACH_CLOSE_CM:.0f} cm."),
+        Claim(
+            f"{PAPER}.fig4_10.follows_path",
+            PAPER,
+            "Fig. 4.10 (left)",
+            "A graph walk of walking primitives follows a floor path.",
+            "path following (qualitative figure)",
+            f"{n_steps} steps; hips position error per step, final {mean_step:.1f} cm (tree: "
+            f"{path_rows['position_error_tree_cm'].mean():.1f} cm{greedy}), heading "
+            f"{path_rows['heading_error_deg'].mean():.1f} deg; end of walk {end_gap_cm:.0f} cm from the path's "
+            f"end{dev}",
+            verdict_threshold(mean_step, PATH_CLOSE_CM, "<=", tolerance=1.0),
+            value=mean_step,
+            bound=PATH_CLOSE_CM,
+            unit="cm",
+            direction="<=",
+            note=f"reproduced when the mean remaining step position error is <= {PATH_CLOSE_CM:.0f} cm (partial up "
+            f"to twice that). Synthesis: {mode or 'see the caption'}; steps are not blended. Changed since the "
+            "previous run (issue 13): Algorithm 1 line 9 and a look-ahead of T steps implemented (the walk "
+            "looked one step ahead and drifted 24-45 cm after the first 45-degree corner at full size); the "
+            "next step is placed at the previous step's last canonical frame."
+            + (f" Compared walks (same trees):{compared}" if compared else ""),
+        ),
+        Claim(
+            f"{PAPER}.fig4_10.reaches_targets",
+            PAPER,
+            "Fig. 4.10 (right)",
+            "Targets within the variation range are reached by the picking primitive.",
+            "reaching targets (qualitative figure)",
+            f"{ok} of {len(reach_rows)} targets within {REACH_CLOSE_CM:.0f} cm; errors after LM "
+            + ", ".join(f"{e:.2f}" for e in reach_rows["position_error_cm"])
+            + " cm (tree: "
+            + ", ".join(f"{e:.1f}" for e in reach_rows["position_error_tree_cm"])
+            + " cm)",
+            verdict_from_fraction(ok, len(reach_rows)),
+            value=ok / len(reach_rows) if len(reach_rows) else float("nan"),
+            bound=1.0,
+            unit="share",
+            direction=">=",
+            note=f"targets: training end positions of the {REACH_JOINT} moved {reach_offset_cm:g} cm in a random "
+            f"direction; reproduced when every remaining error is <= {REACH_CLOSE_CM:.0f} cm.",
+        ),
     ]
 
 
@@ -96,28 +125,58 @@ def _walk_rows(steps, floor_path: Path2D, hips: int, task: str) -> list[dict]:
     rows = []
     for i, st in enumerate(steps):
         dist = floor_path.distance(st.motion.positions()[:, hips][:, [0, 2]])
-        rows.append(dict(task=task, item=i, primitive=st.primitive, position_error_tree_cm=st.fit.errors_before[0],
-                         position_error_step_cm=st.step_errors[0], position_error_cm=st.fit.errors_after[0],
-                         heading_error_tree_deg=st.fit.errors_before[1], heading_error_step_deg=st.step_errors[1],
-                         heading_error_deg=st.fit.errors_after[1], path_distance_cm=dist[-1],
-                         max_deviation_cm=dist.max(), tree_evaluations=st.tree_evals, log_prob=st.fit.log_prob_after))
+        rows.append(
+            dict(
+                task=task,
+                item=i,
+                primitive=st.primitive,
+                position_error_tree_cm=st.fit.errors_before[0],
+                position_error_step_cm=st.step_errors[0],
+                position_error_cm=st.fit.errors_after[0],
+                heading_error_tree_deg=st.fit.errors_before[1],
+                heading_error_step_deg=st.step_errors[1],
+                heading_error_deg=st.fit.errors_after[1],
+                path_distance_cm=dist[-1],
+                max_deviation_cm=dist.max(),
+                tree_evaluations=st.tree_evals,
+                log_prob=st.fit.log_prob_after,
+            )
+        )
     return rows
 
 
 def _walk_summary(rows: list[dict], walk, floor_path: Path2D, hips: int) -> dict:
     hips_xz = walk.positions()[:, hips][:, [0, 2]]
-    return dict(n_steps=len(rows), mean_step_cm=float(np.mean([r["position_error_cm"] for r in rows])),
-                max_deviation_cm=float(floor_path.distance(hips_xz).max()),
-                end_gap_cm=float(np.linalg.norm(hips_xz[-1] - floor_path.points[-1])))
+    return dict(
+        n_steps=len(rows),
+        mean_step_cm=float(np.mean([r["position_error_cm"] for r in rows])),
+        max_deviation_cm=float(floor_path.distance(hips_xz).max()),
+        end_gap_cm=float(np.linalg.norm(hips_xz[-1] - floor_path.points[-1])),
+    )
 
 
-def evaluate_fig4_10(models: Mapping[str, MotionPrimitive], dataset: MotionDataset, joint_map: JointMap,
-                     path: Sequence[Sequence[float]], reach_primitive: str = "pick_reach", reach_targets: int = 5,
-                     reach_offset_cm: float = 5.0, tree_samples: int = 10000, beam: int = 2,
-                     likelihood_weight: float = 1.0, method: str = "lm", max_nfev: int = 100,
-                     max_steps: int = 30, look_ahead: int = 2, joint_steps: int | str = "all",
-                     joint_method: str = "lm", joint_max_nfev: int = 100, compare_variants: bool = True, seed: int = 0,
-                     source: str = "dataset") -> EvaluationResult:
+def evaluate_fig4_10(
+    models: Mapping[str, MotionPrimitive],
+    dataset: MotionDataset,
+    joint_map: JointMap,
+    path: Sequence[Sequence[float]],
+    reach_primitive: str = "pick_reach",
+    reach_targets: int = 5,
+    reach_offset_cm: float = 5.0,
+    tree_samples: int = 10000,
+    beam: int = 2,
+    likelihood_weight: float = 1.0,
+    method: str = "lm",
+    max_nfev: int = 100,
+    max_steps: int = 30,
+    look_ahead: int = 2,
+    joint_steps: int | str = "all",
+    joint_method: str = "lm",
+    joint_max_nfev: int = 100,
+    compare_variants: bool = True,
+    seed: int = 0,
+    source: str = "dataset",
+) -> EvaluationResult:
     """Fig. 4.10 with the fitted ``models`` (the walking primitives ``walk_*`` and
     ``reach_primitive``; one k-means tree of ``tree_samples`` GMM samples each):
 
@@ -144,9 +203,17 @@ def evaluate_fig4_10(models: Mapping[str, MotionPrimitive], dataset: MotionDatas
     walk_names = [n for n in models if n.startswith("walk_")]
     graph = MorphableGraph.from_metadata(dataset.metadata, {n: models[n] for n in walk_names})
     floor_path = Path2D(np.asarray(path, dtype=float))
-    settings = WalkSettings(max_steps=max_steps, beam=beam, likelihood_weight=likelihood_weight, method=method,
-                            max_nfev=max_nfev, look_ahead=look_ahead, joint_steps=joint_steps,
-                            joint_method=joint_method, joint_max_nfev=joint_max_nfev)
+    settings = WalkSettings(
+        max_steps=max_steps,
+        beam=beam,
+        likelihood_weight=likelihood_weight,
+        method=method,
+        max_nfev=max_nfev,
+        look_ahead=look_ahead,
+        joint_steps=joint_steps,
+        joint_method=joint_method,
+        joint_max_nfev=joint_max_nfev,
+    )
     steps = follow_path(graph, trees, floor_path, joint_map, settings)
     hips = joint_map.index(steps[0].motion.skeleton, "hips")
     rows = _walk_rows(steps, floor_path, hips, "path")
@@ -171,17 +238,36 @@ def evaluate_fig4_10(models: Mapping[str, MotionPrimitive], dataset: MotionDatas
         direction = rng.normal(size=3)
         target = clips[c].positions()[-1, hand] + reach_offset_cm * direction / np.linalg.norm(direction)
         cons = [Constraint("position", reach.n_frames - 1, (hand,), target[None])]
-        fit, tree_err, evals = synthesize_step(reach, trees[reach_primitive], cons, beam, likelihood_weight, method,
-                                               max_nfev)
+        fit, tree_err, evals = synthesize_step(
+            reach, trees[reach_primitive], cons, beam, likelihood_weight, method, max_nfev
+        )
         reaches.append(reach.to_motions(fit.latent[None])[0])
         targets.append(target)
-        rows.append(dict(task="reach", item=k, primitive=reach_primitive, position_error_tree_cm=tree_err,
-                         position_error_cm=fit.errors_after[0], tree_evaluations=evals, log_prob=fit.log_prob_after))
+        rows.append(
+            dict(
+                task="reach",
+                item=k,
+                primitive=reach_primitive,
+                position_error_tree_cm=tree_err,
+                position_error_cm=fit.errors_after[0],
+                tree_evaluations=evals,
+                log_prob=fit.log_prob_after,
+            )
+        )
     table = pd.DataFrame(rows)
     feet = {f: joint_map.index(walk.skeleton, f) for f in ("left_ankle", "right_ankle")}
-    figure = dict(walk=walk, steps=steps, path=floor_path.points, hips=hips, feet=feet, reaches=reaches,
-                  targets=targets, reach_primitive=reach_primitive)
+    figure = dict(
+        walk=walk,
+        steps=steps,
+        path=floor_path.points,
+        hips=hips,
+        feet=feet,
+        reaches=reaches,
+        targets=targets,
+        reach_primitive=reach_primitive,
+    )
     mode = _mode(int(look_ahead), joint_steps)
-    claims = fig4_10_claims(table, len(steps), summary["end_gap_cm"], reach_offset_cm, mode,
-                            summary["max_deviation_cm"], variants)
+    claims = fig4_10_claims(
+        table, len(steps), summary["end_gap_cm"], reach_offset_cm, mode, summary["max_deviation_cm"], variants
+    )
     return EvaluationResult(table=table, claims=claims, figure=dict(figure, mode=mode, variants=variants))

@@ -24,8 +24,9 @@ CASES = (("walk_leftStance", "left_ankle"), ("pick_reach", "left_hand"), ("pick_
 SAMPLE_CHUNK = 10000  # latent vectors per key-frame pose evaluation (memory)
 
 
-def binned_kde(points: np.ndarray, bounds: np.ndarray, n_grid: int = 128,
-               bandwidth: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+def binned_kde(
+    points: np.ndarray, bounds: np.ndarray, n_grid: int = 128, bandwidth: np.ndarray | None = None
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """2-D kernel density on a grid (as R's MASS::kde2d, used for Fig. 4.9), by binning
     the points and smoothing with a Gaussian of Scott's bandwidth (per axis, in grid
     cells). Returns (density (n_grid, n_grid) indexed [x, y], x centres, y centres)."""
@@ -53,8 +54,9 @@ def _lookup(dens: np.ndarray, xc: np.ndarray, yc: np.ndarray, pts: np.ndarray) -
     return out
 
 
-def coverage(samples_2d: np.ndarray, training_2d: np.ndarray, level: float = 0.95, n_grid: int = 128,
-             margin: float = 0.25) -> tuple[float, float, dict]:
+def coverage(
+    samples_2d: np.ndarray, training_2d: np.ndarray, level: float = 0.95, n_grid: int = 128, margin: float = 0.25
+) -> tuple[float, float, dict]:
     """Share of training points inside the samples' ``level`` highest-density region
     (the region holding ``level`` of the samples, by the binned KDE). Returns
     (coverage, density threshold, plotting data: density, centres, bounds)."""
@@ -73,22 +75,35 @@ def fig4_9_claim(table: pd.DataFrame, level: float, threshold: float = 0.9) -> C
     """Coverage of the training end-effector points by the samples' ``level`` density region."""
     worst = float(table["coverage"].min())
     return Claim(
-        f"{PAPER}.fig4_9.samples_cover_training", PAPER, "Fig. 4.9",
+        f"{PAPER}.fig4_9.samples_cover_training",
+        PAPER,
+        "Fig. 4.9",
         "Random motions sampled from the primitives cover the variation of the training data.",
         "the samples' density covers the training data (qualitative, Fig. 4.9)",
         "coverage (share of training points inside the samples' "
-        f"{level:.0%} density region): " + "; ".join(
-            f"{r.primitive} {r.joint} {r.view}: {r.coverage:.2f}" for r in table.itertuples()),
+        f"{level:.0%} density region): "
+        + "; ".join(f"{r.primitive} {r.joint} {r.view}: {r.coverage:.2f}" for r in table.itertuples()),
         verdict_threshold(worst, threshold, ">=", tolerance=0.1),
-        value=worst, bound=threshold, unit="share", direction=">=",
+        value=worst,
+        bound=threshold,
+        unit="share",
+        direction=">=",
         note=f"reproduced when every projection covers >= {threshold:.0%} of the training points (a perfect model "
-             f"covers ~{level:.0%}); partial down to {threshold * 0.9:.0%}.",
+        f"covers ~{level:.0%}); partial down to {threshold * 0.9:.0%}.",
     )
 
 
-def evaluate_fig4_9(models: Mapping[str, MotionPrimitive], dataset: MotionDataset, joint_map: JointMap,
-                    n_samples: int, level: float = 0.95, grid: int = 128, coverage_threshold: float = 0.9,
-                    seed: int = 0, source: str = "dataset") -> EvaluationResult:
+def evaluate_fig4_9(
+    models: Mapping[str, MotionPrimitive],
+    dataset: MotionDataset,
+    joint_map: JointMap,
+    n_samples: int,
+    level: float = 0.95,
+    grid: int = 128,
+    coverage_threshold: float = 0.9,
+    seed: int = 0,
+    source: str = "dataset",
+) -> EvaluationResult:
     """Fig. 4.9: for each case of :data:`CASES` (primitive, semantic joint), the joint's
     last-frame position in ``n_samples`` motions sampled from ``models[primitive]``
     against the training clips of that primitive in ``dataset`` (``source`` names its
@@ -100,16 +115,34 @@ def evaluate_fig4_9(models: Mapping[str, MotionPrimitive], dataset: MotionDatase
         model = models[prim]
         j = semantic_index(joint_map, model.skeleton, sem, "graph diversity joints")
         S = model.sample(n_samples, np.random.default_rng([seed, 49]))
-        pos = np.concatenate([model.key_frame_pose(S[i:i + SAMPLE_CHUNK], [model.n_frames - 1], [j])[0][:, 0, 0]
-                              for i in range(0, len(S), SAMPLE_CHUNK)])
+        pos = np.concatenate(
+            [
+                model.key_frame_pose(S[i : i + SAMPLE_CHUNK], [model.n_frames - 1], [j])[0][:, 0, 0]
+                for i in range(0, len(S), SAMPLE_CHUNK)
+            ]
+        )
         motions, _ = primitive_clips(dataset, prim, source)
         train = np.stack([m.positions()[-1, j] for m in motions])
         for view, a, b in VIEWS:
             cov, thr, data = coverage(pos[:, [a, b]], train[:, [a, b]], level, grid)
-            rows.append(dict(primitive=prim, joint=sem, view=view, coverage=cov, n_training=len(train),
-                             n_samples=len(pos)))
-            panels.append(dict(primitive=prim, joint=sem, view=view, axes=(a, b), training=train, threshold=thr,
-                               coverage=cov, **data))
+            rows.append(
+                dict(primitive=prim, joint=sem, view=view, coverage=cov, n_training=len(train), n_samples=len(pos))
+            )
+            panels.append(
+                dict(
+                    primitive=prim,
+                    joint=sem,
+                    view=view,
+                    axes=(a, b),
+                    training=train,
+                    threshold=thr,
+                    coverage=cov,
+                    **data,
+                )
+            )
     table = pd.DataFrame(rows)
-    return EvaluationResult(table=table, claims=[fig4_9_claim(table, level, coverage_threshold)],
-                            figure=dict(panels=panels, n_samples=n_samples, level=level))
+    return EvaluationResult(
+        table=table,
+        claims=[fig4_9_claim(table, level, coverage_threshold)],
+        figure=dict(panels=panels, n_samples=n_samples, level=level),
+    )

@@ -23,19 +23,28 @@ def compactness_claim(model_bytes: int, data_bytes: int, published_ratio: float 
     """Sec. 4.6.1: the models are ~100 times smaller than the data (41 MB vs 4.2 GB)."""
     ratio = data_bytes / max(model_bytes, 1)
     return Claim(
-        f"{PAPER}.sec4_6_1.model_much_smaller_than_data", PAPER, "Sec. 4.6.1, 4.8",
+        f"{PAPER}.sec4_6_1.model_much_smaller_than_data",
+        PAPER,
+        "Sec. 4.6.1, 4.8",
         "The motion primitive models are a compact representation, about 100 times smaller than the motion data.",
         "41 MB of models for 4.2 GB of motion data (about 100x)",
         f"{model_bytes / 1e6:.2f} MB of models for {data_bytes / 1e6:.1f} MB of data ({ratio:.0f}x)",
         verdict_threshold(ratio, published_ratio, ">=", tolerance=0.9),
         note="data bytes: the modelled primitives' clips as float64 arrays (root position + one quaternion per "
-             "joint per frame), not BVH text as in the thesis; partial from 10x.",
-        value=ratio, bound=published_ratio, unit="ratio", direction=">=",
+        "joint per frame), not BVH text as in the thesis; partial from 10x.",
+        value=ratio,
+        bound=published_ratio,
+        unit="ratio",
+        direction=">=",
     )
 
 
-def evaluate_sec4_6_1(models: Mapping[str, MotionPrimitive], model_bytes: Mapping[str, int],
-                      metadata: pd.DataFrame, dense_metadata: pd.DataFrame | None = None) -> EvaluationResult:
+def evaluate_sec4_6_1(
+    models: Mapping[str, MotionPrimitive],
+    model_bytes: Mapping[str, int],
+    metadata: pd.DataFrame,
+    dense_metadata: pd.DataFrame | None = None,
+) -> EvaluationResult:
     """Sec. 4.6.1: per primitive of ``models`` (in their order), the bytes of its clips
     (frames from ``start_frame``/``stop_frame`` of the prep ``metadata``, or of
     ``dense_metadata`` for a ``*_dense`` primitive) against ``model_bytes`` (its files on
@@ -51,12 +60,26 @@ def evaluate_sec4_6_1(models: Mapping[str, MotionPrimitive], model_bytes: Mappin
         frames = (sub["stop_frame"] - sub["start_frame"]).to_numpy()
         data = int(sum(motion_bytes(int(t), model.skeleton.n_joints) for t in frames))
         size = int(model_bytes[name])
-        rows.append(dict(primitive=name, clips=len(frames), frames=int(frames.sum()), data_bytes=data,
-                         model_bytes=size, ratio=data / size))
+        rows.append(
+            dict(
+                primitive=name,
+                clips=len(frames),
+                frames=int(frames.sum()),
+                data_bytes=data,
+                model_bytes=size,
+                ratio=data / size,
+            )
+        )
     table = pd.DataFrame(rows)
-    total = dict(primitive="all", clips=int(table["clips"].sum()), frames=int(table["frames"].sum()),
-                 data_bytes=int(table["data_bytes"].sum()), model_bytes=int(table["model_bytes"].sum()))
+    total = dict(
+        primitive="all",
+        clips=int(table["clips"].sum()),
+        frames=int(table["frames"].sum()),
+        data_bytes=int(table["data_bytes"].sum()),
+        model_bytes=int(table["model_bytes"].sum()),
+    )
     total["ratio"] = total["data_bytes"] / total["model_bytes"]
     table = pd.concat([table, pd.DataFrame([total])], ignore_index=True)
-    return EvaluationResult(table=table, claims=[compactness_claim(total["model_bytes"], total["data_bytes"])],
-                            figure=dict(total=total))
+    return EvaluationResult(
+        table=table, claims=[compactness_claim(total["model_bytes"], total["data_bytes"])], figure=dict(total=total)
+    )

@@ -56,13 +56,24 @@ def evaluate_fig5_4(
             example = example + EXAMPLE_OFFSET_CM
             label = f"{info['primitive']}: {info['style']} CVAE (grey: example {info['example']})"
         fig_rows.append((label, pos, example))
-        steps = np.linalg.norm(feats[:, :-1, 3 * J: 3 * J + 2], axis=-1).sum(axis=1)
-        table.append({"primitive": info["primitive"], "model": info["style"], "samples": n_samples,
-                      "step_length_mean_cm": steps.mean(), "step_length_sd_cm": steps.std(ddof=1),
-                      **diversity(feats, J)})
+        steps = np.linalg.norm(feats[:, :-1, 3 * J : 3 * J + 2], axis=-1).sum(axis=1)
+        table.append(
+            {
+                "primitive": info["primitive"],
+                "model": info["style"],
+                "samples": n_samples,
+                "step_length_mean_cm": steps.mean(),
+                "step_length_sd_cm": steps.std(ddof=1),
+                **diversity(feats, J),
+            }
+        )
         neutral = info["style"] == "neutral"
         animations["neutral" if neutral else "styles"].append(
-            (pos[0], primitive_clip_fps(dataset.metadata, info["primitive"], n_frames),
-             info["primitive"] if neutral else info["style"]))
+            (
+                pos[0],
+                primitive_clip_fps(dataset.metadata, info["primitive"], n_frames),
+                info["primitive"] if neutral else info["style"],
+            )
+        )
     figure = {"rows": fig_rows, "parents": layout.parents, "names": layout.names, "animations": animations}
     return EvaluationResult(table=pd.DataFrame(table).round(4), claims=[], figure=figure)

@@ -53,10 +53,12 @@ def _regime_note(cvaes: Sequence[SavedVAE]) -> str:
     active = [f"{info['style']} {info['active_units']}" for *_, info in cvaes if "active_units" in info]
     if not regimes:
         return "training budgets are a fraction of the thesis' (see the caption)."
-    return (f"CVAEs: {'; '.join(regimes)} (the thesis: SGD lr 1e-5, 1000 epochs); latent dimensions in use "
-            f"after training: {', '.join(active)}. Changed from the previous run: the old defaults (Adam lr 1e-3, "
-            "frame-averaged Gram matrices in the style term) collapsed every CVAE's posterior (0 of 32 dimensions "
-            "in use at full size); the defaults are now Eq. 5.9's sum over frames and the regime above.")
+    return (
+        f"CVAEs: {'; '.join(regimes)} (the thesis: SGD lr 1e-5, 1000 epochs); latent dimensions in use "
+        f"after training: {', '.join(active)}. Changed from the previous run: the old defaults (Adam lr 1e-3, "
+        "frame-averaged Gram matrices in the style term) collapsed every CVAE's posterior (0 of 32 dimensions "
+        "in use at full size); the defaults are now Eq. 5.9's sum over frames and the regime above."
+    )
 
 
 def evaluate_table5_1(
@@ -96,19 +98,26 @@ def evaluate_table5_1(
     rows = len(table)
     off = [f"{r}->{table.loc[r].idxmin()}" for r in table.index if r not in on_diag]
     claim = Claim(
-        claim_id="du2022.table5_1.diagonal_dominant", paper="du2022", source="Table 5.1",
+        claim_id="du2022.table5_1.diagonal_dominant",
+        paper="du2022",
+        source="Table 5.1",
         statement="Samples of each stylistic model (and the neutral VAE) are closer, in Gram-matrix style "
-                  "distance (Eq. 5.12), to their own style example than to any other style's example.",
+        "distance (Eq. 5.12), to their own style example than to any other style's example.",
         published="7 of 7 rows have their minimum on the diagonal",
         measured=f"{len(on_diag)} of {rows} rows have their minimum on the diagonal"
-                 + (f" (off: {', '.join(off)})" if off else ""),
+        + (f" (off: {', '.join(off)})" if off else ""),
         verdict=verdict_from_fraction(len(on_diag), rows),
-        value=len(on_diag) / rows if rows else float("nan"), bound=1.0, unit="share", direction=">=",
+        value=len(on_diag) / rows if rows else float("nan"),
+        bound=1.0,
+        unit="share",
+        direction=">=",
         note=f"{primitive}, {n_samples} samples a model; " + _regime_note(cvaes) + " D uses frame-averaged Gram "
-             "matrices (the thesis' scale: its neutral-to-neutral 0.0149); the summed Gram of Eq. 5.9 multiplies every "
-             "entry by the same 900 (30 feature frames squared), so the pattern is the same. Synthetic styles, CMU "
-             "21-joint subset.",
+        "matrices (the thesis' scale: its neutral-to-neutral 0.0149); the summed Gram of Eq. 5.9 multiplies every "
+        "entry by the same 900 (30 feature frames squared), so the pattern is the same. Synthetic styles, CMU "
+        "21-joint subset.",
     )
     return EvaluationResult(
-        table=out.round(6).reset_index(), claims=[claim], figure={"measured": table, "published": published},
+        table=out.round(6).reset_index(),
+        claims=[claim],
+        figure={"measured": table, "published": published},
     )

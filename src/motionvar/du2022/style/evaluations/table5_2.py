@@ -87,15 +87,24 @@ def diversity_rows(
             style_clips = primitive_features(dataset, layout, primitive, style, n_frames)[1]
             own[style] = (len(style_clips), _measures(style_clips, J))
         feats = sample_features(vae, shape, space, n_samples, seed + j)
-        example = (float(step_lengths(example_features(dataset, layout, info["example"], n_frames)[None], J)[0])
-                   if "example" in info else np.nan)
-        rows.append({
-            "primitive": primitive, "model": style, "n": n_samples, **_measures(feats, J),
-            "active_latents": active_units(vae, train_maps), "training_n": own[style][0],
-            **_prefixed("training", own[style][1]),
-            **_prefixed("posterior_mean", _measures(posterior_mean_features(vae, space, train_maps), J)),
-            "example_step": example,
-        })
+        example = (
+            float(step_lengths(example_features(dataset, layout, info["example"], n_frames)[None], J)[0])
+            if "example" in info
+            else np.nan
+        )
+        rows.append(
+            {
+                "primitive": primitive,
+                "model": style,
+                "n": n_samples,
+                **_measures(feats, J),
+                "active_latents": active_units(vae, train_maps),
+                "training_n": own[style][0],
+                **_prefixed("training", own[style][1]),
+                **_prefixed("posterior_mean", _measures(posterior_mean_features(vae, space, train_maps), J)),
+                "example_step": example,
+            }
+        )
     return rows
 
 
@@ -123,28 +132,37 @@ def _step_note(t: pd.DataFrame, prims: Sequence[str], styles: Sequence[str]) -> 
         ("the neutral clips", mean([TRAINING])),
         ("through the autoencoder", mean([ROUND_TRIP])),
         ("the neutral VAE's decoder at the posterior means", mean(["neutral"], "posterior_mean_step_sd")),
-        ("the CVAEs' decoders at the same posterior means (CVAE training: style term, epochs from the neutral VAE)",
-         mean(styles, "posterior_mean_step_sd")),
+        (
+            "the CVAEs' decoders at the same posterior means (CVAE training: style term, epochs from the neutral VAE)",
+            mean(styles, "posterior_mean_step_sd"),
+        ),
         ("the CVAEs' prior samples", mean(styles)),
     ]
     steps = [(f"{name} {value:.2f} ({value - before:+.2f})") for (_, before), (name, value) in zip(chain, chain[1:])]
     drops = [before - value for (_, before), (_, value) in zip(chain, chain[1:])]
     k = int(np.argmax(drops))
-    text = (f"Step_SD (cm; means over primitives and styles) from {chain[0][0]} {chain[0][1]:.2f}: " + ", ".join(steps)
-            + (f"; the largest loss, {drops[k]:.2f} cm, is at: {chain[k + 1][0]}" if drops[k] > 0 else "")
-            + f". The neutral VAE's own prior samples: {mean(['neutral']):.2f}; the styles' own clips: "
-            f"{_range([t.loc[(p, s), 'training_step_sd'] for p in prims for s in styles])}.")
+    text = (
+        f"Step_SD (cm; means over primitives and styles) from {chain[0][0]} {chain[0][1]:.2f}: "
+        + ", ".join(steps)
+        + (f"; the largest loss, {drops[k]:.2f} cm, is at: {chain[k + 1][0]}" if drops[k] > 0 else "")
+        + f". The neutral VAE's own prior samples: {mean(['neutral']):.2f}; the styles' own clips: "
+        f"{_range([t.loc[(p, s), 'training_step_sd'] for p in prims for s in styles])}."
+    )
     pairs = [(t.loc[(p, s), "posterior_mean_step_mean"], t.loc[(p, s), "example_step"]) for p in prims for s in styles]
     if any(np.isnan(e) for _, e in pairs):
         return text
     gap = float(np.mean([abs(a - e) for a, e in pairs]))
     neutral_sd = mean([TRAINING])
-    text += (f" The CVAEs' decoders at the posterior means step {_range([a for a, _ in pairs])} cm on average "
-             f"(their style examples {_range([e for _, e in pairs])}; mean absolute difference {gap:.2f} cm, the "
-             f"neutral clips' step_SD {neutral_sd:.2f})")
+    text += (
+        f" The CVAEs' decoders at the posterior means step {_range([a for a, _ in pairs])} cm on average "
+        f"(their style examples {_range([e for _, e in pairs])}; mean absolute difference {gap:.2f} cm, the "
+        f"neutral clips' step_SD {neutral_sd:.2f})"
+    )
     if k == 2 and gap < 0.5 * neutral_sd:
-        text += (": the Gram term of one example fixes the second moments of the features, the root's speed among "
-                 "them, so the samples' step lengths move to the example's and spread less around it")
+        text += (
+            ": the Gram term of one example fixes the second moments of the features, the root's speed among "
+            "them, so the samples' step lengths move to the example's and spread less around it"
+        )
     return text + "."
 
 
@@ -185,12 +203,18 @@ def evaluate_table5_2(
     tol = pose_sd_tolerance
     pose = t["pose_sd"]
     styles = [m for m in t.index.get_level_values("model").unique() if m not in (TRAINING, ROUND_TRIP, "neutral")]
-    regimes = "; ".join(dict.fromkeys(
-        f"{'CVAE' if info['style'] != 'neutral' else 'VAE'}: {info['regime']}"
-        for *_, info in models if "regime" in info))
+    regimes = "; ".join(
+        dict.fromkeys(
+            f"{'CVAE' if info['style'] != 'neutral' else 'VAE'}: {info['regime']}"
+            for *_, info in models
+            if "regime" in info
+        )
+    )
     active = ", ".join(f"{p} {m} {int(t.loc[(p, m), 'active_latents'])}" for p in prims for m in ["neutral", *styles])
-    note = (f"{n_samples} samples a model; synthetic data, CMU 21-joint subset, reduced training budgets "
-            f"({regimes or 'see the caption'}); latent dimensions in use (of {models[0][0].latent}): {active}.")
+    note = (
+        f"{n_samples} samples a model; synthetic data, CMU 21-joint subset, reduced training budgets "
+        f"({regimes or 'see the caption'}); latent dimensions in use (of {models[0][0].latent}): {active}."
+    )
 
     # claim 1: the neutral VAE against the training data and against its round trip
     credit, parts = 0.0, []
@@ -199,14 +223,18 @@ def evaluate_table5_2(
         within_train, within_ae = abs(vae / train - 1) <= tol, abs(vae / ae - 1) <= tol
         credit += 1.0 if within_train else 0.5 if within_ae else 0.0
         post = t.loc[(p, "neutral"), "posterior_mean_pose_sd"]
-        parts.append(f"{p}: {vae:.2f} vs {train:.2f} ({_pct(vae, train)}); vs the training data through the "
-                     f"autoencoder {ae:.2f} ({_pct(vae, ae)}; the round trip alone {_pct(ae, train)}; the VAE's "
-                     f"decoder at the posterior means {post:.2f}, {_pct(post, train)})")
-    claim1_note = (f"Verdict: reproduced when within {tol:.0%} of the training data, partial when only within "
-                   f"{tol:.0%} of the training data passed through the autoencoder (the VAE models the encoded clips "
-                   "and its samples are decoded the same way, so this is what a perfect VAE gives; our autoencoder "
-                   "trains a fraction of the thesis' 300 epochs). Changed from the previous run: the round-trip "
-                   "baseline is new (before: the training data only). " + note)
+        parts.append(
+            f"{p}: {vae:.2f} vs {train:.2f} ({_pct(vae, train)}); vs the training data through the "
+            f"autoencoder {ae:.2f} ({_pct(vae, ae)}; the round trip alone {_pct(ae, train)}; the VAE's "
+            f"decoder at the posterior means {post:.2f}, {_pct(post, train)})"
+        )
+    claim1_note = (
+        f"Verdict: reproduced when within {tol:.0%} of the training data, partial when only within "
+        f"{tol:.0%} of the training data passed through the autoencoder (the VAE models the encoded clips "
+        "and its samples are decoded the same way, so this is what a perfect VAE gives; our autoencoder "
+        "trains a fraction of the thesis' 300 epochs). Changed from the previous run: the round-trip "
+        "baseline is new (before: the training data only). " + note
+    )
 
     # claim 2: step_SD below the training data's
     step = {p: (t.loc[(p, "neutral"), "step_sd"], t.loc[(p, TRAINING), "step_sd"]) for p in prims}
@@ -216,51 +244,81 @@ def evaluate_table5_2(
     lower_own = [(p, s) for p in prims for s in styles if ratio[(p, s)] < ratio[(p, "neutral")]]
     lower_raw = [(p, s) for p in prims for s in styles if pose[(p, s)] < pose[(p, "neutral")]]
     below_data = [(p, s) for p in prims for s in styles if pose[(p, s)] < t.loc[(p, s), "training_pose_sd"]]
-    data_above = [f"{p} " + ", ".join(f"{s} {t.loc[(p, s), 'training_pose_sd']:.1f}" for s in above)
-                  for p in prims if (above := [s for s in styles if t.loc[(p, s), "training_pose_sd"]
-                                               > t.loc[(p, "neutral"), "training_pose_sd"]])]
+    data_above = [
+        f"{p} " + ", ".join(f"{s} {t.loc[(p, s), 'training_pose_sd']:.1f}" for s in above)
+        for p in prims
+        if (
+            above := [
+                s for s in styles if t.loc[(p, s), "training_pose_sd"] > t.loc[(p, "neutral"), "training_pose_sd"]
+            ]
+        )
+    ]
     n_style = len(prims) * len(styles)
     ratios = "; ".join(f"{p}: " + ", ".join(f"{m} {ratio[(p, m)]:.3f}" for m in ["neutral", *styles]) for p in prims)
     claim3_note = (
         "Eq. 5.13 pools every frame, so pose_SD is dominated by the within-clip gait motion and tracks the size of a "
         "style's movement: "
-        + (f"some styles' own clips already vary more than the neutral ones ({'; '.join(data_above)} vs neutral "
-           f"{_range([t.loc[(p, 'neutral'), 'training_pose_sd'] for p in prims])}). " if data_above else
-           "no style's own clips vary more than the neutral ones here. ")
+        + (
+            f"some styles' own clips already vary more than the neutral ones ({'; '.join(data_above)} vs neutral "
+            f"{_range([t.loc[(p, 'neutral'), 'training_pose_sd'] for p in prims])}). "
+            if data_above
+            else "no style's own clips vary more than the neutral ones here. "
+        )
         + "Verdict: a style counts when its CVAE keeps less of its own training data's pose_SD than the neutral VAE "
         "keeps of the neutral data's (pose_SD / own training data's). Changed from the previous run: the verdict "
-        "counted the raw comparison with the neutral VAE. " + _step_note(t, prims, styles) + " " + note)
+        "counted the raw comparison with the neutral VAE. " + _step_note(t, prims, styles) + " " + note
+    )
     claims = [
         Claim(
-            claim_id="du2022.table5_2.neutral_pose_sd_close_to_training", paper="du2022", source="Tables 5.2-5.3",
+            claim_id="du2022.table5_2.neutral_pose_sd_close_to_training",
+            paper="du2022",
+            source="Tables 5.2-5.3",
             statement=f"The neutral VAE's pose_SD is close to the training data's (within {tol:.0%}).",
             published="52.68 vs 52.86 (left), 52.88 vs 53.04 (right): within 0.4%",
             measured="; ".join(parts),
-            verdict=verdict_from_fraction(credit, len(prims)), note=claim1_note,
-            value=credit / len(prims) if prims else float("nan"), bound=1.0, unit="share", direction=">=",
+            verdict=verdict_from_fraction(credit, len(prims)),
+            note=claim1_note,
+            value=credit / len(prims) if prims else float("nan"),
+            bound=1.0,
+            unit="share",
+            direction=">=",
         ),
         Claim(
-            claim_id="du2022.table5_2.neutral_step_sd_lower_than_training", paper="du2022", source="Tables 5.2-5.3",
+            claim_id="du2022.table5_2.neutral_step_sd_lower_than_training",
+            paper="du2022",
+            source="Tables 5.2-5.3",
             statement="The neutral VAE's step-length SD is lower than the training data's.",
             published="7.66 < 10.12 (left), 7.51 < 9.98 (right)",
             measured="; ".join(
                 f"{p}: {a:.2f} vs {b:.2f} (through the autoencoder {t.loc[(p, ROUND_TRIP), 'step_sd']:.2f}; the "
                 f"VAE's decoder at the posterior means {t.loc[(p, 'neutral'), 'posterior_mean_step_sd']:.2f})"
-                for p, (a, b) in step.items()),
-            verdict=verdict_from_fraction(sum(a < b for a, b in step.values()), len(prims)), note=note,
-            value=sum(a < b for a, b in step.values()) / len(prims) if prims else float("nan"), bound=1.0,
-            unit="share", direction=">=",
+                for p, (a, b) in step.items()
+            ),
+            verdict=verdict_from_fraction(sum(a < b for a, b in step.values()), len(prims)),
+            note=note,
+            value=sum(a < b for a, b in step.values()) / len(prims) if prims else float("nan"),
+            bound=1.0,
+            unit="share",
+            direction=">=",
         ),
         Claim(
-            claim_id="du2022.table5_2.style_pose_sd_lower_than_neutral", paper="du2022", source="Tables 5.2-5.3",
+            claim_id="du2022.table5_2.style_pose_sd_lower_than_neutral",
+            paper="du2022",
+            source="Tables 5.2-5.3",
             statement="Every stylistic model's pose_SD is lower than the neutral VAE's (each relative to its own "
-                      "training data's).",
+            "training data's).",
             published="12 of 12 (6 styles x 2 primitives)",
-            measured=(f"{len(lower_own)} of {n_style} relative to their own training data (pose_SD / training "
-                      f"data's: {ratios}); as printed, against the neutral VAE's pose_SD: {len(lower_raw)} of "
-                      f"{n_style}; CVAE below its style's own clips: {len(below_data)} of {n_style}"),
-            verdict=verdict_from_fraction(len(lower_own), n_style), note=claim3_note,
-            value=len(lower_own) / n_style if n_style else float("nan"), bound=1.0, unit="share", direction=">=",
+            measured=(
+                f"{len(lower_own)} of {n_style} relative to their own training data (pose_SD / training "
+                f"data's: {ratios}); as printed, against the neutral VAE's pose_SD: {len(lower_raw)} of "
+                f"{n_style}; CVAE below its style's own clips: {len(below_data)} of {n_style}"
+            ),
+            verdict=verdict_from_fraction(len(lower_own), n_style),
+            note=claim3_note,
+            value=len(lower_own) / n_style if n_style else float("nan"),
+            bound=1.0,
+            unit="share",
+            direction=">=",
         ),
     ]
     return EvaluationResult(table=table.round(5), claims=claims, figure={"table": table})
