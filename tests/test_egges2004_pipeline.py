@@ -206,7 +206,7 @@ def test_extrema_figure_and_animation(fitted):
 
 
 def test_config_sections_fill_the_library_options():
-    """The rule scripts pass config.idle's sections to the library's option records: the
+    """The rule scripts pass config.egges2004's sections to the library's option records: the
     schema's defaults (plain data) must construct them."""
 
     def defaults(schema):
@@ -214,7 +214,7 @@ def test_config_sections_fill_the_library_options():
             return {k: defaults(v) for k, v in schema["properties"].items()}
         return schema.get("default")
 
-    opts = defaults(yaml.safe_load((ROOT / "config" / "schema.yaml").read_text())["properties"]["idle"])
+    opts = defaults(yaml.safe_load((ROOT / "config" / "schema.yaml").read_text())["properties"]["egges2004"])
     assert json.dumps(opts)
     IdleSettings(**opts["analysis"])
     IdentificationParams(**opts["identification"], perlin_frequency_hz=opts["perlin_frequency_hz"])

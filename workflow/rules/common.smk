@@ -5,6 +5,7 @@
 
 import os
 import re
+from dataclasses import dataclass, field
 
 import jsonschema
 from snakemake.exceptions import WorkflowError
@@ -52,8 +53,34 @@ PRIORITY = {
     "du2022_graph_primitive": 20,
 }
 
-# name -> {"paper": ..., "extra": [path patterns with {dataset}]}
+# Every published evaluation, one rule each, named <paper>_<evaluation>: this table lists
+# them all (in report order); each paper's rule file declares an EvaluationSpec per name
+# (register_evaluation) and workflow/rules/evaluations.smk makes one rule of each.
+EVALUATION_NAMES = {
+    "du2022": [
+        "du2022_fig3_9", "du2022_fig3_10", "du2022_fig3_11", "du2022_table3_1",
+        "du2022_fig4_12", "du2022_fig4_9", "du2022_sec4_6_1", "du2022_fig4_10",
+        "du2022_table5_1", "du2022_table5_2", "du2022_fig5_4",
+    ],
+    "ma2010": [
+        "ma2010_fig3", "ma2010_fig6", "ma2010_variogram", "ma2010_fig7b", "ma2010_fig8",
+        "ma2010_sec7_4", "ma2010_sec8",
+    ],
+    "egges2004": [
+        "egges2004_identification", "egges2004_repetition", "egges2004_fitting", "egges2004_speed",
+    ],
+}
+
+PAPER_SECTIONS = {"ma2010": ["ma2010"], "egges2004": ["egges2004"], "du2022": ["fda", "graph", "style"]}  # TRANSITION
+
+# name -> EvaluationSpec, filled by the paper rule files
 EVALUATIONS = {}
+
+# Config keys that were renamed: old dotted key -> new one (a config that still uses the old
+# key stops with a message naming the new one).
+RENAMED_CONFIG_KEYS = {
+    "idle": "egges2004",
+}
 
 
 def _config_error(err):
@@ -73,7 +100,13 @@ def _config_error(err):
 def validate_config(schema_path):
     """Validate ``config`` against the schema (filling defaults); stop with a message
     naming the offending key. Also checks what a schema cannot: run_datasets names
-    configured datasets."""
+    configured datasets, and no key is one that was renamed (RENAMED_CONFIG_KEYS)."""
+    for old, new in RENAMED_CONFIG_KEYS.items():
+        node, parts = config, old.split(".")
+        for part in parts[:-1]:
+            node = node.get(part) if isinstance(node, dict) else None
+        if isinstance(node, dict) and parts[-1] in node:
+            raise WorkflowError(f"Invalid configuration: config key {old} is now {new}")
     try:
         validate(config, schema_path)
     except WorkflowError as exc:
@@ -216,21 +249,63 @@ def in_report(path, paper, caption, **labels):
 def gif_pages(dataset):
     """The report pages of the GIFs whose paths vary only with the dataset and that no
     evaluation owns (those come with their evaluation: evaluation_outputs)."""
-    owned = {p for spec in EVALUATIONS.values() for p in spec["extra"]}
+    owned = {p for ev in EVALUATIONS for p in evaluation_extra(ev)}
     return [
         f"{p}.html".format(dataset=dataset) for p in GIF_PAGES
         if p not in owned and re.fullmatch(r"[^{}]*(\{dataset\}[^{}]*)*", p)
     ]
 
 
-def register_evaluation(ev, paper, extra=()):
-    """Add evaluation ``ev`` (table, figure, claims, plus ``extra`` outputs) to the
-    default target, the claims merge and the report."""
-    if ev in EVALUATIONS:
-        raise ValueError(f"evaluation {ev} registered twice")
-    if paper not in PAPER_CATEGORY:
-        raise ValueError(f"evaluation {ev}: unknown paper {paper}")
-    EVALUATIONS[ev] = {"paper": paper, "extra": list(extra)}
+@dataclass(frozen=True)
+class EvaluationSpec:
+    """One published evaluation: the rule ``name`` (listed in EVALUATION_NAMES) that runs
+    workflow/scripts/<name>.py and writes its table, figure and claims (report caption
+    workflow/report/<name>.rst) plus ``outputs``.
+
+    paper: key of PAPER_CATEGORY. label: the paper's figure or section, shown in the report.
+    section: the config section passed whole as ``params.settings`` (the script builds its
+    settings object from it). inputs: name -> path pattern or input function. outputs:
+    further outputs of the rule, name -> path (already given to ``in_report`` where the report
+    shows them). params: further params. extra: further files that join the default target
+    with the evaluation (built by other rules). mem_mb, threads, priority: as the rule's."""
+
+    name: str
+    paper: str
+    label: str
+    section: str
+    inputs: dict
+    mem_mb: int = 3000
+    outputs: dict = field(default_factory=dict)
+    params: dict = field(default_factory=dict)
+    extra: tuple = ()
+    threads: int = 1
+    priority: int = 0
+
+
+LEGACY_EVALUATIONS = set()  # TRANSITION: names registered the old way (their file makes the rule)
+
+
+def register_evaluation(spec, paper=None, extra=()):
+    """Add an evaluation to the default target, the claims merge and the report (one rule,
+    made by evaluations.smk)."""
+    if isinstance(spec, str):  # TRANSITION: old-style call, register_evaluation(name, paper=..., extra=[...])
+        LEGACY_EVALUATIONS.add(spec)
+        spec = EvaluationSpec(spec, paper, "", next(iter(PAPER_SECTIONS[paper])), {}, extra=tuple(extra))
+    if spec.name in EVALUATIONS:
+        raise ValueError(f"evaluation {spec.name} registered twice")
+    if spec.paper not in PAPER_CATEGORY:
+        raise ValueError(f"evaluation {spec.name}: unknown paper {spec.paper}")
+    if spec.name not in EVALUATION_NAMES.get(spec.paper, []):
+        raise ValueError(f"evaluation {spec.name} is not listed in EVALUATION_NAMES[{spec.paper!r}] (common.smk)")
+    if spec.section not in config:
+        raise ValueError(f"evaluation {spec.name}: no config section {spec.section!r}")
+    EVALUATIONS[spec.name] = spec
+
+
+def evaluation_extra(name):
+    """The further outputs that join the default target with evaluation ``name``."""
+    spec = EVALUATIONS[name]
+    return [str(p) for p in [*spec.extra, *(p for p in spec.outputs.values() if str(p).endswith(".gif"))]]
 
 
 # Applicability (rules/applicability.smk): checkpoint applicability decides from a
@@ -261,8 +336,8 @@ def applicable(dataset):
 def _evaluation_files(dataset, ev, ok):
     if not ok:
         return [p.format(dataset=dataset) for p in not_applicable_outputs(ev).values()]
-    extra = [p.format(dataset=dataset) for p in EVALUATIONS[ev]["extra"]]
-    pages = [f"{p}.html".format(dataset=dataset) for p in EVALUATIONS[ev]["extra"] if p in GIF_PAGES]
+    extra = [p.format(dataset=dataset) for p in evaluation_extra(ev)]
+    pages = [f"{p}.html".format(dataset=dataset) for p in evaluation_extra(ev) if p in GIF_PAGES]
     return [ev_table(ev).format(dataset=dataset), ev_figure(ev).format(dataset=dataset),
             ev_claims(ev).format(dataset=dataset), *extra, *pages]
 

@@ -1,7 +1,7 @@
 # Egges, Molet, Magnenat-Thalmann 2004, "Personalised Real-time Idle Motion Synthesis":
 # posture PCA (Sec. 3.2), one idle database per subject (Sec. 5-6), and the evaluations of
 # Sec. 5.4 (fitting), 6 (repetition) and 8 (identification, real time). Options:
-# config.idle (config/schema.yaml). Inputs: the idle clips of results/{dataset}/prep/.
+# config.egges2004 (config/schema.yaml). Inputs: the idle clips of results/{dataset}/prep/.
 # Library: motionvar.egges2004 (the method, pipeline, storage), its evaluations/ and figures.
 
 EGGES = "results/{dataset}/models/egges2004"
@@ -10,7 +10,7 @@ EGGES_MODEL = {"model": f"{EGGES}/idle_model.npz", "model_settings": f"{EGGES}/i
 EGGES_PREP = {"clips": f"{PREP}/clips.npz", "metadata": f"{PREP}/metadata.csv", "joint_map": joint_map_input}
 
 # evaluation -> its report label, whether it reads the prep clips (and the joint map),
-# the keys of config.idle it reads, memory, further outputs of the rule, and further
+# the keys of config.egges2004 it reads, memory, further outputs of the rule, and further
 # outputs registered with it for the default target.
 EGGES_EVALUATIONS = {
     "identification": {
@@ -90,7 +90,7 @@ rule egges2004_model:
         ),
     params:
         options=config_params(
-            "idle", ["seed", "held_out_clips", "translation_scale", "analysis", "figure_subjects"]
+            "egges2004", ["seed", "held_out_clips", "translation_scale", "analysis", "figure_subjects"]
         ),
         joint_map=lambda wc: joint_map_path(wc.dataset),
     log:
@@ -135,7 +135,7 @@ for _ev, _spec in EGGES_EVALUATIONS.items():
             **_spec["outputs"],
         params:
             evaluation=_name,  # names the script: evaluated when the job runs, after the loop
-            options=config_params("idle", _spec["keys"]),
+            options=config_params("egges2004", _spec["keys"]),
             **({"joint_map": lambda wc: joint_map_path(wc.dataset)} if _spec["prep"] else {}),
         log:
             ev_log(_name),
@@ -162,7 +162,7 @@ rule egges2004_animation:
             kind="animation",
         ),
     params:
-        options=config_params("idle", ["seed", "animation", "figure_subjects"]),
+        options=config_params("egges2004", ["seed", "animation", "figure_subjects"]),
     log:
         ev_log("egges2004_animation"),
     benchmark:

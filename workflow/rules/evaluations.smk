@@ -1,0 +1,43 @@
+# One rule per published evaluation, made from the EvaluationSpec each paper's rule file
+# registered (EVALUATIONS; names listed in EVALUATION_NAMES, common.smk). Every such rule runs
+# workflow/scripts/<name>.py with the whole config section of its spec as params.settings
+# and writes its table, figure and claims (and the spec's further outputs).
+# The script path comes from params.evaluation: Snakemake resolves a script: line again when
+# the job runs, when a loop variable holds the last name the loop gave it.
+
+_unregistered = [  # TRANSITION: legacy ones skipped below
+   n for names in EVALUATION_NAMES.values() for n in names if n not in EVALUATIONS]
+if _unregistered:
+    raise WorkflowError(f"EVALUATION_NAMES lists {_unregistered}, but no rule file registers them")
+
+for _ev_spec in [s for s in EVALUATIONS.values() if s.name not in LEGACY_EVALUATIONS]:
+    _ev_caption = f"../report/{_ev_spec.name}.rst"
+
+    rule:
+        name:
+            _ev_spec.name
+        input:
+            **_ev_spec.inputs,
+        output:
+            table=in_report(ev_table(_ev_spec.name), _ev_spec.paper, _ev_caption, figure=_ev_spec.label, kind="table"),
+            figure=in_report(
+                ev_figure(_ev_spec.name), _ev_spec.paper, _ev_caption, figure=_ev_spec.label, kind="figure"
+            ),
+            claims=ev_claims(_ev_spec.name),
+            **_ev_spec.outputs,
+        params:
+            evaluation=_ev_spec.name,
+            settings=config[_ev_spec.section],
+            **_ev_spec.params,
+        log:
+            ev_log(_ev_spec.name),
+        benchmark:
+            ev_benchmark(_ev_spec.name)
+        priority: _ev_spec.priority
+        threads: _ev_spec.threads
+        resources:
+            mem_mb=_ev_spec.mem_mb,
+        conda:
+            ENV
+        script:
+            "../scripts/{params.evaluation}.py"
