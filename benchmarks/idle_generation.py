@@ -29,9 +29,9 @@ from pathlib import Path
 import numpy as np
 
 from motionvar.core import cmu_joint_map
-from motionvar.egges2004 import IdleSettings, PosturePCA, analyse_recording, build_database
+from motionvar.egges2004 import Egges2004Settings, PosturePCA, analyse_recording, build_database
 from motionvar.egges2004.baselines import perlin_pcs
-from motionvar.egges2004.evaluations.sec8_speed import generation_seconds
+from motionvar.egges2004.evaluations.speed import generation_seconds
 from motionvar.egges2004.generate import idle_motion
 from motionvar.egges2004.pipeline import IdleModel
 from motionvar.egges2004.storage import load_idle_model
@@ -57,13 +57,15 @@ def main() -> None:
         for _ in range(args.clips)
     ]
     fps = clips[0].fps
-    pca = PosturePCA.fit(clips)
+    settings = Egges2004Settings()
+    pca = PosturePCA.fit(clips, settings.translation_scale)
     t0 = time.perf_counter()
     db = build_database(
         [analyse_recording(m, pca, cmu_joint_map(), f"clip{i}") for i, m in enumerate(clips)],
         pca,
-        IdleSettings(),
+        settings.analysis,
         subject.subject_id,
+        settings.seed,
     )
     print(
         f"database: {len(db.animations)} balance shifts, categories {db.categories.names}, "

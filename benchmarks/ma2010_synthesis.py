@@ -30,6 +30,7 @@ from motionvar.core import cmu_joint_map  # noqa: E402
 from motionvar.io import load_dataset  # noqa: E402
 from motionvar.ma2010 import StyleVariationModel, root_solver  # noqa: E402
 from motionvar.ma2010.examples import walk_cycles  # noqa: E402
+from motionvar.ma2010.settings import Ma2010Settings  # noqa: E402
 from motionvar.ma2010.synthesis import realtime_clips, stitch  # noqa: E402
 
 PAPER_SECONDS_PER_SECOND = 0.15
@@ -37,9 +38,12 @@ PAPER_SECONDS_PER_SECOND = 0.15
 
 def fit_model(data_dir: Path, n_frames: int):
     jm = cmu_joint_map()
-    clips, table = walk_cycles(load_dataset(data_dir), jm, ["neutral"], ["forward"], n_frames, what=str(data_dir))
+    settings = Ma2010Settings(n_frames=n_frames)  # neutral forward walks, the default variogram
+    clips, table = walk_cycles(load_dataset(data_dir), jm, settings, what=str(data_dir))
     sk = clips.skeleton
-    model = StyleVariationModel(jm.group_indices(sk), "lower_first").fit(clips)
+    model = StyleVariationModel(
+        jm.group_indices(sk), "lower_first", settings.variogram_model, variogram_scale=settings.variogram_scale
+    ).fit(clips)
     return model, clips, root_solver(sk, jm), table["subject"].nunique()
 
 

@@ -148,7 +148,7 @@ def _kriging_prepare(n: int):
 def _kriging_fit(data):
     from motionvar.ma2010.kriging import UniversalKriging
 
-    return UniversalKriging().fit(*data)
+    return UniversalKriging("auto", variogram_scale="sd").fit(*data)  # config ma2010's defaults
 
 
 def _kriging_query(data, model):
@@ -156,9 +156,9 @@ def _kriging_query(data, model):
 
 
 def _pca_fit(motions):
-    from motionvar.egges2004 import PosturePCA
+    from motionvar.egges2004 import Egges2004Settings, PosturePCA
 
-    return PosturePCA.fit(motions)
+    return PosturePCA.fit(motions, Egges2004Settings().translation_scale)
 
 
 def _pca_query(motions, pca):
@@ -183,7 +183,7 @@ def _idle_prepare(n: int):
     """A one-subject idle database from two synthetic recordings (built once)."""
     if not _IDLE:
         from motionvar.core import cmu_joint_map
-        from motionvar.egges2004 import IdleSettings, PosturePCA, analyse_recording, build_database
+        from motionvar.egges2004 import Egges2004Settings, PosturePCA, analyse_recording, build_database
         from motionvar.synth.idle import IdleParams, generate_idle
         from motionvar.synth.subjects import make_subjects
 
@@ -193,19 +193,21 @@ def _idle_prepare(n: int):
             generate_idle(subject, IdleParams(duration_s=40.0, heading_deg=90.0, start_xz=(0.0, 0.0)), rng)[0]
             for _ in range(2)
         ]
-        pca = PosturePCA.fit(recs)
+        settings = Egges2004Settings()
+        pca = PosturePCA.fit(recs, settings.translation_scale)
         db = build_database(
             [analyse_recording(m, pca, cmu_joint_map(), f"clip{i}") for i, m in enumerate(recs)],
             pca,
-            IdleSettings(),
+            settings.analysis,
             subject.subject_id,
+            settings.seed,
         )
         _IDLE.update(db=db, pca=pca)
     return n
 
 
 def _idle_query(n, _):
-    from motionvar.egges2004.evaluations.sec8_speed import generation_seconds
+    from motionvar.egges2004.evaluations.speed import generation_seconds
 
     return generation_seconds(_IDLE["db"], _IDLE["pca"], int(n), seed=1, repeats=1)
 

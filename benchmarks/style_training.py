@@ -32,9 +32,11 @@ import torch
 
 from motionvar.core import cmu_joint_map, cmu_skeleton
 from motionvar.du2022.style import (
+    AutoencoderSettings,
+    CvaeSettings,
     FeatureScaler,
     FeatureSpace,
-    TrainConfig,
+    VaeSettings,
     features_to_positions,
     gram,
     gram_distance,
@@ -42,6 +44,7 @@ from motionvar.du2022.style import (
     sample_features,
     style_joints,
     train_autoencoder,
+    train_cvae,
     train_vae,
 )
 
@@ -78,26 +81,25 @@ def main() -> None:
     print(f"torch {torch.__version__}, {torch.get_num_threads()} threads; {C} channels x {T} frames")
 
     windows = np.random.default_rng(0).normal(size=(args.windows, T, C)).astype(np.float32)
-    one = TrainConfig(epochs=1, lr=1e-3, batch_size=64)
-    ae_faithful = timed(lambda: train_autoencoder(windows, one), args.repeats)
-    ae_holden = timed(lambda: train_autoencoder(windows, one, decoder_order="depool_conv"), args.repeats)
+    one = AutoencoderSettings(epochs=1, lr=1e-3, batch_size=64)
+    ae_faithful = timed(lambda: train_autoencoder(windows, one, 0), args.repeats)
+    ae_holden = timed(lambda: train_autoencoder(windows, one.replace(decoder_order="depool_conv"), 0), args.repeats)
     print(
         f"\n1. autoencoder: {ae_faithful:.2f} s per epoch over {args.windows} windows "
         f"-> {args.ae_epochs} epochs ~ {ae_faithful * args.ae_epochs:.0f} s"
     )
 
-    ae, _ = train_autoencoder(windows[:64], one)
+    ae, _ = train_autoencoder(windows[:64], one, 0)
     space = FeatureSpace(ae, FeatureScaler.fit(windows[:256].astype(float), layout.n_joints))
     maps = torch.rand(args.clips, 256, T // 2, generator=gen)
-    cfg = TrainConfig(epochs=1, lr=1e-3, batch_size=32)
-    vae_l10 = timed(lambda: train_vae(maps, cfg, n_samples=10), args.repeats)
-    vae_l1 = timed(lambda: train_vae(maps, cfg, n_samples=1), args.repeats)
-    cvae = timed(lambda: train_vae(maps, cfg, n_samples=10, style_maps=maps[0], alpha=200.0), args.repeats)
-    cvae_mean = timed(
-        lambda: train_vae(maps, cfg, n_samples=10, style_maps=maps[0], alpha=200.0, gram_reduce="mean"), args.repeats
-    )
-    sgd = TrainConfig(epochs=1, lr=1e-5, batch_size=32, optimizer="sgd")
-    cvae_sgd = timed(lambda: train_vae(maps, sgd, n_samples=10, style_maps=maps[0], alpha=200.0), args.repeats)
+    vae_cfg = VaeSettings(samples_per_input=10, epochs=1, lr=1e-3, batch_size=32, optimizer="adam")
+    cvae_cfg = CvaeSettings(alpha=200.0, epochs=1, lr=1e-3, batch_size=32, optimizer="adam")
+    vae_l10 = timed(lambda: train_vae(maps, vae_cfg, 0), args.repeats)
+    vae_l1 = timed(lambda: train_vae(maps, vae_cfg.replace(samples_per_input=1), 0), args.repeats)
+    cvae = timed(lambda: train_cvae(maps, maps[0], vae_cfg, cvae_cfg, 0, None), args.repeats)
+    cvae_mean = timed(lambda: train_cvae(maps, maps[0], vae_cfg, cvae_cfg.replace(gram="mean"), 0, None), args.repeats)
+    sgd = cvae_cfg.replace(lr=1e-5, optimizer="sgd")
+    cvae_sgd = timed(lambda: train_cvae(maps, maps[0], vae_cfg, sgd, 0, None), args.repeats)
     print(
         f"   VAE (L = 10): {vae_l10:.2f} s per epoch over {args.clips} clips -> {args.vae_epochs} epochs "
         f"~ {vae_l10 * args.vae_epochs:.0f} s"

@@ -49,6 +49,7 @@ def results(tmp_path_factory):
 
 def _ma2010(ds, models):
     from motionvar.ma2010.examples import WalkCycles, walk_cycles
+    from motionvar.ma2010.settings import Ma2010Settings
     from motionvar.ma2010.storage import save_style_variation_model
     from motionvar.synth import generate_walk, make_subjects, sample_walk_params
 
@@ -61,19 +62,20 @@ def _ma2010(ds, models):
             {"clip_id": f"w{i}", "subject": s.subject_id, "behaviour": "walk", "style": "neutral", "variant": "forward"}
         )
     save_dataset(ds / "data", motions, pd.DataFrame(rows))
-    clips, table = walk_cycles(load_dataset(ds / "data"), JM, ["neutral"], ["forward"], n_frames=32)
-    walks = WalkCycles(clips, table["subject"].tolist(), JM)
-    model = walks.fit_model("auto", "auto")
+    settings = Ma2010Settings(n_frames=32)
+    clips, table = walk_cycles(load_dataset(ds / "data"), JM, settings)
+    walks = WalkCycles(clips, table["subject"].tolist(), JM, root_group=settings.root_group)
+    model = walks.fit_model(settings)
     save_style_variation_model(models / "ma2010" / "style_variation", model, JM, clips.clip_ids, walks.subjects)
 
 
 def _egges2004(tmp, models):
-    from motionvar.egges2004 import IdleSettings
     from motionvar.egges2004.pipeline import fit_idle_model, idle_clips, split_clips
+    from motionvar.egges2004.settings import Egges2004Settings
     from motionvar.egges2004.storage import save_idle_model
 
     train, test = split_clips(idle_clips(load_dataset(idle_toy_dataset(tmp)), "prep"), 1)
-    model, _ = fit_idle_model(train, test, JM, IdleSettings(variation_pcs=4), seed=0)
+    model, _ = fit_idle_model(train, test, JM, Egges2004Settings.from_dict({"analysis": {"variation_pcs": 4}}))
     save_idle_model(models / "egges2004" / "idle_model", model)
 
 
@@ -94,9 +96,10 @@ def _graph(models):
 
 
 def _style(tmp, models):
+    from test_style import TINY_HIDDEN, tiny_settings
     from test_style import toy_walk as style_toy_walk
 
-    from motionvar.du2022.style import TrainConfig, fit_feature_space, fit_primitive_vae, fit_style_cvae, save_vae
+    from motionvar.du2022.style import fit_feature_space, fit_primitive_vae, fit_style_cvae, save_vae
     from motionvar.du2022.style.data import dataset_layout
     from motionvar.du2022.style.generate import fit_rig, save_rig
 
@@ -116,17 +119,13 @@ def _style(tmp, models):
     save_dataset(tmp / "prep", motions, meta)
     dataset = load_dataset(tmp / "prep")
     layout = dataset_layout(dataset, JM)
-    small = dict(n_samples=2, latent=4, hidden=(32, 16, 8))
-    space, _ = fit_feature_space(
-        dataset, layout, TrainConfig(2, 3e-3, 8, seed=0), window=60, stride=5, max_windows=8, n_kernels=16
-    )
+    small, hidden = tiny_settings(ae_epochs=2, vae_epochs=2, cvae_epochs=1), TINY_HIDDEN
+    space, _ = fit_feature_space(dataset, layout, small)
     base = models / "du2022_style"
     space.save(base / "autoencoder.pt")
-    vae, shape, info, _ = fit_primitive_vae(dataset, layout, space, "walk_leftStance", TrainConfig(2, 1e-3, 4), **small)
+    vae, shape, info, _ = fit_primitive_vae(dataset, layout, space, "walk_leftStance", small, hidden)
     save_vae(base / "vae" / "walk_leftStance.pt", vae, shape, info)
-    cvae, cshape, cinfo, _ = fit_style_cvae(
-        dataset, layout, space, vae, "walk_leftStance", "old", TrainConfig(1, 1e-3, 4), alpha=1.0, **small
-    )
+    cvae, cshape, cinfo, _ = fit_style_cvae(dataset, layout, space, vae, "walk_leftStance", "old", small, hidden)
     save_vae(base / "cvae" / "walk_leftStance" / "old.pt", cvae, cshape, cinfo)
     save_rig(base / "rig", fit_rig(dataset, JM, 60))
 
@@ -488,7 +487,7 @@ def test_progress_bar_on_stderr(results, tmp_path, capsys):
 
 
 def test_model_rule_scripts_save_what_the_command_loads(tmp_path):
-    """Rules ma2010_model, du2022_graph_edges and style_rig as adapters: each writes a model
+    """Rules ma2010_model, du2022_graph_edges and du2022_style_rig as adapters: each writes a model
     file (npz + json) that the command's loaders read back."""
     import rule_scripts
     from rule_scripts import FakeSnakemake, Named, script
@@ -534,7 +533,7 @@ def test_model_rule_scripts_save_what_the_command_loads(tmp_path):
             "du2022_graph_edges",
             input=Named(metadata=str(tmp_path / "metadata.csv")),
             output=Named(model=str(edges), settings=str(edges.with_suffix(".json"))),
-            params=Named(options={"tree_samples": 100, "look_ahead": 1}, joint_map=None),
+            params=Named(settings={"synthesis": {"tree_samples": 100, "look_ahead": 1}}, joint_map=None),
         ),
         script("du2022_graph_edges").main,
     )
@@ -550,12 +549,12 @@ def test_model_rule_scripts_save_what_the_command_loads(tmp_path):
     run_rule(
         FakeSnakemake(
             tmp_path,
-            "style_rig",
+            "du2022_style_rig",
             input=Named(clips=str(tmp_path / "prep" / "clips.npz")),
             output=Named(model=str(rig), settings=str(rig.with_suffix(".json"))),
-            params=Named(options={"canonical_frames": 60}, joint_map=None),
+            params=Named(settings={"canonical_frames": 60}, joint_map=None),
         ),
-        script("style_rig").main,
+        script("du2022_style_rig").main,
     )
     loaded = load_rig(rig)
     assert loaded.layout.n_joints == 21 and set(loaded.fps) == {"walk_leftStance"} and loaded.n_frames == 60

@@ -146,6 +146,7 @@ def run_dry(tmp_path, config_text):
         ("run_datasets: [cmu]\n", "run_datasets names ['cmu'], not in datasets"),
         ("stability: {datasets: [s0, synthetic]}\n", "stability.datasets names ['s0'], not in datasets"),
         ("stability: {datasets: [synthetic]}\n", "stability.datasets needs at least 2 datasets"),
+        ("idle: {seed: 1}\n", "config key idle is now egges2004"),
     ],
 )
 def test_bad_config_stops_the_run_naming_the_key(tmp_path, text, expected):

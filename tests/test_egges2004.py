@@ -8,8 +8,8 @@ from egges2004_toy import toy_recording
 from motionvar.core import Motion, cmu_joint_map, cmu_skeleton
 from motionvar.core.quaternions import qangle, qidentity, quat_about_axis
 from motionvar.egges2004 import (
+    AnalysisSettings,
     CategoryGraph,
-    IdleSettings,
     PosturePCA,
     add_variations,
     analyse_recording,
@@ -38,10 +38,10 @@ RESTS = [4, 3, 5, 3, 6, 4, 3]
 @pytest.fixture(scope="module")
 def toy():
     recs = [toy_recording(SEQ, RESTS, seed=s) for s in range(2)]
-    pca = PosturePCA.fit([m for m, _ in recs])
+    pca = PosturePCA.fit([m for m, _ in recs], 0.01)
     jm = cmu_joint_map()
     analysed = [analyse_recording(m, pca, jm, f"r{i}") for i, (m, _) in enumerate(recs)]
-    db = build_database(analysed, pca, IdleSettings(), "s1")
+    db = build_database(analysed, pca, AnalysisSettings(), "s1", 0)
     return recs, pca, analysed, db
 
 
@@ -71,7 +71,7 @@ def test_continuous_rotvecs_do_not_jump_through_pi():
 
 def test_pca_with_a_joint_subset_keeps_the_others_at_their_mean():
     m, _ = toy_recording(["left", "right"], [2, 2])
-    pca = PosturePCA.fit([m], joints=[0, 1, 2])
+    pca = PosturePCA.fit([m], 0.01, joints=[0, 1, 2])
     rot, root = pca.to_rotations(pca.project(m))
     assert rot.shape == m.rotations.shape and np.allclose(root, m.root_pos)
     assert np.allclose(rot[:, 5:, 0], 1.0)  # identity rotations in the toy data
@@ -80,10 +80,10 @@ def test_pca_with_a_joint_subset_keeps_the_others_at_their_mean():
 def test_pca_rejects_bad_input():
     m, _ = toy_recording(["left", "right"], [2, 2])
     with pytest.raises(ValueError, match="no motions"):
-        PosturePCA.fit([])
+        PosturePCA.fit([], 0.01)
     with pytest.raises(ValueError, match="joint indices"):
-        PosturePCA.fit([m], joints=[40])
-    pca = PosturePCA.fit([m], joints=[0, 1])
+        PosturePCA.fit([m], 0.01, joints=[40])
+    pca = PosturePCA.fit([m], 0.01, joints=[0, 1])
     small = Motion(
         cmu_skeleton().__class__(("a",), np.array([-1]), np.zeros((1, 3))), np.zeros((3, 3)), qidentity((3, 1)), 30.0
     )
@@ -208,7 +208,7 @@ def test_parse_postures_checks_items():
 def test_database_without_rests_is_an_error(toy):
     _, pca, analysed, _ = toy
     with pytest.raises(ValueError, match="no resting segment"):
-        build_database(analysed, pca, IdleSettings(rest_speed=1e-12), "s9")
+        build_database(analysed, pca, AnalysisSettings(rest_speed=1e-12), "s9", 0)
 
 
 # --- Sec. 6: small variations --------------------------------------------------------------
@@ -229,14 +229,14 @@ def test_find_extrema_alternate_and_respect_epsilon():
 def test_variation_model_generates_curves_like_the_data():
     t = np.arange(600) / 30.0
     segs = [np.stack([np.sin(2 * np.pi * 0.3 * t + ph), 0.1 * np.sin(2 * np.pi * 0.7 * t)], 1) for ph in (0, 1, 2)]
-    model = fit_variation_model(segs, [0, 1], fps=30.0, eps_sd=0.5, n_clusters=3)
+    model = fit_variation_model(segs, [0, 1], fps=30.0, eps_sd=0.5, n_clusters=3, seed=0)
     a = model.generate(900, 30.0, np.random.default_rng(5))
     b = model.generate(900, 30.0, np.random.default_rng(5))
     assert a.shape == (900, 2) and np.array_equal(a, b) and np.allclose(a[0], 0)
     assert np.abs(a[:, 0]).max() <= 1.05 and np.abs(a[:, 1]).max() <= 0.106
     assert a[:, 0].std() > 0.3
     with pytest.raises(ValueError, match="n_clusters"):
-        fit_variation_model(segs, [0], 30.0, 0.5, 0)
+        fit_variation_model(segs, [0], 30.0, 0.5, 0, 0)
 
 
 # --- Sec. 5.4, 7: synthesis and integration -----------------------------------------------
@@ -304,23 +304,23 @@ def test_blend_with_masks_and_add_variations(toy):
 
 
 def test_window_features_sets():
-    from motionvar.egges2004.evaluations.sec8_identification import window_features
+    from motionvar.egges2004.evaluations.identification import window_features
 
     rng = np.random.default_rng(0)
     pcs, lam = rng.normal(size=(1200, 12)), rng.uniform(0.3, 0.7, 1200)
-    full = window_features(pcs, lam, 30.0, 10.0, n_pcs=5)
-    dyn = window_features(pcs, lam, 30.0, 10.0, n_pcs=5, feature_set="dynamics")
+    full = window_features(pcs, lam, 30.0, 10.0, n_pcs=5, margin=0.1)
+    dyn = window_features(pcs, lam, 30.0, 10.0, n_pcs=5, margin=0.1, feature_set="dynamics")
     assert full.shape == (4, 5 + 5 + 1 + 3 + 1 + 9) and dyn.shape == (4, 5 + 1 + 9)
     assert np.all(np.isfinite(full))
     with pytest.raises(ValueError, match="feature_set"):
-        window_features(pcs, lam, 30.0, 10.0, 5, feature_set="mean")
+        window_features(pcs, lam, 30.0, 10.0, 5, 0.1, feature_set="mean")
     with pytest.raises(ValueError, match="window"):
-        window_features(pcs[:100], lam[:100], 30.0, 10.0, 5)
+        window_features(pcs[:100], lam[:100], 30.0, 10.0, 5, 0.1)
 
 
 def test_window_best_match_sees_a_loop():
     from motionvar.egges2004.baselines import loop_frames
-    from motionvar.egges2004.evaluations.sec6_repetition import window_best_match
+    from motionvar.egges2004.evaluations.repetition import window_best_match
 
     rng = np.random.default_rng(0)
     clip = np.cumsum(rng.normal(size=(130, 3)), axis=0)
@@ -332,7 +332,7 @@ def test_window_best_match_sees_a_loop():
 
 
 def test_junction_steps():
-    from motionvar.egges2004.evaluations.sec5_4_fitting import all_steps, junction_steps
+    from motionvar.egges2004.evaluations.fitting import all_steps, junction_steps
 
     x = np.concatenate([np.zeros(5), np.arange(1, 6) * 2.0])[:, None]
     step, accel = junction_steps(x, np.array([4, 0, 9]), np.ones(1))

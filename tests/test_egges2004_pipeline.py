@@ -16,25 +16,26 @@ from matplotlib.figure import Figure
 
 from motionvar.claims import EvaluationResult
 from motionvar.core import cmu_joint_map
-from motionvar.egges2004 import IdleSettings, figures
-from motionvar.egges2004.evaluations import (
-    FittingParams,
-    IdentificationParams,
-    RepetitionParams,
-    SpeedParams,
-    category_check,
-    fitting,
-    identification,
-    idle_animation,
-    pc_extrema,
-    repetition,
-    speed,
-)
+from motionvar.egges2004 import figures
+from motionvar.egges2004.evaluations import category_check, idle_animation, pc_extrema
+from motionvar.egges2004.evaluations.fitting import FIGURE_BALANCE_S, fitting
+from motionvar.egges2004.evaluations.identification import identification
+from motionvar.egges2004.evaluations.repetition import repetition
+from motionvar.egges2004.evaluations.speed import speed
 from motionvar.egges2004.pipeline import fit_idle_model, idle_clips, model_recordings, split_clips
+from motionvar.egges2004.settings import Egges2004Settings
 from motionvar.egges2004.storage import load_idle_model, save_idle_model
 from motionvar.io import load_dataset
 
 ROOT = Path(__file__).resolve().parents[1]
+
+# the toy model: 4 varied PCs (the toy recordings are short)
+SETTINGS = Egges2004Settings.from_dict({"analysis": {"variation_pcs": 4}})
+
+
+def with_(section, **changes):
+    """SETTINGS with ``changes`` in one subsection."""
+    return SETTINGS.replace(**{section: getattr(SETTINGS, section).replace(**changes)})
 
 
 @pytest.fixture(autouse=True)
@@ -48,7 +49,7 @@ def fitted(tmp_path_factory):
     folder = toy_dataset(tmp_path_factory.mktemp("prep"))
     dataset = load_dataset(folder)
     train, test = split_clips(idle_clips(dataset, "prep"), 1)
-    model, recordings = fit_idle_model(train, test, cmu_joint_map(), IdleSettings(variation_pcs=4), seed=0)
+    model, recordings = fit_idle_model(train, test, cmu_joint_map(), SETTINGS)
     return folder, dataset, train, model, recordings
 
 
@@ -92,7 +93,7 @@ def test_model_has_one_database_per_subject_and_round_trips(fitted, tmp_path):
 
 def test_categories_match_the_truth_and_draw(fitted):
     _, _, train, model, _ = fitted
-    result = category_check(model, train, figure_subjects=2)
+    result = category_check(model, train, SETTINGS.replace(figure_subjects=2))
     assert isinstance(result, EvaluationResult) and result.claims == []
     assert result.table["category_accuracy"].tolist() == [1.0, 1.0, 1.0]
     assert list(result.figure["graphs"]) == ["01", "02"]
@@ -129,9 +130,8 @@ def test_evaluations_on_toy_subjects(fitted):
     _, dataset, _, model, recordings = fitted
     jm = cmu_joint_map()
     _, held = model_recordings(model, dataset, jm, "prep")
-    result = identification(
-        model, recordings, held, jm, IdentificationParams(window_s=5.0, feature_pcs=4, generated_s=20.0), 0.1, 0
-    )
+    settings = with_("identification", window_s=5.0, feature_pcs=4, generated_s=20.0)
+    result = identification(model, recordings, held, jm, settings)
     table, (claim,) = result.table, result.claims
     assert set(table["source"]) == {"recorded (held out)", "generated (Egges 2004)", "Perlin noise on PCs"}
     assert (
@@ -145,8 +145,8 @@ def test_evaluations_on_toy_subjects(fitted):
     check_value_bound(claim)  # reproduced needs generated >= Perlin (and above chance)
     assert isinstance(figures.draw_identification(result), Figure)
 
-    params = RepetitionParams(sequence_s=30.0, window_s=3.0, fps=10.0, loop_clip_s=5.0)
-    result = repetition(model, recordings, params, 0)
+    params = with_("repetition", sequence_s=30.0, window_s=3.0, fps=10.0, loop_clip_s=5.0)
+    result = repetition(model, recordings, params)
     pooled, (claim,) = result.figure["pooled"], result.claims
     assert pooled["looped recorded clip"].min() > 0.99 and pooled["looped rest variations"].min() > 0.99
     assert np.median(pooled["generated variations (Sec. 6)"]) < 0.99
@@ -159,20 +159,20 @@ def test_evaluations_on_toy_subjects(fitted):
     assert isinstance(figures.draw_repetition(result), Figure)
 
     # windows longer than half the recorded rests: those are left out, the rest is still measured
-    params = RepetitionParams(sequence_s=60.0, window_s=25.0, fps=10.0, loop_clip_s=5.0)
-    result = repetition(model, recordings, params, 0)
+    params = with_("repetition", sequence_s=60.0, window_s=25.0, fps=10.0, loop_clip_s=5.0)
+    result = repetition(model, recordings, params)
     short = result.table[result.table["source"] == "recorded rest variations"]
     left_out = short["windows"] == 0
     assert left_out.any() and short.loc[left_out, "median_best_ncc"].isna().all()
     assert len(result.figure["pooled"]["generated variations (Sec. 6)"]) == 3 * (60 // 25)
     assert f"{(~left_out).sum()} of them with recorded resting segments" in result.claims[0].note
-    params = RepetitionParams(sequence_s=60.0, window_s=29.0, fps=10.0, loop_clip_s=5.0)
-    result = repetition(model, recordings, params, 0)
+    params = with_("repetition", sequence_s=60.0, window_s=29.0, fps=10.0, loop_clip_s=5.0)
+    result = repetition(model, recordings, params)
     assert len(result.figure["pooled"]["recorded rest variations"]) == 0
     assert result.claims[0].verdict in ("partial", "not reproduced")
     assert np.isnan(result.claims[0].bound)  # no recorded rest to compare with
 
-    result = fitting(model, FittingParams(pairs=4, sequence_s=20.0, between_s=10.0, figure_balance_s=10.0), 0)
+    result = fitting(model, with_("fitting", pairs=4, sequence_s=20.0, between_s=10.0))
     assert result.table[["max_start_error_cm", "max_end_error_cm"]].to_numpy().max() < 1e-6
     assert result.claims[0].verdict in ("reproduced", "partial")
     linear = result.table[result.table["ramp"] == "linear"]
@@ -182,10 +182,10 @@ def test_evaluations_on_toy_subjects(fitted):
     assert f["subject"] == "01" and set(f["fitted"]) == {"linear", "smoothstep"}
     for curve in f["fitted"].values():  # Fig. 4: the fitted shift starts at p and ends at q
         assert np.isclose(curve[0], f["p"]) and np.isclose(curve[-1], f["q"])
-    assert len(f["balance"]) == int(round(10.0 * f["fps"])) + 1
+    assert len(f["balance"]) == int(round(FIGURE_BALANCE_S * f["fps"])) + 1
     assert isinstance(figures.draw_fitting(result), Figure)
 
-    result = speed(model, SpeedParams(sequence_s=10.0, repeats=1, subjects=1), 0)
+    result = speed(model, with_("speed", sequence_s=10.0, repeats=1, subjects=1))
     assert len(result.table) == 1 and result.table["realtime_ratio"].iloc[0] > 1
     assert result.claims[0].verdict == "reproduced"
     assert result.claims[0].value == result.table["realtime_ratio"].min() and result.claims[0].unit == "ratio"
@@ -195,19 +195,20 @@ def test_evaluations_on_toy_subjects(fitted):
 
 def test_extrema_figure_and_animation(fitted):
     _, _, _, model, recordings = fitted
-    data = pc_extrema(model, recordings, pc=1, eps_sd=0.5, subjects=2)
+    data = pc_extrema(model, recordings, SETTINGS.replace(figure_subjects=2))
     assert [p["subject"] for p in data["panels"]] == ["01", "02"] and data["pc"] == 0
     for p in data["panels"]:
         assert len(p["extrema"]) >= 2 and np.all(np.diff(p["extrema"]) > 0) and len(p["is_max"]) == len(p["extrema"])
     assert isinstance(figures.draw_pc_extrema(data), Figure)
-    motions, labels = idle_animation(model, 2, 1.0, seed=0)
+    motions, labels = idle_animation(model, with_("animation", seconds=1.0).replace(figure_subjects=2))
     assert labels == ["subject 01 (generated)", "subject 02 (generated)"]
     assert [m.n_frames for m in motions] == [int(round(model.databases["01"].fps)) + 1] * 2
 
 
-def test_config_sections_fill_the_library_options():
-    """The rule scripts pass config.egges2004's sections to the library's option records: the
-    schema's defaults (plain data) must construct them."""
+def test_settings_from_the_schema_defaults_are_the_class_defaults():
+    """The rule scripts build Egges2004Settings from config.egges2004, the schema filling
+    what a config leaves out: the schema's defaults (plain data) build the class's defaults,
+    and an unknown or misplaced key is named with its section."""
 
     def defaults(schema):
         if schema.get("type") == "object" and "properties" in schema:
@@ -216,8 +217,7 @@ def test_config_sections_fill_the_library_options():
 
     opts = defaults(yaml.safe_load((ROOT / "config" / "schema.yaml").read_text())["properties"]["egges2004"])
     assert json.dumps(opts)
-    IdleSettings(**opts["analysis"])
-    IdentificationParams(**opts["identification"], perlin_frequency_hz=opts["perlin_frequency_hz"])
-    RepetitionParams(**opts["repetition"], perlin_frequency_hz=opts["perlin_frequency_hz"])
-    FittingParams(**opts["fitting"])
-    SpeedParams(**opts["speed"])
+    assert Egges2004Settings.from_dict(opts) == Egges2004Settings()
+    assert Egges2004Settings.from_dict(opts).to_dict() == opts
+    with pytest.raises(ValueError, match="egges2004.repetition.perlin_frequency_hz"):
+        Egges2004Settings.from_dict({"repetition": {"perlin_frequency_hz": 1.0}})

@@ -48,6 +48,7 @@ from motionvar.du2022.fda.evaluations import (
 )
 from motionvar.du2022.fda.evaluations.table3_1 import smallest_dim
 from motionvar.du2022.fda.figures import draw_fig3_9, draw_fig3_10, draw_fig3_11, draw_table3_1
+from motionvar.du2022.fda.settings import BasisSettings, FdaSettings
 
 
 def chain_skeleton(n_joints=5, scale=1.0):
@@ -568,16 +569,16 @@ def test_canonical_primitives(prep_dataset, canonical_dataset):
 
 
 def test_basis_sizes_and_fig3_9(canonical_dataset):
-    rmse, chosen = choose_basis_sizes(canonical_dataset, [4, 6, 8, 10], 0.05)
+    rmse, chosen = choose_basis_sizes(canonical_dataset, BasisSettings(n_basis=(4, 6, 8, 10)))
     assert list(chosen["primitive"]) == ["pick_reach", "walk_leftStance"]
     assert len(rmse) == 8 and rmse.groupby("primitive")["chosen"].sum().tolist() == [1, 1]
     assert n_basis_of(chosen, "pick_reach") == int(chosen["n_basis"].iloc[0])
     with pytest.raises(ValueError, match="n_basis.csv: no basis size for primitive 'run'"):
         n_basis_of(chosen, "run", "n_basis.csv")
     with pytest.raises(ValueError, match="every K exceeds"):
-        choose_basis_sizes(canonical_dataset, [500], 0.05)
+        choose_basis_sizes(canonical_dataset, BasisSettings(n_basis=(500,)))
 
-    result = evaluate_fig3_9(rmse, 0.05)
+    result = evaluate_fig3_9(rmse, FdaSettings())
     table = result.table
     assert len(table) == 8 + 8 and set(table.loc[table["primitive"] == "(all)", "behaviour"]) == {"pick", "walk"}
     # pooled RMSE of a behaviour with one primitive is that primitive's RMSE
@@ -595,18 +596,20 @@ def test_basis_sizes_and_fig3_9(canonical_dataset):
 @pytest.fixture(scope="module")
 def fda_curves(canonical_dataset):
     """The Fig. 3.10-3.11 measurements of both primitives, in two parts each as the pipeline."""
-    options = dict(
-        dims=[1, 3, 100],
-        latent_dim=3,
-        seed=0,
-        sfpca={"max_iter": 3, "eval_frames_per_basis": 2},
-        gplvm={"n_inducing": 6, "max_iter": 8, "noise_init": 0.01, "discriminative_sigma2": 1.0, "n_clusters": 3},
+    settings = FdaSettings.from_dict(
+        {
+            "seed": 0,
+            "reconstruction": {"dims": [1, 3, 100]},
+            "latent": {"n_components": 3},
+            "sfpca": {"max_iter": 3, "eval_frames_per_basis": 2},
+            "gplvm": {"n_inducing": 6, "max_iter": 8, "noise_init": 0.01, "discriminative_sigma2": 1.0},
+        }
     )
     out = []
     for primitive in ("walk_leftStance", "pick_reach"):
         fd, meta = functional_primitive(canonical_dataset, primitive, 6)
         for methods in (["fpca", "normalized_fpca", "sfpca"], ["gplvm"]):
-            out.append(reconstruction_curves(fd, meta["variant"], primitive, methods, **options))
+            out.append(reconstruction_curves(fd, meta["variant"], primitive, methods, settings))
     return out
 
 
@@ -623,12 +626,12 @@ def test_reconstruction_curves(fda_curves):
     assert len(table) == 2 * 4 * 2 and set(table["method"]) == {"fpca", "normalized_fpca", "sfpca", "gplvm"}
     fd = FunctionalMotions.from_motions(make_clips(4)[0], n_basis=6)
     with pytest.raises(ValueError, match="dims: none <= 3"):
-        reconstruction_curves(fd, ["a"] * 4, "tiny", ["fpca"], [5], 2, 0, {}, {})
+        tiny = FdaSettings.from_dict({"reconstruction": {"dims": [5]}, "latent": {"n_components": 2}})
+        reconstruction_curves(fd, ["a"] * 4, "tiny", ["fpca"], tiny)
 
 
 def test_fig3_10(fda_curves):
-    methods = ["fpca", "normalized_fpca", "sfpca", "gplvm"]
-    result = evaluate_fig3_10(fda_curves, methods, ["walk_leftStance", "pick_reach"], "pick_reach")
+    result = evaluate_fig3_10(fda_curves, FdaSettings())
     assert len(result.table) == 16 and "fit_seconds" in result.table
     ids = [c.claim_id.split(".")[-1] for c in result.claims]
     assert ids == [
@@ -644,7 +647,8 @@ def test_fig3_10(fda_curves):
     assert result.claims[1].bound == pytest.approx(0.5)  # "most": more than half of the cases
     for c in result.claims:
         check_value_bound(c)
-    no_pick = evaluate_fig3_10(fda_curves[:2], methods, ["walk_leftStance"], "pick_reach")
+    walk_only = FdaSettings.from_dict({"reconstruction": {"primitives": ["walk_leftStance"]}})
+    no_pick = evaluate_fig3_10(fda_curves[:2], walk_only)
     assert len(no_pick.claims) == 3
     fig = draw_fig3_10(result)
     assert len(fig.axes) == 4
@@ -652,10 +656,7 @@ def test_fig3_10(fda_curves):
 
 
 def test_fig3_11(fda_curves):
-    methods = ["fpca", "normalized_fpca", "sfpca", "gplvm"]
-    result = evaluate_fig3_11(
-        fda_curves, methods, ["walk_leftStance", "pick_reach"], "pick_reach", knn=3, tsne_perplexity=30.0, seed=0
-    )
+    result = evaluate_fig3_11(fda_curves, FdaSettings.from_dict({"latent": {"knn": 3, "tsne_perplexity": 30.0}}))
     table = result.table
     assert list(table.columns) == ["primitive", "method", "latent_dim", "n_clips", "silhouette", "knn3_accuracy"]
     assert len(table) == 8 and table["latent_dim"].eq(3).all()
@@ -688,10 +689,14 @@ def test_smallest_dim_bisection():
 
 
 def test_table3_1(canonical_dataset):
-    _, chosen = choose_basis_sizes(canonical_dataset, [4, 6], 0.05)
-    result = evaluate_table3_1(
-        canonical_dataset, chosen, {"max_iter": 3}, reference_components=3, max_components=50, observation_error_cm=1.0
+    _, chosen = choose_basis_sizes(canonical_dataset, BasisSettings(n_basis=(4, 6)))
+    settings = FdaSettings.from_dict(
+        {
+            "sfpca": {"max_iter": 3},
+            "table": {"reference_components": 3, "max_components": 50, "observation_error_cm": 1.0},
+        }
     )
+    result = evaluate_table3_1(canonical_dataset, chosen, settings)
     table = result.table.set_index("primitive")
     assert list(table.index) == ["pick_reach", "walk_leftStance"] and result.claims == []
     assert table.loc["pick_reach", "clips"] == 14 and table.loc["pick_reach", "published_dims"] == 45

@@ -22,10 +22,13 @@ from motionvar.du2022.fda import SFPCA, canonical_primitives, choose_basis_sizes
 from motionvar.du2022.fda.evaluations import evaluate_table3_1, reconstruction_curves
 from motionvar.du2022.fda.evaluations.curves import fitted_sfpca
 from motionvar.du2022.fda.evaluations.table3_1 import fit_reference_sfpca, reference_dims
+from motionvar.du2022.fda.settings import BasisSettings, FdaSettings, TableSettings
 from motionvar.du2022.fda.sfpca import fk_joint_major
 from motionvar.io import save_dataset
 
 SFPCA_OPTIONS = {"max_iter": 3, "eval_frames_per_basis": 2}
+TABLE_OPTIONS = {"reference_components": 4, "max_components": 50, "observation_error_cm": 1.0}
+SETTINGS = FdaSettings.from_dict({"sfpca": SFPCA_OPTIONS, "table": TABLE_OPTIONS})
 
 
 @pytest.fixture(scope="module")
@@ -48,7 +51,7 @@ def canonical():
 
 @pytest.fixture(scope="module")
 def chosen(canonical):
-    return choose_basis_sizes(canonical, [4, 6], 0.05)[1]
+    return choose_basis_sizes(canonical, BasisSettings(n_basis=(4, 6)))[1]
 
 
 @pytest.fixture(scope="module")
@@ -57,14 +60,14 @@ def saved_models(canonical, chosen, tmp_path_factory):
     folder = tmp_path_factory.mktemp("sfpca")
     for _, c in chosen.iterrows():
         fd, _ = functional_primitive(canonical, c["primitive"], int(c["n_basis"]))
-        fit_reference_sfpca(fd, SFPCA_OPTIONS, 4, 50).save(folder / f"{c['primitive']}.npz")
+        fit_reference_sfpca(fd, SETTINGS).save(folder / f"{c['primitive']}.npz")
     return folder
 
 
 def test_reference_dims():
-    assert reference_dims(1366, 20, 60) == (60, 20)
-    assert reference_dims(12, 20, 60) == (11, 11)  # both capped at clips - 1
-    assert reference_dims(100, 20, 10) == (10, 10)
+    assert reference_dims(1366, TableSettings()) == (60, 20)
+    assert reference_dims(12, TableSettings()) == (11, 11)  # both capped at clips - 1
+    assert reference_dims(100, TableSettings(max_components=10)) == (10, 10)
 
 
 def test_saved_sfpca_keeps_its_options_and_fit_facts(canonical, tmp_path):
@@ -94,24 +97,26 @@ def test_saved_sfpca_keeps_its_options_and_fit_facts(canonical, tmp_path):
 
 
 def test_table3_1_from_saved_models_equals_fitting_there(canonical, chosen, saved_models):
-    fitted_here = evaluate_table3_1(canonical, chosen, SFPCA_OPTIONS, 4, 50, 1.0)
+    fitted_here = evaluate_table3_1(canonical, chosen, SETTINGS)
     models = {p.stem: SFPCA.load(p) for p in saved_models.glob("*.npz")}
-    from_files = evaluate_table3_1(canonical, chosen, SFPCA_OPTIONS, 4, 50, 1.0, sfpca_models=models)
+    from_files = evaluate_table3_1(canonical, chosen, SETTINGS, sfpca_models=models)
     pd.testing.assert_frame_equal(from_files.table, fitted_here.table, check_exact=True)
     assert from_files.figure["curves"] == fitted_here.figure["curves"]
     # a primitive without a given model is fitted there
-    one = evaluate_table3_1(
-        canonical, chosen, SFPCA_OPTIONS, 4, 50, 1.0, sfpca_models={"walk_leftStance": models["walk_leftStance"]}
-    )
+    one = evaluate_table3_1(canonical, chosen, SETTINGS, sfpca_models={"walk_leftStance": models["walk_leftStance"]})
     pd.testing.assert_frame_equal(one.table, fitted_here.table, check_exact=True)
     with pytest.raises(ValueError, match="fitted at d = 4, Table 3.1's reference dimension is 3"):
-        evaluate_table3_1(canonical, chosen, SFPCA_OPTIONS, 3, 50, 1.0, sfpca_models=models)
+        at_3 = SETTINGS.replace(table=SETTINGS.table.replace(reference_components=3))
+        evaluate_table3_1(canonical, chosen, at_3, sfpca_models=models)
 
 
 def test_curves_reuse_the_reference_fit(canonical, chosen, saved_models):
     n_basis = int(chosen.set_index("primitive").loc["walk_leftStance", "n_basis"])
     fd, meta = functional_primitive(canonical, "walk_leftStance", n_basis)
-    args = (fd, meta["variant"], "walk_leftStance", ["sfpca"], [1, 2, 4], 4, 0, SFPCA_OPTIONS, {})
+    settings = FdaSettings.from_dict(
+        {"reconstruction": {"dims": [1, 2, 4]}, "latent": {"n_components": 4}, "sfpca": SFPCA_OPTIONS}
+    )
+    args = (fd, meta["variant"], "walk_leftStance", ["sfpca"], settings)
     fitted_here = reconstruction_curves(*args)
     model = SFPCA.load(saved_models / "walk_leftStance.npz")
     reused = reconstruction_curves(*args, sfpca_models=[model])
@@ -121,9 +126,9 @@ def test_curves_reuse_the_reference_fit(canonical, chosen, saved_models):
         else:
             assert np.array_equal(reused[key], value), key
     with pytest.raises(ValueError, match="fitted with other options: max_iter 3 \\(wanted 5\\)"):
-        fitted_sfpca(model, fd, {**SFPCA_OPTIONS, "max_iter": 5})
+        fitted_sfpca(model, fd, settings.sfpca.replace(max_iter=5))
     with pytest.raises(ValueError, match="fitted on other clips"):
-        fitted_sfpca(model, fd.subset(np.arange(12)), SFPCA_OPTIONS)
+        fitted_sfpca(model, fd.subset(np.arange(12)), settings.sfpca)
 
 
 def test_joint_major_fk_is_bit_identical_to_fk_torch():
@@ -166,7 +171,7 @@ def test_rule_scripts_fit_once_and_read_the_file(canonical, chosen, tmp_path):
             "du2022_fda_sfpca",
             input=Named(**inputs),
             output=out,
-            params=Named(options={"sfpca": SFPCA_OPTIONS, "reference_components": 4, "max_components": 50}),
+            params=Named(settings=SETTINGS.to_dict()),
             wildcards=Named(dataset="test", primitive=primitive),
         )
         rule_scripts.run(sm, rule_scripts.script("du2022_fda_sfpca").main)
@@ -178,16 +183,9 @@ def test_rule_scripts_fit_once_and_read_the_file(canonical, chosen, tmp_path):
         "du2022_table3_1",
         input=Named(**inputs, sfpca=models),
         output=out,
-        params=Named(
-            options={
-                "sfpca": SFPCA_OPTIONS,
-                "reference_components": 4,
-                "max_components": 50,
-                "observation_error_cm": 1.0,
-            }
-        ),
+        params=Named(settings=SETTINGS.to_dict()),
     )
-    expected = evaluate_table3_1(canonical, chosen, SFPCA_OPTIONS, 4, 50, 1.0).table
+    expected = evaluate_table3_1(canonical, chosen, SETTINGS).table
     rule_scripts.run(sm, rule_scripts.script("du2022_table3_1").main)
     pd.testing.assert_frame_equal(
         pd.read_csv(out.table), pd.read_csv(pd.io.common.StringIO(expected.to_csv(index=False, float_format="%.6g")))
@@ -199,7 +197,13 @@ def test_rule_scripts_fit_once_and_read_the_file(canonical, chosen, tmp_path):
         input=Named(**inputs, sfpca=models[2:4]),
         output=Named(curves=str(curves)),
         params=Named(
-            options={"seed": 0, "dims": [2, 4], "n_components": 4, "sfpca": SFPCA_OPTIONS, "gplvm": {}},
+            settings={
+                "seed": 0,
+                "reconstruction": {"dims": [2, 4]},
+                "latent": {"n_components": 4},
+                "sfpca": SFPCA_OPTIONS,
+                "table": TABLE_OPTIONS,
+            },
             methods=["sfpca"],
         ),
         wildcards=Named(dataset="test", primitive="walk_leftStance", part="pca"),

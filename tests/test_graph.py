@@ -24,7 +24,7 @@ from motionvar.du2022.graph import (
     SpacePartitioningTree,
     StepChain,
     StepGoal,
-    WalkSettings,
+    SynthesisSettings,
     brute_force,
     concatenate_steps,
     follow_path,
@@ -38,7 +38,6 @@ from motionvar.du2022.graph import (
     select_gmm,
 )
 from motionvar.du2022.graph.evaluations import (
-    SearchSettings,
     coverage,
     evaluate_fig4_9,
     evaluate_fig4_10,
@@ -52,9 +51,11 @@ from motionvar.du2022.graph.evaluations import (
 from motionvar.du2022.graph.figures import animate_fig4_10, draw_fig4_9, draw_fig4_10, draw_fig4_12, draw_sec4_6_1
 from motionvar.du2022.graph.kinematics import ancestors, chain_fk
 from motionvar.du2022.graph.morphable_graph import _to_local
+from motionvar.du2022.graph.settings import GraphSettings, SearchSettings
 from motionvar.io import load_dataset, save_dataset
 
 OPT = PrimitiveOptions(n_basis=8, n_components=5, gmm_components=(1, 3), sfpca_max_iter=0)
+GREEDY = SynthesisSettings(max_steps=6, max_nfev=30, look_ahead=1, joint_steps=0)  # T = 1, no line 9
 
 
 @pytest.fixture(scope="module")
@@ -274,7 +275,7 @@ def test_beam_from_the_evaluation_budget(prim, joints):
         st = SearchSettings(
             n_samples=400, n_queries=3, leaf_size=8, n_random=10, beams=(1, 2, 3), max_evaluations=budget
         )
-        table, _ = search_comparison(prim, joints["right_hand"], pose, st)
+        table, _ = search_comparison(prim, joints["right_hand"], pose, st, seed=0)
         km = table[table["method"] == "kmeans"]
         mean = km.groupby("beam")["n_evals"].mean()
         chosen = int(km.loc[km["selected"], "beam"].iloc[0])
@@ -294,12 +295,12 @@ def test_map_optimisation_reaches_constraint(prim, joints):
     last = prim.n_frames - 1
     c = random_constraints(prim, "position", 1, [joints["right_hand"]], last, 11)[0]
     start = prim.gmm_.means_[0]
-    fit = optimize_map(prim, [c], start, likelihood_weight=0.0)
+    fit = optimize_map(prim, [c], start, likelihood_weight=0.0, method="lm", max_nfev=200)
     assert fit.errors_after[0] < 0.05 * fit.errors_before[0] + 1e-3
-    fit_trf = optimize_map(prim, [c], start, likelihood_weight=1.0, method="trf")
+    fit_trf = optimize_map(prim, [c], start, likelihood_weight=1.0, method="trf", max_nfev=200)
     assert fit_trf.errors_after[0] < fit_trf.errors_before[0]
     with pytest.raises(ValueError, match="method"):
-        optimize_map(prim, [c], start, method="bfgs")
+        optimize_map(prim, [c], start, 1.0, "bfgs", 200)
 
 
 def test_graph_from_metadata():
@@ -340,7 +341,7 @@ def test_follow_straight_path(prim, right):
     g = MorphableGraph.from_metadata(meta, prims)
     trees = {k: SpacePartitioningTree(p.sample(300, 0), "kmeans", leaf_size=8) for k, p in prims.items()}
     path = Path2D(np.array([[0.0, 0.0], [200.0, 0.0]]))
-    steps = follow_path(g, trees, path, cmu_joint_map(), WalkSettings(max_steps=6, max_nfev=30))
+    steps = follow_path(g, trees, path, cmu_joint_map(), GREEDY)
     names = [s.primitive for s in steps]
     assert len(names) >= 2 and all(a != b for a, b in zip(names[:-1], names[1:]))  # the graph alternates stances
     walk = concatenate_steps(steps)
@@ -395,7 +396,7 @@ def test_joint_optimisation_never_worse_than_greedy(prim, right, corner):
         ("last2", dict(joint_steps=2)),
         ("ahead", dict(look_ahead=2)),
     ):
-        runs[label] = follow_path(g, trees, path, jm, WalkSettings(max_steps=6, max_nfev=30, **kw))
+        runs[label] = follow_path(g, trees, path, jm, GREEDY.replace(**kw))
     greedy, line9 = runs["greedy"], runs["line9"]
     assert [s.primitive for s in line9] == [s.primitive for s in greedy]  # line 9 keeps the graph walk
     js = tuple(jm.index(prim.skeleton, k) for k in ("hips", "left_hip", "right_hip"))
@@ -414,22 +415,22 @@ def test_joint_optimisation_never_worse_than_greedy(prim, right, corner):
     for v in runs.values():  # steps still start where the one before ends
         for a, b in zip(v[:-1], v[1:]):
             assert np.linalg.norm(b.motion.root_pos[0, [0, 2]] - a.motion.root_pos[-1, [0, 2]]) < 5.0
-    again = follow_path(g, trees, path, jm, WalkSettings(max_steps=6, max_nfev=30, look_ahead=2, joint_steps="all"))
-    twice = follow_path(g, trees, path, jm, WalkSettings(max_steps=6, max_nfev=30, look_ahead=2, joint_steps="all"))
+    again = follow_path(g, trees, path, jm, GREEDY.replace(look_ahead=2, joint_steps="all"))
+    twice = follow_path(g, trees, path, jm, GREEDY.replace(look_ahead=2, joint_steps="all"))
     assert all(np.array_equal(a.fit.latent, b.fit.latent) for a, b in zip(again, twice))  # the same walk every run
-    res = optimize_chain(chain, [s.fit.latent for s in greedy], max_nfev=5)
+    res = optimize_chain(chain, [s.fit.latent for s in greedy], 1.0, "lm", max_nfev=5)
     assert res.errors_after.shape == (len(greedy), 2) and len(res.latents) == len(greedy)
     with pytest.raises(ValueError, match="start vectors"):
-        optimize_chain(chain, [greedy[0].fit.latent])
+        optimize_chain(chain, [greedy[0].fit.latent], 1.0, "lm", 100)
     with pytest.raises(ValueError, match="joint_steps"):
-        WalkSettings(joint_steps="some")
+        SynthesisSettings(joint_steps="some")
 
 
 def test_coverage_measures_overlap():
     rng = np.random.default_rng(0)
     samples = rng.normal(size=(20000, 2))
-    cov_same, _, data = coverage(samples, rng.normal(size=(400, 2)))
-    cov_far, _, _ = coverage(samples, rng.normal(4.0, 1.0, size=(400, 2)))
+    cov_same, _, data = coverage(samples, rng.normal(size=(400, 2)), 0.95, 128)
+    cov_far, _, _ = coverage(samples, rng.normal(4.0, 1.0, size=(400, 2)), 0.95, 128)
     assert 0.88 <= cov_same <= 1.0 and cov_far < 0.3
     assert data["density"].shape == (128, 128)
 
@@ -440,7 +441,7 @@ def test_search_comparison_table(prim, joints):
         for k in ("hips", "left_shoulder", "right_shoulder", "left_hand", "right_hand", "left_ankle", "right_ankle")
     ]
     table, trees = search_comparison(
-        prim, joints["right_hand"], pose, SearchSettings(n_samples=500, n_queries=4, leaf_size=8, n_random=20)
+        prim, joints["right_hand"], pose, SearchSettings(n_samples=500, n_queries=4, leaf_size=8, n_random=20), seed=0
     )
     assert set(table["method"]) == {"kmeans", "gmm", "median", "median_means", "random", "brute_force"}
     # per kind and query: k-means at beams 2, 3, 4, then GMM, the kd-tree, our median split, random, brute force
@@ -517,19 +518,26 @@ def test_primitive_clips_selects_and_names_the_file(dataset):
 
 
 def test_search_primitive_and_fig4_12(prim, right):
-    settings = SearchSettings(n_samples=300, n_queries=3, leaf_size=8, n_random=10)
-    pose = ["hips", "left_hand", "right_hand"]
-    tables = [
-        search_primitive(p, cmu_joint_map(), settings, {"walk_leftStance": "left_ankle"}, "right_hand", pose)
-        for p in (prim, right)
-    ]
+    search = SearchSettings(
+        n_samples=300,
+        n_queries=3,
+        leaf_size=8,
+        n_random=10,
+        joints={"walk_leftStance": "left_ankle"},
+        default_joint="right_hand",
+        pose_joints=("hips", "left_hand", "right_hand"),
+    )
+    settings = GraphSettings(search=search)
+    tables = [search_primitive(p, cmu_joint_map(), settings) for p in (prim, right)]
     queries, trees = tables[0]
     assert list(queries.columns[:3]) == ["primitive", "kind", "joint"] and set(queries["joint"]) == {"left_ankle"}
     assert set(tables[1][0]["joint"]) == {"right_hand"} and (trees["primitive"] == "walk_leftStance").all()
     with pytest.raises(KeyError, match="graph.search.joints.walk_leftStance.*left_foot"):
-        search_primitive(prim, cmu_joint_map(), settings, {"walk_leftStance": "left_foot"}, "right_hand", pose)
+        bad = search.replace(joints={"walk_leftStance": "left_foot"})
+        search_primitive(prim, cmu_joint_map(), settings.replace(search=bad))
     with pytest.raises(KeyError, match="graph.search.pose_joints"):
-        search_primitive(prim, cmu_joint_map(), settings, {}, "right_hand", ["hips", "tail"])
+        bad = search.replace(joints={}, pose_joints=("hips", "tail"))
+        search_primitive(prim, cmu_joint_map(), settings.replace(search=bad))
     result = evaluate_fig4_12(pd.concat([t[0] for t in tables], ignore_index=True))
     assert len(result.table) == 2 * 3 * (3 + 5) and "mean_time_ms" not in result.table.columns
     assert [c.claim_id.split(".")[-1] for c in result.claims] == [
@@ -548,9 +556,8 @@ def test_search_primitive_and_fig4_12(prim, right):
 
 
 def test_fig4_9_coverage_of_the_training_clips(prim, dataset):
-    result = evaluate_fig4_9(
-        {"walk_leftStance": prim, "pick_reach": prim}, dataset, cmu_joint_map(), n_samples=2000, grid=32, seed=0
-    )
+    settings = GraphSettings.from_dict({"seed": 0, "diversity": {"n_samples": 2000, "grid": 32}})
+    result = evaluate_fig4_9({"walk_leftStance": prim, "pick_reach": prim}, dataset, cmu_joint_map(), settings)
     t = result.table
     assert len(t) == 9 and list(t["joint"].unique()) == ["left_ankle", "left_hand", "right_hand"]
     assert list(t["n_training"]) == [4] * 3 + [8] * 6 and t["coverage"].between(0, 1).all()
@@ -563,16 +570,10 @@ def test_fig4_9_coverage_of_the_training_clips(prim, dataset):
 
 def test_fig4_10_follows_path_and_reaches(prim, right, dataset, tmp_path):
     models = {"walk_leftStance": prim, "walk_rightStance": right, "pick_reach": prim}
-    result = evaluate_fig4_10(
-        models,
-        dataset,
-        cmu_joint_map(),
-        [[0.0, 0.0], [200.0, 0.0]],
-        reach_targets=2,
-        tree_samples=300,
-        max_nfev=30,
-        max_steps=4,
-    )
+    synthesis = {"path": [[0.0, 0.0], [200.0, 0.0]], "reach_targets": 2, "tree_samples": 300, "max_nfev": 30}
+    settings = GraphSettings.from_dict({"synthesis": dict(synthesis, max_steps=4)})
+    assert settings.synthesis.look_ahead == 2 and settings.synthesis.joint_steps == "all"  # the schema's defaults
+    result = evaluate_fig4_10(models, dataset, cmu_joint_map(), settings)
     t = result.table
     assert list(t["task"].unique()) == ["path", "path_greedy", "path_line9", "reach"]
     assert (t["task"] == "reach").sum() == 2
@@ -609,3 +610,22 @@ def test_sec4_6_1_compactness(prim, dataset, tmp_path):
     assert len(draw_sec4_6_1(result).axes) == 1
     with pytest.raises(ValueError, match="dense picks"):
         evaluate_sec4_6_1(models, {"walk_leftStance": size, "pick_reach_dense": size}, dataset.metadata)
+
+
+def test_settings_have_one_owner():
+    """GraphSettings holds every default: the primitive options, the graph walk's settings
+    (SynthesisSettings, also read back by `motionvar du2022 walk`) and the search settings."""
+    from motionvar.du2022.graph.generate import walk_settings
+
+    s = GraphSettings()
+    assert PrimitiveOptions() == PrimitiveOptions.from_settings(s.model, s.seed)
+    assert PrimitiveOptions.from_settings(s.model, 3).gmm_components == (s.model.gmm_min, s.model.gmm_max)
+    saved = {"seed": 1, **s.synthesis.replace(tree_samples=5).to_dict()}
+    assert walk_settings(saved) == s.synthesis.replace(tree_samples=5)
+    assert walk_settings({"seed": 1}, max_steps=3) == s.synthesis.replace(max_steps=3)
+    assert s.search.candidates == (2, 3, 4) and s.search.replace(beam=6).candidates == (2, 3, 4, 6)
+    assert s.search.joint("walk_leftStance") == "left_ankle" and s.search.joint("other") == s.search.default_joint
+    with pytest.raises(ValueError, match="graph.synthesis.*joint_steps"):
+        GraphSettings.from_dict({"synthesis": {"joint_steps": "some"}})
+    with pytest.raises(ValueError, match="graph.search.beams"):
+        GraphSettings.from_dict({"search": {"beams": []}})

@@ -18,17 +18,19 @@ from motionvar.io import save_dataset
 
 sys.modules.setdefault("_graph", rule_scripts._load("_graph", "_graph"))  # the scripts' shared loaders
 
-MODEL_OPTIONS = {  # params.options of du2022_graph_primitive: seed and config.graph.model, flat
+MODEL_SETTINGS = {  # params.settings of du2022_graph_primitive: config.graph's seed and model
     "seed": 0,
-    "n_basis": 8,
-    "n_components": 4,
-    "gmm_min": 1,
-    "gmm_max": 2,
-    "gmm_criterion": "bic",
-    "reg_covar": 1e-3,
-    "sfpca_max_iter": 0,
-    "sfpca_weight_groups": "function",
-    "sfpca_eval_frames": None,
+    "model": {
+        "n_basis": 8,
+        "n_components": 4,
+        "gmm_min": 1,
+        "gmm_max": 2,
+        "gmm_criterion": "bic",
+        "reg_covar": 1e-3,
+        "sfpca_max_iter": 0,
+        "sfpca_weight_groups": "function",
+        "sfpca_eval_frames": None,
+    },
 }
 
 
@@ -56,7 +58,7 @@ def _primitive_rule(tmp_path, prep_dir, primitive):
         "du2022_graph_primitive",
         input=Named(clips=str(prep_dir / "clips.npz")),
         output=Named(model=str(out), meta=str(out.with_suffix(".json"))),
-        params=Named(options=MODEL_OPTIONS),
+        params=Named(settings=MODEL_SETTINGS),
         wildcards=Named(dataset="t", primitive=primitive),
     )
 
@@ -84,7 +86,7 @@ def test_dense_picks_need_the_synthetic_generator(tmp_path, capsys):
         tmp_path,
         "du2022_graph_dense_picks",
         output=Named(clips=str(out), metadata=str(out.parent / "m.csv")),
-        params=Named(entry={"source": "bvh"}, options={}, prep={}, joint_map=None),
+        params=Named(entry={"source": "bvh"}, settings={}, prep={}, joint_map=None),
     )
     with pytest.raises(SystemExit):
         run(sm, script("du2022_graph_dense_picks").main)

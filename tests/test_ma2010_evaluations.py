@@ -26,8 +26,11 @@ from motionvar.ma2010.evaluations.fig8 import fig8_fixed_style
 from motionvar.ma2010.evaluations.sec7_4 import sec7_4_comparison
 from motionvar.ma2010.evaluations.sec8 import sec8_timing
 from motionvar.ma2010.examples import WalkCycles, joint_groups, walk_cycles
+from motionvar.ma2010.settings import Ma2010Settings
 
 JM = cmu_joint_map()
+TOY = Ma2010Settings(n_frames=24)  # neutral forward walks, a short timeline
+LINEAR = TOY.replace(variogram_model="linear")
 
 
 def toy_dataset(path, styles, n_cycles=3):
@@ -53,13 +56,13 @@ def toy_dataset(path, styles, n_cycles=3):
 @pytest.fixture(scope="module")
 def walks(tmp_path_factory):
     data = toy_dataset(tmp_path_factory.mktemp("data"), ["neutral"] * 4)
-    clips, table = walk_cycles(data, JM, ["neutral"], ["forward"], n_frames=24)
-    return WalkCycles(clips, table["subject"].tolist(), JM, source="toy walks")
+    clips, table = walk_cycles(data, JM, TOY)
+    return WalkCycles(clips, table["subject"].tolist(), JM, source="toy walks", root_group="legs")
 
 
 @pytest.fixture(scope="module")
 def model(walks):
-    return walks.fit_model("auto", "linear")
+    return walks.fit_model(LINEAR)
 
 
 def check(result, draw, claim_prefix):
@@ -74,7 +77,7 @@ def check(result, draw, claim_prefix):
 
 def test_walk_cycles_cut_walks_into_cycles(tmp_path):
     data = toy_dataset(tmp_path, ["neutral"] * 3)
-    clips, table = walk_cycles(data, JM, ["neutral"], ["forward"], n_frames=24)
+    clips, table = walk_cycles(data, JM, TOY)
     assert clips.rotations.shape[:2] == (len(table), 24) and table["clip_id"].tolist() == clips.clip_ids
     assert len(table) >= 3 and set(table["source_clip"]) == {"w0", "w1", "w2"}
     assert np.all(table["left_support_stride_cm"] > 50) and set(table["subject"]) == {"00", "01", "02"}
@@ -86,27 +89,27 @@ def test_walk_cycles_cut_walks_into_cycles(tmp_path):
 def test_walk_cycles_name_the_problem(tmp_path, styles, n_cycles, expected):
     data = toy_dataset(tmp_path, styles, n_cycles)
     with pytest.raises(ValueError, match=expected) as err:
-        walk_cycles(data, JM, ["neutral"], ["forward"], n_frames=24, what="meta.csv (config ma2010.walk_styles)")
+        walk_cycles(data, JM, TOY, what="meta.csv (config ma2010.walk_styles)")
     assert str(err.value).startswith("meta.csv (config ma2010.walk_styles)")
 
 
 def test_walk_cycles_need_one_subject_per_cycle(walks):
     with pytest.raises(ValueError, match="toy walks: 1 subjects"):
-        WalkCycles(walks.clips, ["a"], JM, source="toy walks")
+        WalkCycles(walks.clips, ["a"], JM, source="toy walks", root_group="legs")
 
 
 def test_fig3_step_phases_and_key_frames(tmp_path):
     assert np.allclose(step_phases(np.array([5, 15, 40]), np.array([0, 10, 20])), [0.5, 0.5])
     assert circular_sd([0.2, 0.2, 0.2]) == pytest.approx(0.0, abs=1e-6) and circular_sd([0.0, 0.5]) > 0.3
     data = toy_dataset(tmp_path, ["neutral"] * 2)
-    result = fig3_keyframes(data, JM, ["neutral"], ["forward"], max_clips=1)
+    result = fig3_keyframes(data, JM, TOY.replace(fig3_max_clips=1))
     assert set(result.table["behaviour"]) == {"walk"} and set(result.figure["shown"]) == {"walk"}
     assert set(result.table["extremum"]) == {"max", "min"} and (result.table["part"] == "lower").all()
     check(result, figures.draw_fig3, "fig3.walk_keyframes")
 
 
 def test_fig6_leave_one_out(walks):
-    result = fig6_leave_one_out(walks, "auto", "linear", seed=0, max_clips=2)
+    result = fig6_leave_one_out(walks, LINEAR.replace(loo_max_clips=2))
     t = result.table
     folds, summary = t[t["kind"] == "fold"], t[t["kind"] == "summary"]
     assert len(folds) == 2 and t.columns[0] == "kind" and {"clip_id", "subject", "source_clip", "closing"} <= set(t)
@@ -134,7 +137,8 @@ def test_fig6_compares_with_the_validation_cycle_through_the_same_measure(walks)
     """Fig. 6 compares the predicted clip's stride with the validation clip's: the held-out
     cycle goes through the same measure (default), and its own error against its style is
     reported as the measure's floor; "style" compares with the strides asked for."""
-    result = fig6_leave_one_out(walks, "lower_first", "linear", seed=0, max_clips=2, ablation=False)
+    lower_first = LINEAR.replace(structure="lower_first", loo_max_clips=2)
+    result = fig6_leave_one_out(walks, lower_first, ablation=False)
     folds = result.table[result.table["kind"] == "fold"]
     validation = folds[["validation_left_cm", "validation_right_cm"]].to_numpy()
     ours = folds[["ours_own_xi_left_cm", "ours_own_xi_right_cm"]].to_numpy()
@@ -144,13 +148,11 @@ def test_fig6_compares_with_the_validation_cycle_through_the_same_measure(walks)
     assert np.allclose(folds["validation_stride_error_cm"], np.abs(validation - style).max(axis=1))
     assert "validation" in set(result.table.loc[result.table["kind"] == "summary", "method"])
     assert "floor" in result.claims[0].note and result.figure["stride_reference"] == "validation"
-    by_style = fig6_leave_one_out(
-        walks, "lower_first", "linear", seed=0, max_clips=2, ablation=False, stride_reference="style"
-    ).table
+    by_style = fig6_leave_one_out(walks, lower_first.replace(fig6_stride_reference="style"), ablation=False).table
     by_style = by_style[by_style["kind"] == "fold"]
     assert np.allclose(by_style["ours_own_xi_stride_error_cm"], by_style["ours_own_xi_style_error_cm"])
-    with pytest.raises(ValueError, match="stride_reference must be one of"):
-        fig6_leave_one_out(walks, "lower_first", "linear", max_clips=1, ablation=False, stride_reference="truth")
+    with pytest.raises(ValueError, match="fig6_stride_reference must be one of"):
+        lower_first.replace(fig6_stride_reference="truth")
 
 
 def test_root_group_choice_moves_only_the_root_rotation(walks):
@@ -167,11 +169,12 @@ def test_root_group_choice_moves_only_the_root_rotation(walks):
     assert np.array_equal(legs["left_arm"], JM.group_indices(sk)["left_arm"])
     assert sk.names[0] in JM.groups["legs"]  # the shipped CMU map: the root with the legs
     moved = WalkCycles(walks.clips, walks.subjects, JM, "toy walks", root_group="upper_body")
+    lower_first = LINEAR.replace(structure="lower_first")
     assert 0 in moved.groups["upper_body"] and 0 in walks.groups["legs"]
     with pytest.raises(ValueError, match="root_group must be one of"):
         joint_groups(JM, sk, "left_arm")
     # the model follows the groups: the root's rotation is interpolated in its group
-    a, b = walks.fit_model("lower_first"), moved.fit_model("lower_first")
+    a, b = walks.fit_model(lower_first), moved.fit_model(lower_first)
     assert 0 in a.interpolators_["legs"][0].joints and 0 in b.interpolators_["upper_body"][0].joints
 
 
@@ -193,19 +196,18 @@ def test_whole_walk_folds_never_train_on_a_sibling_cycle():
 
 
 def test_fig6_whole_walk_folds_leave_out_every_sibling(walks):
-    result = fig6_leave_one_out(walks, "lower_first", "linear", seed=0, max_clips=3, ablation=False)
+    settings = LINEAR.replace(structure="lower_first", loo_max_clips=3)
+    result = fig6_leave_one_out(walks, settings, ablation=False)
     folds = result.table[result.table["kind"] == "fold"]
     size = pd.Series(walks.source_clips).value_counts()
     assert np.array_equal(folds["n_train"], walks.clips.n_clips - size[folds["source_clip"]].to_numpy())
     assert "ours_own_xi_root_upper_body_stride_error_cm" not in folds
-    per_cycle = fig6_leave_one_out(
-        walks, "lower_first", "linear", seed=0, max_clips=3, loo_unit="cycle", ablation=False
-    ).table
+    per_cycle = fig6_leave_one_out(walks, settings.replace(loo_unit="cycle"), ablation=False).table
     assert np.all(per_cycle.loc[per_cycle["kind"] == "fold", "n_train"] == walks.clips.n_clips - 1)
 
 
 def test_fig7b_reliability(walks, model):
-    result = fig7b_reliability(walks, model, n_grid=3, margin=0.2)
+    result = fig7b_reliability(walks, model, TOY.replace(reliability_grid=3, reliability_margin=0.2))
     assert len(result.table) == 9 and np.all(result.table["nearest_example_cm"] >= 0)
     assert len(result.figure["failed"]) == 9
     assert result.claims[0].value == result.figure["rho"] or np.isnan(result.figure["rho"])
@@ -213,7 +215,8 @@ def test_fig7b_reliability(walks, model):
 
 
 def test_fig8_variants_vary_and_interpolations_do_not(walks, model):
-    result = fig8_fixed_style(walks, model, n_variants=3, seed=1, spread_ratio_bounds=[0.1, 10.0])
+    settings = LINEAR.replace(fig8_variants=3, seed=1, spread_ratio_bounds=(0.1, 10.0))
+    result = fig8_fixed_style(walks, model, settings)
     t = result.table
     assert (t["kind"] == "variant").sum() == 3 and (t["kind"] == "spread_cm").sum() == 6
     assert (t["kind"] == "ceiling").sum() == 3 and np.all(t.loc[t["kind"] == "ceiling", "stride_error_cm"] >= 0)
@@ -228,9 +231,15 @@ def test_fig8_variants_vary_and_interpolations_do_not(walks, model):
 
 
 def test_sec7_4_comparison(walks):
-    result = sec7_4_comparison(
-        walks, n_examples=3, seconds=2.0, n_sequences=2, gplvm_iterations=2, gplvm_frame_step=4, dbn_max_parents=4
+    settings = LINEAR.replace(
+        comparison_examples=3,
+        comparison_seconds=2.0,
+        comparison_sequences=2,
+        gplvm_iterations=2,
+        gplvm_frame_step=4,
+        dbn_max_parents=4,
     )
+    result = sec7_4_comparison(walks, settings)
     t = result.table
     assert set(t["method"]) == {*METHODS, "examples"} and (t["method"] != "examples").sum() == 2 * len(METHODS)
     assert list(result.figure["sequences"]) == list(METHODS)
@@ -252,7 +261,9 @@ def test_sec7_4_comparison(walks):
     assert "once per sequence" in result.claims[0].note and "Bayesian GPLVM" in result.claims[0].note
     check(result, figures.draw_sec7_4, "sec7_4")
     with pytest.raises(NotApplicable, match="toy walks: 1 subject"):
-        sec7_4_comparison(WalkCycles(walks.clips, ["one"] * walks.clips.n_clips, JM, "toy walks"))
+        sec7_4_comparison(
+            WalkCycles(walks.clips, ["one"] * walks.clips.n_clips, JM, "toy walks", root_group="legs"), settings
+        )
 
 
 def test_ours_draws_xi_once_per_sequence_or_per_clip(walks, model):
@@ -263,14 +274,16 @@ def test_ours_draws_xi_once_per_sequence_or_per_clip(walks, model):
     assert np.allclose(same.rotations, same.rotations[:1]) and np.allclose(same.key_times, same.key_times[:1])
     each = ours_clips(model, style, 3, np.random.default_rng(0), xi_per="clip")
     assert np.abs(each.rotations - each.rotations[:1]).max() > 1e-6
-    assert ours_sequence(model, style, 2, walks.solver, np.random.default_rng(0)).n_frames > 2
+    sequence = ours_sequence(model, style, 2, walks.solver, np.random.default_rng(0), "sequence", "significant_maximum")
+    assert sequence.n_frames > 2
     with pytest.raises(ValueError, match="xi_per"):
         ours_clips(model, style, 3, np.random.default_rng(0), xi_per="frame")
 
 
 def test_sec8_timing_with_a_fake_clock(walks, model):
     ticks = iter(np.arange(0.0, 100.0, 0.5))
-    result = sec8_timing(walks, model, seconds=2.0, repeats=2, clock=lambda: float(next(ticks)))
+    settings = TOY.replace(timing_seconds=2.0, timing_repeats=2)
+    result = sec8_timing(walks, model, settings, clock=lambda: float(next(ticks)))
     row = result.table.iloc[0]
     assert row["seconds_per_second"] == pytest.approx(0.5 / row["motion_seconds"])
     assert row["example_cycles"] == walks.clips.n_clips and row["subjects"] == 4

@@ -45,7 +45,7 @@ def draw_gp(
 @pytest.mark.parametrize("p, n, box", [(2, 200, 8.0), (3, 300, 5.0)])
 def test_fitted_exponential_variogram_comes_back(p, n, box):
     x, r = draw_gp(n, p, 40, "exponential", sill=1.0, rng_=1.0, nugget=0.2, box=box, seed=1)
-    v = fit_semivariogram(x, r, "exponential").variogram.describe()
+    v = fit_semivariogram(x, r, "exponential", None, "none").variogram.describe()
     assert v["range"] == pytest.approx(1.0, rel=0.35)
     assert v["partial_sill"] == pytest.approx(1.0, rel=0.3)
     assert v["nugget"] == pytest.approx(0.2, abs=0.2)
@@ -55,7 +55,7 @@ def test_fitted_exponential_variogram_comes_back(p, n, box):
 @pytest.mark.parametrize("seed", [0, 1])
 def test_auto_picks_the_true_family_in_a_clear_case(family, seed):
     x, r = draw_gp(200, 2, 40, family, rng_=1.0, nugget=0.05, box=8.0, seed=seed)
-    fit = fit_semivariogram(x, r, "auto")
+    fit = fit_semivariogram(x, r, "auto", None, "none")
     assert set(fit.candidates) == set(AUTO_MODELS)
     assert fit.variogram.model == family, fit.aic
     assert fit.aic["linear"] > fit.aic[family] + 10  # a bounded variogram is not a line
@@ -64,7 +64,7 @@ def test_auto_picks_the_true_family_in_a_clear_case(family, seed):
 def test_pure_noise_gives_a_flat_variogram_and_auto_keeps_it_simple():
     rng = np.random.default_rng(3)
     x, r = rng.uniform(0, 5, (150, 2)), rng.normal(size=(150, 30))
-    fit = fit_semivariogram(x, r - r.mean(axis=0), "auto", scale="sd")
+    fit = fit_semivariogram(x, r - r.mean(axis=0), "auto", None, "sd")
     v = fit.variogram
     assert np.all(np.abs(fit.gamma - 1.0) < 0.2)  # sd scaling: unrelated pairs have semivariance ~1
     assert v.curve(np.array([0.05, 3.0])) == pytest.approx([1.0, 1.0], abs=0.15)
@@ -78,9 +78,9 @@ def test_normalisation_makes_a_mixed_unit_output_fit_like_a_single_unit_one():
     noise = np.random.default_rng(5).normal(size=(200, 20))
     single = np.concatenate([z, noise - noise.mean(axis=0)], axis=1)
     mixed = np.concatenate([0.01 * z, 100.0 * (noise - noise.mean(axis=0))], axis=1)
-    ref = fit_semivariogram(x, single, "exponential", scale="sd").variogram.describe()
-    sd = fit_semivariogram(x, mixed, "exponential", scale="sd").variogram.describe()
-    raw = fit_semivariogram(x, mixed, "exponential", scale="none").variogram.describe()
+    ref = fit_semivariogram(x, single, "exponential", None, "sd").variogram.describe()
+    sd = fit_semivariogram(x, mixed, "exponential", None, "sd").variogram.describe()
+    raw = fit_semivariogram(x, mixed, "exponential", None, "none").variogram.describe()
     for k in ("nugget", "partial_sill", "range"):
         assert sd[k] == pytest.approx(ref[k], rel=1e-6, abs=1e-9)  # the scaling undoes the units exactly
     structured = lambda v: v["partial_sill"] / (v["partial_sill"] + v["nugget"])  # noqa: E731
@@ -101,37 +101,37 @@ def test_output_weights_and_constant_dimensions():
     assert w[0] == 0 and w[2] == 0 and w[1] == pytest.approx(1 / r[:, 1].var())
     with pytest.raises(ValueError, match="scale"):
         output_weights(r, "cm")
-    lag, gamma, pairs = empirical_semivariogram(np.arange(3.0)[:, None], r, scale="sd", max_lag=1.0)
+    lag, gamma, pairs = empirical_semivariogram(np.arange(3.0)[:, None], r, None, "sd", max_lag=1.0)
     assert pairs.sum() == 3 and np.all(np.isfinite(gamma))
     assert [bin_count(n) for n in (10, 150, 7000, 10**6)] == [20, 20, 70, 100]  # ~100 pairs a bin, 20-100 bins
     x = np.random.default_rng(0).uniform(size=(60, 2))
-    lag, _, pairs = empirical_semivariogram(x, np.random.default_rng(1).normal(size=(60, 3)), n_bins=5, max_lag=0.5)
+    lag, _, pairs = empirical_semivariogram(x, np.random.default_rng(1).normal(size=(60, 3)), 5, "none", max_lag=0.5)
     assert len(lag) == 5 and lag.max() <= 0.5 * np.sqrt(2) and pairs.sum() < 60 * 59 // 2
     with pytest.raises(ValueError, match="pair_mask"):
-        empirical_semivariogram(x, np.zeros((60, 3)), pair_mask=np.ones(3, dtype=bool))
+        empirical_semivariogram(x, np.zeros((60, 3)), None, "none", pair_mask=np.ones(3, dtype=bool))
 
 
-def test_old_single_model_stays_selectable_and_options_are_checked():
+def test_plain_single_model_stays_selectable_and_options_are_checked():
     x, r = draw_gp(80, 2, 10, seed=4)
     old = UniversalKriging("linear", variogram_scale="none", variogram_weights="pairs", max_lag=1.0).fit(x, r)
     assert old.variogram_.model == "linear" and old.variogram_fit_.scale == "none"
-    assert isinstance(UniversalKriging().fit(x, r).variogram_, Variogram)  # default: auto, sd
+    assert isinstance(UniversalKriging("auto", variogram_scale="sd").fit(x, r).variogram_, Variogram)
     with pytest.raises(ValueError, match="unknown variogram model"):
-        UniversalKriging("cubic")
+        UniversalKriging("cubic", variogram_scale="sd")
     with pytest.raises(ValueError, match="variogram_scale"):
-        UniversalKriging(variogram_scale="per_dim")
+        UniversalKriging("auto", variogram_scale="per_dim")
     with pytest.raises(ValueError, match="variogram_weights"):
-        UniversalKriging(variogram_weights="uniform")
+        UniversalKriging("auto", variogram_scale="sd", variogram_weights="uniform")
 
 
 def test_kriging_interpolates_and_flat_residuals_do_not_break_the_fit():
     rng = np.random.default_rng(6)
     x = rng.uniform(0, 1, (15, 2))
     y = 1.0 + x @ np.array([[2.0, 0.0], [-1.0, 3.0]])  # an exact hyperplane: residuals all zero
-    k = UniversalKriging().fit(x, y)
+    k = UniversalKriging("auto", variogram_scale="sd").fit(x, y)
     assert np.allclose(k.predict(x[:3]), y[:3]) and k.variogram_.nugget == 0.0
     x2, r2 = draw_gp(40, 2, 5, seed=7)
-    k2 = UniversalKriging("exponential").fit(x2, r2)
+    k2 = UniversalKriging("exponential", variogram_scale="sd").fit(x2, r2)
     assert np.allclose(k2.predict(x2), r2, atol=1e-6)  # Kriging is exact at the examples
 
 
@@ -151,6 +151,7 @@ def test_variogram_evaluation_table_and_figure(tmp_path):
     from motionvar.ma2010.evaluations.variogram import STYLE_ONLY, variogram_fits
     from motionvar.ma2010.examples import WalkCycles, walk_cycles
     from motionvar.ma2010.figures import draw_variogram
+    from motionvar.ma2010.settings import Ma2010Settings
     from motionvar.ma2010.svi import GROUP_ORDER
 
     jm = cmu_joint_map()
@@ -167,10 +168,11 @@ def test_variogram_evaluation_table_and_figure(tmp_path):
         }
     )
     save_dataset(tmp_path, motions, meta)
-    clips, table = walk_cycles(load_dataset(tmp_path), jm, ["neutral"], ["forward"], n_frames=24)
-    walks = WalkCycles(clips, table["subject"].tolist(), jm, source="toy walks")
+    settings = Ma2010Settings(n_frames=24)
+    clips, table = walk_cycles(load_dataset(tmp_path), jm, settings)
+    walks = WalkCycles(clips, table["subject"].tolist(), jm, source="toy walks", root_group="legs")
     for model, scale in (("auto", "sd"), ("linear", "none")):
-        result = variogram_fits(walks, "auto", model, scale)
+        result = variogram_fits(walks, settings.replace(variogram_model=model, variogram_scale=scale))
         t = result.table
         assert result.claims == []  # a diagnostic: the paper states nothing about the variogram
         assert set(t["group"]) == {*GROUP_ORDER, STYLE_ONLY} and {"all pairs", "old"} <= set(t["series"])
@@ -194,9 +196,9 @@ def test_trend_cut_off_ignores_a_thin_direction_of_collinear_parameters():
     y = np.column_stack([0.02 * s + rng.normal(0, 0.05, 60), -0.01 * s + rng.normal(0, 0.05, 60)])
     on_line, off_line = np.array([[132.0, 132.0]]), np.array([[128.0, 136.0]])
     truth_off = np.array([0.02 * 132.0, -0.01 * 132.0])  # the outputs depend on the mean stride only
-    literal = UniversalKriging("linear", trend_rcond=0.0).fit(x, y)
-    cut = UniversalKriging("linear", trend_rcond=0.1).fit(x, y)
+    literal = UniversalKriging("linear", variogram_scale="sd", trend_rcond=0.0).fit(x, y)
+    cut = UniversalKriging("linear", variogram_scale="sd", trend_rcond=0.1).fit(x, y)
     assert np.abs(cut.trend(off_line) - truth_off).max() < 0.5 * np.abs(literal.trend(off_line) - truth_off).max()
     assert np.allclose(cut.trend(on_line), literal.trend(on_line), atol=0.05)
     with pytest.raises(ValueError, match="trend_rcond"):
-        UniversalKriging(trend_rcond=1.5)
+        UniversalKriging("linear", variogram_scale="sd", trend_rcond=1.5)

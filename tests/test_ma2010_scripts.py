@@ -17,13 +17,7 @@ from motionvar.io import save_dataset
 # the scripts import their loaders as Snakemake runs them, from their own folder
 rule_scripts.helper_module("_ma2010")
 
-OPTIONS = {
-    "walk_styles": ["neutral"],
-    "walk_variants": ["forward"],
-    "n_frames": 24,
-    "keyframe_prominence": 0.1,
-    "keyframe_min_separation_s": 0.1,
-}
+SETTINGS = {"walk_styles": ["neutral"], "walk_variants": ["forward"], "n_frames": 24}  # config section ma2010
 
 
 def toy_dataset(tmp_path, styles, n_cycles=3):
@@ -52,7 +46,7 @@ def clips_fake(tmp_path, data):
             clips_settings=str(out / "walk_clips.json"),
             table=str(out / "walk_cycles.csv"),
         ),
-        params=Named(options=OPTIONS, joint_map=None),
+        params=Named(settings=SETTINGS, joint_map=None),
     )
     out.mkdir()
     return out, fake
@@ -94,13 +88,7 @@ def test_evaluation_scripts_reject_a_stale_cycle_table(tmp_path, capsys):
         input=Named(clips=str(out / "walk_clips.npz"), table=str(out / "walk_cycles.csv")),
         output=Named(table=str(ev / "t.csv"), figure=str(ev / "f.png"), claims=str(ev / "c.json")),
         params=Named(
-            options={
-                "structure": "auto",
-                "variogram_model": "linear",
-                "seed": 0,
-                "timing_seconds": 2.0,
-                "timing_repeats": 1,
-            },
+            settings={**SETTINGS, "variogram_model": "linear", "timing_seconds": 2.0, "timing_repeats": 1},
             joint_map=None,
         ),
     )

@@ -66,7 +66,7 @@ def test_report_holds_the_data_figures_and_the_claims(ci_run):
 def test_every_rule_has_a_benchmark_and_a_log(ci_run):
     work, _, _, result = ci_run
     ran = set(re.findall(r"^(?:local)?rule (\w+):", result.stdout + result.stderr, flags=re.M)) - {"all"}
-    assert {"data", "preprocess", "dataset_overview", "animation", "claims", "claims_summary"} <= ran
+    assert {"data", "preprocess", "dataset_overview", "dataset_animation", "claims", "claims_summary"} <= ran
     results = work / "results" / "synthetic"
     for rule in sorted(ran):
         bench = [results / "benchmarks" / f"{rule}.tsv", results / "benchmarks" / rule]

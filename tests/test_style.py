@@ -14,11 +14,15 @@ from claim_checks import check_value_bound
 from motionvar.core import JointMap, Motion, cmu_joint_map, cmu_skeleton
 from motionvar.core import quaternions as Q
 from motionvar.du2022.style import (
+    AutoencoderSettings,
     ConvAutoencoder,
+    CvaeSettings,
     FeatureScaler,
     FeatureSpace,
     MotionVAE,
+    StyleSettings,
     TrainConfig,
+    VaeSettings,
     content_loss,
     diagonal_minima,
     diversity,
@@ -42,6 +46,7 @@ from motionvar.du2022.style import (
     style_joints,
     style_loss,
     train_autoencoder,
+    train_cvae,
     train_vae,
 )
 
@@ -86,6 +91,21 @@ def toy_walk(n_frames=60, seed=0, turn=0.4, speed=2.0, swing=0.5, arm=0.3):
         rot[:, sk.index(name)] = Q.quat_about_axis([1, 0, 0], amp * np.sin(phase))
     rot[:, sk.index("LeftLeg")] = Q.quat_about_axis([1, 0, 0], 0.3 + 0.3 * np.sin(phase))
     return Motion(skeleton=sk, root_pos=root, rotations=rot, fps=120.0)
+
+
+TINY_HIDDEN = (32, 16, 8)  # the VAEs' hidden layers in the tiny runs
+
+
+def tiny_settings(ae_epochs=3, vae_epochs=3, cvae_epochs=2):
+    """The settings of the tiny runs: 8 windows every 5 frames, 16 kernels, 4 latent
+    dimensions, L = 2, Adam, alpha 1."""
+    return StyleSettings(
+        autoencoder=AutoencoderSettings(
+            kernels=16, window_stride=5, max_windows=8, epochs=ae_epochs, lr=3e-3, batch_size=8
+        ),
+        vae=VaeSettings(latent=4, samples_per_input=2, epochs=vae_epochs, lr=1e-3, batch_size=4, optimizer="adam"),
+        cvae=CvaeSettings(alpha=1.0, epochs=cvae_epochs, lr=1e-3, batch_size=4, optimizer="adam"),
+    )
 
 
 pytestmark = pytest.mark.usefixtures("one_torch_thread")  # tests/conftest.py
@@ -306,7 +326,7 @@ def tiny(layout):
     windows = sliding_windows([motion_features(m, layout) for m in clips], 60, 30)
     scaler = FeatureScaler.fit(windows, 21)
     ae, hist = train_autoencoder(
-        scaler.transform(windows), TrainConfig(epochs=30, lr=3e-3, batch_size=8, seed=0), n_kernels=16
+        scaler.transform(windows), AutoencoderSettings(kernels=16, epochs=30, lr=3e-3, batch_size=8), seed=0
     )
     prims = motions_features([toy_walk(seed=10 + s, swing=0.4 + 0.02 * s) for s in range(12)], layout)
     return FeatureSpace(ae, scaler), hist, prims
@@ -317,10 +337,10 @@ def test_autoencoder_learns_and_is_deterministic(tiny, layout):
     assert list(hist.columns) == ["epoch", "loss", "end_loss", "seconds", "kept"] and len(hist) == 30
     assert hist["loss"].iloc[-1] < 0.5 * hist["loss"].iloc[0]
     clips = [toy_walk(n_frames=120, seed=s, turn=0.2 * s) for s in range(6)]
-    windows = space.scaler.transform(sliding_windows([motion_features(m, layout) for m in clips]))
-    cfg = TrainConfig(epochs=2, lr=1e-3, batch_size=4, seed=5)
-    a, _ = train_autoencoder(windows, cfg, n_kernels=8)
-    b, _ = train_autoencoder(windows, cfg, n_kernels=8)
+    windows = space.scaler.transform(sliding_windows([motion_features(m, layout) for m in clips], 60, 30))
+    ae_settings = AutoencoderSettings(kernels=8, epochs=2, lr=1e-3, batch_size=4)
+    a, _ = train_autoencoder(windows, ae_settings, seed=5)
+    b, _ = train_autoencoder(windows, ae_settings, seed=5)
     assert all(torch.equal(p, q) for p, q in zip(a.state_dict().values(), b.state_dict().values()))
 
 
@@ -329,11 +349,11 @@ def test_autoencoder_keeps_the_best_epoch(tiny, layout):
     learning rate high enough to make the loss jump about), "last" the last epoch's."""
     space, _, _ = tiny
     clips = [toy_walk(n_frames=120, seed=s, turn=0.2 * s) for s in range(6)]
-    windows = space.scaler.transform(sliding_windows([motion_features(m, layout) for m in clips]))
-    cfg = TrainConfig(epochs=8, lr=3e-2, batch_size=4, seed=1)
+    windows = space.scaler.transform(sliding_windows([motion_features(m, layout) for m in clips], 60, 30))
+    ae_settings = AutoencoderSettings(kernels=8, epochs=8, lr=3e-2, batch_size=4)
     x = torch.as_tensor(windows, dtype=torch.float32).permute(0, 2, 1)
     for keep in ("best", "last"):
-        model, hist = train_autoencoder(windows, cfg, n_kernels=8, keep=keep)
+        model, hist = train_autoencoder(windows, ae_settings.replace(keep=keep), seed=1)
         with torch.no_grad():
             loss = float(torch.mean((model(x) - x) ** 2))
         kept = hist.loc[hist["kept"]]
@@ -341,10 +361,10 @@ def test_autoencoder_keeps_the_best_epoch(tiny, layout):
         if keep == "best":
             assert kept["end_loss"].iloc[0] == hist["end_loss"].min() and hist["end_loss"].notna().all()
         else:  # the loss over all windows is computed for the last epoch only
-            assert kept["epoch"].iloc[0] == cfg.epochs
+            assert kept["epoch"].iloc[0] == ae_settings.epochs
             assert hist["end_loss"].iloc[:-1].isna().all() and np.isfinite(hist["end_loss"].iloc[-1])
     with pytest.raises(ValueError, match="keep must be one of"):
-        train_autoencoder(windows, cfg, n_kernels=8, keep="first")
+        train_autoencoder(windows, ae_settings.replace(keep="first"), seed=1)
 
 
 def test_sliced_adam_is_torch_adam_bit_for_bit():
@@ -373,7 +393,7 @@ def test_sliced_adam_is_torch_adam_bit_for_bit():
         sliced = run(lambda params: SlicedAdam(params, 1e-2, slice_size=size))
         assert all(torch.equal(a, b) for a, b in zip(reference, sliced))
     assert isinstance(
-        TrainConfig(1, 1e-3, 4).make_optimizer(MotionVAE(8, hidden=(4,), latent=2).parameters()), SlicedAdam
+        TrainConfig(1, 1e-3, 4, 0, "adam").make_optimizer(MotionVAE(8, hidden=(4,), latent=2).parameters()), SlicedAdam
     )
     with pytest.raises(ValueError, match="slice_size"):
         SlicedAdam([torch.nn.Parameter(torch.zeros(3))], 1e-3, slice_size=0)
@@ -396,15 +416,15 @@ def test_vae_and_cvae_training(tiny):
     space, _, prims = tiny
     maps = space.encode(prims)
     assert maps.shape == (12, 16, 30)
-    cfg = TrainConfig(epochs=40, lr=1e-3, batch_size=6, seed=0)
-    vae, hist = train_vae(maps, cfg, n_samples=3, hidden=(64, 32, 16), latent=4)
+    vae_settings = VaeSettings(latent=4, samples_per_input=3, epochs=40, lr=1e-3, batch_size=6, optimizer="adam")
+    cvae_settings = CvaeSettings(alpha=200.0, epochs=40, lr=1e-3, batch_size=6, optimizer="adam")
+    hidden = (64, 32, 16)
+    vae, hist = train_vae(maps, vae_settings, 0, hidden)
     assert list(hist.columns) == ["epoch", "loss", "content", "kl", "style", "seconds", "active"]
     assert hist["loss"].iloc[-1] < hist["loss"].iloc[0] and (hist["style"] == 0).all()
     # a style example far from the content: the CVAE's samples move toward its Gram matrix
     example = space.encode(motions_features([toy_walk(seed=99, swing=1.2, arm=1.0, speed=4.0)], space_layout()))[0]
-    cvae, chist = train_vae(
-        maps, cfg, n_samples=3, style_maps=example, alpha=200.0, init=vae, hidden=(64, 32, 16), latent=4
-    )
+    cvae, chist = train_cvae(maps, example, vae_settings, cvae_settings, 0, vae, hidden)
     assert chist["style"].iloc[-1] < chist["style"].iloc[0]
     from motionvar.du2022.style import active_units
 
@@ -417,11 +437,11 @@ def test_vae_and_cvae_training(tiny):
     )
     assert d_cvae < d_vae
     with pytest.raises(ValueError, match="style_maps must be"):
-        train_vae(maps, cfg, style_maps=example[:3], hidden=(64, 32, 16), latent=4)
+        train_cvae(maps, example[:3], vae_settings, cvae_settings, 0, None, hidden)
     with pytest.raises(ValueError, match="init VAE has"):
-        train_vae(maps, cfg, init=MotionVAE(10), hidden=(64, 32, 16), latent=4)
+        train_cvae(maps, example, vae_settings, cvae_settings, 0, MotionVAE(10), hidden)
     with pytest.raises(ValueError, match="TrainConfig"):
-        TrainConfig(epochs=0, lr=1e-3, batch_size=4)
+        TrainConfig(epochs=0, lr=1e-3, batch_size=4, seed=0, optimizer="adam")
 
 
 def test_cvae_keeps_active_latent_units_on_a_toy_set():
@@ -436,18 +456,22 @@ def test_cvae_keeps_active_latent_units_on_a_toy_set():
     factors = 0.5 * torch.randn(4, 16, 30, generator=gen)
     maps = torch.relu(base + torch.einsum("nk,kct->nct", torch.randn(64, 4, generator=gen), factors))
     example = torch.relu(1.5 * base + 0.3 * torch.randn(16, 30, generator=gen))
-    small = dict(n_samples=3, hidden=(64, 32, 16), latent=4)
-    vae, hist = train_vae(maps, TrainConfig(30, 1e-3, 16, seed=0), **small)
+    hidden = (64, 32, 16)
+    vae_settings = VaeSettings(latent=4, samples_per_input=3, epochs=30, lr=1e-3, batch_size=16, optimizer="adam")
+    vae, hist = train_vae(maps, vae_settings, 0, hidden)
     assert hist["active"].iloc[-1] == active_units(vae, maps) > 0
-    for cfg in (TrainConfig(5, 1e-4, 16, seed=0), TrainConfig(5, 1e-5, 16, seed=0, optimizer="sgd")):
-        cvae, chist = train_vae(maps, cfg, style_maps=example, alpha=200.0, init=vae, **small)
+    for cfg in (
+        CvaeSettings(epochs=5, lr=1e-4, batch_size=16, optimizer="adam"),
+        CvaeSettings(epochs=5, lr=1e-5, batch_size=16, optimizer="sgd"),
+    ):
+        cvae, chist = train_cvae(maps, example, vae_settings, cfg, 0, vae, hidden)
         assert list(chist.columns) == ["epoch", "loss", "content", "kl", "style", "seconds", "active"]
         assert (chist["active"] > 0).all() and active_units(cvae, maps) > 0, (cfg, chist["active"].tolist())
         assert chist["style"].iloc[-1] < chist["style"].iloc[0]
     with pytest.raises(ValueError, match="optimizer must be one of"):
-        TrainConfig(5, 1e-4, 16, optimizer="rmsprop")
-    with pytest.raises(ValueError, match="gram_reduce must be one of"):
-        train_vae(maps, TrainConfig(1, 1e-4, 16), style_maps=example, gram_reduce="max", **small)
+        TrainConfig(5, 1e-4, 16, 0, optimizer="rmsprop")
+    with pytest.raises(ValueError, match="gram must be one of"):
+        train_cvae(maps, example, vae_settings, CvaeSettings(epochs=1, gram="max"), 0, vae, hidden)
 
 
 def space_layout():
@@ -457,8 +481,8 @@ def space_layout():
 def test_save_load_sample_and_distance_matrix(tiny, tmp_path, layout):
     space, _, prims = tiny
     maps = space.encode(prims)
-    cfg = TrainConfig(epochs=3, lr=1e-3, batch_size=6, seed=0)
-    vae, _ = train_vae(maps, cfg, n_samples=2, hidden=(32, 16, 8), latent=4)
+    vae_settings = VaeSettings(latent=4, samples_per_input=2, epochs=3, lr=1e-3, batch_size=6, optimizer="adam")
+    vae, _ = train_vae(maps, vae_settings, 0, TINY_HIDDEN)
     space.save(tmp_path / "ae.pt")
     save_vae(tmp_path / "vae.pt", vae, tuple(maps.shape[1:]), {"primitive": "walk_leftStance", "style": "neutral"})
     # weights: a plain state dict (weights_only); settings: JSON beside it
@@ -607,16 +631,14 @@ def style_run(tmp_path_factory, layout):
     path = tmp_path_factory.mktemp("style_run")
     save_dataset(path / "data", motions, meta)
     dataset = load_dataset(path / "data")
-    small = dict(n_samples=2, latent=4, hidden=(32, 16, 8))
-    space, ae_hist = fit_feature_space(
-        dataset, layout, TrainConfig(3, 3e-3, 8, seed=0), window=60, stride=5, max_windows=8, n_kernels=16
-    )
+    small = tiny_settings()
+    space, ae_hist = fit_feature_space(dataset, layout, small)
     assert (
         list(ae_hist.columns) == ["epoch", "loss", "end_loss", "seconds", "kept", "windows"]
         and (ae_hist["windows"] == 8).all()
     )
     space.save(path / "ae.pt")
-    vae, shape, info, _ = fit_primitive_vae(dataset, layout, space, "walk_leftStance", TrainConfig(3, 1e-3, 4), **small)
+    vae, shape, info, _ = fit_primitive_vae(dataset, layout, space, "walk_leftStance", small, TINY_HIDDEN)
     assert shape == (16, 30) and {k: info[k] for k in ("primitive", "style", "n_clips")} == {
         "primitive": "walk_leftStance",
         "style": "neutral",
@@ -627,7 +649,7 @@ def style_run(tmp_path_factory, layout):
     cvaes = []
     for style in ("proud", "old"):
         cvae, cshape, cinfo, hist = fit_style_cvae(
-            dataset, layout, space, vae, "walk_leftStance", style, TrainConfig(2, 1e-3, 4), alpha=1.0, **small
+            dataset, layout, space, vae, "walk_leftStance", style, small, TINY_HIDDEN
         )
         assert cinfo["example"] in set(meta.loc[meta["style"] == style, "clip_id"]) and (hist["style"] > 0).all()
         assert cinfo["regime"] == (
@@ -643,9 +665,7 @@ def test_fitting_is_deterministic(style_run, layout):
     from motionvar.du2022.style import fit_primitive_vae
 
     dataset, space, (vae, _, _), _ = style_run
-    again, *_ = fit_primitive_vae(
-        dataset, layout, space, "walk_leftStance", TrainConfig(3, 1e-3, 4), n_samples=2, latent=4, hidden=(32, 16, 8)
-    )
+    again, *_ = fit_primitive_vae(dataset, layout, space, "walk_leftStance", tiny_settings(), TINY_HIDDEN)
     assert all(torch.equal(a, b) for a, b in zip(vae.state_dict().values(), again.state_dict().values()))
 
 
@@ -656,7 +676,8 @@ def test_evaluate_table5_1(style_run, layout):
     from motionvar.du2022.style.figures import draw_table5_1
 
     dataset, space, neutral, cvaes = style_run
-    result = evaluate_table5_1(dataset, layout, space, neutral, cvaes, "walk_leftStance", n_samples=20, seed=0)
+    settings = StyleSettings(distance_primitive="walk_leftStance", distance_samples=20, seed=0)
+    result = evaluate_table5_1(dataset, layout, space, neutral, cvaes, settings)
     t = result.table
     assert list(t.columns) == [
         "model",
@@ -687,9 +708,10 @@ def test_evaluate_table5_2(style_run, layout):
     from motionvar.du2022.style.figures import draw_table5_2
 
     dataset, space, neutral, cvaes = style_run
-    result = evaluate_table5_2(
-        dataset, layout, space, [neutral, *cvaes], ["walk_leftStance"], n_samples=30, seed=0, pose_sd_tolerance=0.05
+    settings = StyleSettings(
+        style_primitives=("walk_leftStance",), diversity_samples=30, seed=0, pose_sd_tolerance=0.05
     )
+    result = evaluate_table5_2(dataset, layout, space, [neutral, *cvaes], settings)
     t = result.table
     assert list(t["model"]) == ["training data", "training data (autoencoder)", "neutral", "proud", "old"]
     assert list(t["n"]) == [6, 6, 30, 30, 30] and t["active_latents"].iloc[2:].between(0, 4).all()
@@ -743,7 +765,7 @@ def test_evaluate_fig5_4_and_its_animation(style_run, layout):
     from motionvar.du2022.style.figures import animate_fig5_4, draw_fig5_4
 
     dataset, space, neutral, cvaes = style_run
-    result = evaluate_fig5_4(dataset, layout, space, [neutral, *cvaes], n_samples=3, seed=0)
+    result = evaluate_fig5_4(dataset, layout, space, [neutral, *cvaes], StyleSettings(figure_samples=3, seed=0))
     assert result.claims == []
     assert list(result.table["model"]) == ["neutral", "proud", "old"] and (result.table["samples"] == 3).all()
     rows = result.figure["rows"]
@@ -755,7 +777,7 @@ def test_evaluate_fig5_4_and_its_animation(style_run, layout):
     assert frames.ndim == 4 and frames.shape[-1] == 3
     result.figure["animations"]["styles"] = []
     with pytest.raises(ValueError, match="no styles models to animate"):
-        animate_fig5_4(result, "styles")
+        animate_fig5_4(result, "styles", panel_px=60)
 
 
 def test_draw_training():
@@ -796,7 +818,20 @@ def test_autoencoder_trains_on_a_fixed_thread_count(monkeypatch):
     try:
         torch.set_num_threads(1)
         with pytest.raises(RuntimeError, match="stop here"):
-            training.fit_feature_space(None, None, None)
+            training.fit_feature_space(None, None, StyleSettings())
         assert seen == [training.AUTOENCODER_THREADS] and torch.get_num_threads() == 1  # restored on the way out
     finally:
         torch.set_num_threads(before)
+
+
+def test_settings_defaults_are_the_thesis_values():
+    """StyleSettings' defaults: Sec. 5.3-5.4.1's values (config.yaml sets the CPU budgets)."""
+    s = StyleSettings()
+    assert (s.autoencoder.kernels, s.autoencoder.kernel_width, s.autoencoder.window_stride) == (256, 15, 30)
+    assert (s.autoencoder.epochs, s.autoencoder.lr) == (300, 1e-4)
+    for sub in (s.vae, s.cvae):
+        assert (sub.epochs, sub.lr, sub.optimizer) == (1000, 1e-5, "sgd")
+    assert (s.vae.latent, s.vae.samples_per_input, s.cvae.alpha, s.cvae.gram) == (32, 10, 200.0, "sum")
+    assert (s.distance_samples, s.diversity_samples) == (1000, 10000)
+    with pytest.raises(ValueError, match="style.vae.epoch"):
+        StyleSettings.from_dict({"vae": {"epoch": 3}})

@@ -19,6 +19,7 @@ from motionvar.ma2010 import figures
 from motionvar.ma2010.evaluations.fig3 import fig3_keyframes
 from motionvar.ma2010.evaluations.sec7_4 import sec7_4_comparison
 from motionvar.ma2010.examples import WalkCycles, walk_cycles
+from motionvar.ma2010.settings import Ma2010Settings
 from motionvar.prep import detect_foot_contacts, format_intervals
 
 JM = cmu_joint_map()
@@ -48,7 +49,7 @@ def legend_labels(fig) -> list[str]:
 
 
 def test_fig3_without_whole_steps_is_not_applicable_with_the_reason(tmp_path):
-    result = fig3_keyframes(walks(tmp_path, n_cycles=0.3), JM, ["neutral"], ["forward"])
+    result = fig3_keyframes(walks(tmp_path, n_cycles=0.3), JM, Ma2010Settings())
     assert len(result.claims) == 1
     claim = result.claims[0]
     assert claim.claim_id == "ma2010.fig3.walk_keyframes_at_one_gait_phase" and claim.verdict == "not applicable"
@@ -60,7 +61,7 @@ def test_fig3_without_whole_steps_is_not_applicable_with_the_reason(tmp_path):
 
 @pytest.mark.parametrize("contacts, label", [(False, "detected"), (True, "ground truth")])
 def test_fig3_says_where_the_foot_strikes_come_from(tmp_path, contacts, label):
-    result = fig3_keyframes(walks(tmp_path, n_cycles=2, contacts=contacts), JM, ["neutral"], ["forward"])
+    result = fig3_keyframes(walks(tmp_path, n_cycles=2, contacts=contacts), JM, Ma2010Settings())
     assert [c.verdict for c in result.claims] != ["not applicable"]
     source = "generator ground truth" if contacts else "detected from foot contacts"
     assert f"Steps run from one foot strike ({source}" in result.claims[0].note
@@ -76,18 +77,19 @@ def test_walk_cycles_say_what_the_walks_lack(tmp_path):
         "[0-9.]+-[0-9.]+ s, median [0-9.]+ s\\); need at least 3.*"
         "two foot strikes of each foot",
     ):
-        walk_cycles(walks(tmp_path, n_cycles=0.3), JM, ["neutral"], ["forward"], n_frames=24, what="meta.csv")
+        walk_cycles(walks(tmp_path, n_cycles=0.3), JM, Ma2010Settings(n_frames=24), what="meta.csv")
 
 
 def test_sec7_4_needs_cycles_of_two_subjects(tmp_path):
-    clips, table = walk_cycles(walks(tmp_path, n_cycles=3, n_clips=2), JM, ["neutral"], ["forward"], n_frames=24)
-    one = WalkCycles(clips, ["solo"] * clips.n_clips, JM, source="my walks")
+    settings = Ma2010Settings(n_frames=24)
+    clips, table = walk_cycles(walks(tmp_path, n_cycles=3, n_clips=2), JM, settings)
+    one = WalkCycles(clips, ["solo"] * clips.n_clips, JM, source="my walks", root_group=settings.root_group)
     with pytest.raises(
         NotApplicable,
         match=f"my walks: 1 subject\\(s\\) among the {clips.n_clips} walking cycles; Sec. "
         "7.4 takes its example cycles one per subject.*at least 2 subjects",
     ):
-        sec7_4_comparison(one)
+        sec7_4_comparison(one, settings)
 
 
 # ----------------------------------------------------------------------------- Du 2022 call sites

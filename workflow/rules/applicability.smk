@@ -19,7 +19,7 @@ checkpoint applicability:
         graph=config_params("graph", ["primitives", "synthesis.reach_primitive"]),
         graph_search=config_params("graph", ["search.primitives"]),
         style=config_params("style", ["styles", "vae_primitives", "style_primitives", "distance_primitive"]),
-        idle=config_params("egges2004", ["held_out_clips"]),
+        egges2004=config_params("egges2004", ["held_out_clips"]),
     log:
         ev_log("applicability"),
     benchmark:

@@ -42,14 +42,14 @@ STABILITY_OUTPUTS = [STABILITY_CSV, f"{STABILITY}/claims_stability.png", f"{STAB
 # would weigh two lower priorities together against one higher (measured: it started two
 # one-core jobs before the autoencoder).
 PRIORITY = {
-    "style_autoencoder": 100,
+    "du2022_style_autoencoder": 100,
     "du2022_fda_canonical": 90,
     "du2022_fda_basis": 80,
     "du2022_fda_sfpca": 70,
     "du2022_fda_curves": 60,
-    "style_vae": 50,
+    "du2022_style_vae": 50,
     "du2022_table3_1": 40,
-    "style_cvae": 30,
+    "du2022_style_cvae": 30,
     "du2022_graph_primitive": 20,
 }
 

@@ -2,8 +2,8 @@
 # a rule file that defines functions).
 
 FDA = "results/{dataset}/models/du2022_fda"
-FDA_METHODS = ["fpca", "normalized_fpca", "sfpca", "gplvm"]
-# the curves of one primitive are computed in two jobs that can run side by side
+# the curves of one primitive are computed in two jobs that can run side by side (the methods
+# of motionvar.du2022.fda.evaluations.curves.METHODS)
 FDA_PARTS = {"pca": ["fpca", "normalized_fpca", "sfpca"], "gplvm": ["gplvm"]}
 # SFPCA models at Table 3.1's reference dimension, one per primitive (rule du2022_fda_sfpca)
 FDA_SFPCA = f"{FDA}/sfpca"

@@ -1,7 +1,8 @@
 # Du 2022 ch. 4, Morphable Graph (Herrmann et al. 2017): motion primitives (DTW + SFPCA +
 # GMM/BIC) fitted to the primitives of the prep stage, space-partitioning tree search
 # (Fig. 4.12), sample diversity (Fig. 4.9), constrained synthesis (Fig. 4.10) and
-# compactness (Sec. 4.6.1). Options: config.graph (config/schema.yaml).
+# compactness (Sec. 4.6.1). Options: config.graph (motionvar.du2022.graph.settings.GraphSettings,
+# config/schema.yaml).
 
 
 include: "du2022_graph_helpers.smk"
@@ -19,7 +20,7 @@ rule du2022_graph_dense_picks:
         metadata=f"{GRAPH}/dense_picks/metadata.csv",
     params:
         entry=graph_dense_entry,
-        options=config_params("graph", ["dense_picks_per_subject", "dense_grid_spacing_cm"]),
+        settings=graph_settings("dense_picks_per_subject", "dense_grid_spacing_cm"),
         prep=config["prep"],
         joint_map=lambda wc: joint_map_path(wc.dataset),
     log:
@@ -42,7 +43,7 @@ rule du2022_graph_primitive:
         model=f"{GRAPH}/{{primitive}}.npz",
         meta=f"{GRAPH}/{{primitive}}.json",
     params:
-        options=graph_params("model", keys=["seed"]),
+        settings=graph_settings("seed", "model"),
     log:
         ev_log("du2022_graph_primitive", "{primitive}"),
     benchmark:
@@ -66,15 +67,7 @@ rule du2022_graph_search:
         queries=f"{GRAPH}/search/{{primitive}}.csv",
         trees=f"{GRAPH}/search/{{primitive}}_trees.csv",
     params:
-        settings=config_params(
-            "graph",
-            ["seed"]
-            + [
-                f"search.{k}"
-                for k in ("n_samples", "n_queries", "beam", "beams", "max_evaluations", "leaf_size", "n_random")
-            ],
-        ),
-        joints=config_params("graph", ["search.joints", "search.default_joint", "search.pose_joints"]),
+        settings=graph_settings("seed", "search"),
         joint_map=lambda wc: joint_map_path(wc.dataset),
     log:
         ev_log("du2022_graph_search", "{primitive}"),
@@ -99,7 +92,7 @@ rule du2022_graph_edges:
         model=GRAPH_EDGES[0],
         settings=GRAPH_EDGES[1],
     params:
-        options=graph_params("synthesis", keys=["seed"]),
+        settings=graph_settings("seed", "synthesis"),
         joint_map=lambda wc: joint_map_path(wc.dataset),
     log:
         ev_log("du2022_graph_edges"),
@@ -114,63 +107,68 @@ rule du2022_graph_edges:
         "../scripts/du2022_graph_edges.py"
 
 
-# The evaluations (tables, figures, claims): one rule each, same body; evaluation ->
-# (published figure, inputs, params, mem_mb, further outputs). Script: ../scripts/<evaluation>.py.
-# The script path comes from params.evaluation: Snakemake resolves a script path again when
-# a job runs, when a loop variable holds the last name any loop gave it.
+# The evaluations (tables, figures, claims): one rule each, made by evaluations.smk from
+# these specs (script ../scripts/<name>.py, params.settings = config.graph).
 GRAPH_JOINT_MAP = {"joint_map": lambda wc: joint_map_path(wc.dataset)}
-GRAPH_EVALUATIONS = {
-    "du2022_fig4_12": ("Fig. 4.12", {"queries": graph_search_tables}, {}, 2000, {}),
-    "du2022_fig4_9": (
-        "Fig. 4.9",
-        {"models": graph_diversity_models, "clips": f"{PREP}/clips.npz", "metadata": f"{PREP}/metadata.csv",
-         "joint_map": joint_map_input},
-        {"options": graph_params("diversity", keys=["seed"]), **GRAPH_JOINT_MAP},
-        3000,
-        {},
-    ),
-    "du2022_sec4_6_1": (
-        "Sec. 4.6.1",
-        {"models": graph_all_models, "metadata": f"{PREP}/metadata.csv", "dense": graph_dense_metadata},
-        {},
-        2000,
-        {},
-    ),
-    "du2022_fig4_10": (
-        "Fig. 4.10",
-        {"models": graph_synthesis_models, "clips": f"{PREP}/clips.npz", "metadata": f"{PREP}/metadata.csv",
-         "joint_map": joint_map_input},
-        {"options": graph_params("synthesis", keys=["seed"]), **GRAPH_JOINT_MAP},
-        3000,
-        {"gif": "results/{dataset}/figures/du2022_fig4_10.gif"},
-    ),
-}
 
-for _ev, (_figure, _input, _params, _mem_mb, _extra) in GRAPH_EVALUATIONS.items():
-    register_evaluation(_ev, paper="du2022", extra=list(_extra.values()))
-
-    rule:
-        name:
-            _ev
-        input:
-            **_input,
-        output:
-            table=in_report(ev_table(_ev), "du2022", f"../report/{_ev}.rst", figure=_figure, kind="table"),
-            figure=in_report(ev_figure(_ev), "du2022", f"../report/{_ev}.rst", figure=_figure, kind="figure"),
-            claims=ev_claims(_ev),
-            **{k: in_report(p, "du2022", f"../report/{_ev}.rst", figure=_figure, kind="animation")
-               for k, p in _extra.items()},
-        params:
-            evaluation=_ev,  # names the script (a script path is resolved again when the job runs)
-            **_params,
-        log:
-            ev_log(_ev),
-        benchmark:
-            ev_benchmark(_ev)
-        threads: 1
-        resources:
-            mem_mb=_mem_mb,
-        conda:
-            ENV
-        script:
-            "../scripts/{params.evaluation}.py"
+register_evaluation(
+    EvaluationSpec(
+        name="du2022_fig4_12",
+        paper="du2022",
+        label="Fig. 4.12",
+        section="graph",
+        inputs={"queries": graph_search_tables},
+        mem_mb=2000,
+    )
+)
+register_evaluation(
+    EvaluationSpec(
+        name="du2022_fig4_9",
+        paper="du2022",
+        label="Fig. 4.9",
+        section="graph",
+        inputs={
+            "models": graph_diversity_models,
+            "clips": f"{PREP}/clips.npz",
+            "metadata": f"{PREP}/metadata.csv",
+            "joint_map": joint_map_input,
+        },
+        params=GRAPH_JOINT_MAP,
+        mem_mb=3000,
+    )
+)
+register_evaluation(
+    EvaluationSpec(
+        name="du2022_sec4_6_1",
+        paper="du2022",
+        label="Sec. 4.6.1",
+        section="graph",
+        inputs={"models": graph_all_models, "metadata": f"{PREP}/metadata.csv", "dense": graph_dense_metadata},
+        mem_mb=2000,
+    )
+)
+register_evaluation(
+    EvaluationSpec(
+        name="du2022_fig4_10",
+        paper="du2022",
+        label="Fig. 4.10",
+        section="graph",
+        inputs={
+            "models": graph_synthesis_models,
+            "clips": f"{PREP}/clips.npz",
+            "metadata": f"{PREP}/metadata.csv",
+            "joint_map": joint_map_input,
+        },
+        outputs={
+            "gif": in_report(
+                "results/{dataset}/figures/du2022_fig4_10.gif",
+                "du2022",
+                "../report/du2022_fig4_10.rst",
+                figure="Fig. 4.10",
+                kind="animation",
+            )
+        },
+        params=GRAPH_JOINT_MAP,
+        mem_mb=3000,
+    )
+)

@@ -11,10 +11,12 @@ GRAPH_EDGES = [f"{GRAPH}/graph/edges.npz", f"{GRAPH}/graph/edges.json"]
 DATASET_MODELS.extend(GRAPH_EDGES)
 
 
-def graph_params(*sections, keys=()):
-    """``keys`` of config.graph plus every key of its subsections ``sections``, flat (for
-    ``params:``; see config_params)."""
-    return config_params("graph", list(keys) + [f"{s}.{k}" for s in sections for k in GRAPH_CFG[s]])
+def graph_settings(*keys):
+    """The keys (top-level keys or whole subsections) of config.graph that a job reads, as its
+    ``params.settings`` (so that editing another key does not rerun it): its script builds
+    GraphSettings (motionvar.du2022.graph.settings) from them, the others at their defaults
+    and not read."""
+    return {k: GRAPH_CFG[k] for k in keys}
 
 
 def graph_dense_entry(wildcards):

@@ -1,8 +1,9 @@
 # Ma et al. 2010, "Modeling Style and Variation in Human Motion": walking cycles cut at
 # the key frames (Sec. 4), the hierarchical model (Sec. 5-6) and its evaluations
-# (Fig. 3, 6, 7b, 8, Sec. 7.4, Sec. 8; one rule each, generated from MA2010_EVALUATIONS in
-# ma2010_helpers.smk; the library functions in motionvar.ma2010.evaluations). Options:
-# config.ma2010 (config/schema.yaml).
+# (Fig. 3, 6, 7b, 8, Sec. 7.4, Sec. 8; one rule each, made by evaluations.smk from the
+# EvaluationSpecs of ma2010_helpers.smk; the library functions in motionvar.ma2010.evaluations).
+# Options: config.ma2010 (motionvar.ma2010.settings.Ma2010Settings; config/schema.yaml); every
+# rule passes the whole section as params.settings.
 
 include: "ma2010_helpers.smk"
 
@@ -16,9 +17,7 @@ rule ma2010_clips:
         clips_settings=f"{MA2010}/walk_clips.json",
         table=f"{MA2010}/walk_cycles.csv",
     params:
-        options=config_params(
-            "ma2010", ["walk_styles", "walk_variants", "n_frames", "keyframe_prominence", "keyframe_min_separation_s"]
-        ),
+        settings=config["ma2010"],
         joint_map=lambda wc: joint_map_path(wc.dataset),
     log:
         ev_log("ma2010_clips"),
@@ -43,7 +42,7 @@ rule ma2010_model:
         model=MA2010_MODEL[0],
         settings=MA2010_MODEL[1],
     params:
-        options=config_params("ma2010", _MODEL),
+        settings=config["ma2010"],
         joint_map=lambda wc: joint_map_path(wc.dataset),
     log:
         ev_log("ma2010_model"),
@@ -57,33 +56,3 @@ rule ma2010_model:
     script:
         "../scripts/ma2010_model.py"
 
-
-for _ev, _spec in MA2010_EVALUATIONS.items():
-
-    rule:
-        name:
-            _ev
-        input:
-            **MA2010_INPUTS[_spec["input"]],
-            joint_map=joint_map_input,
-        output:
-            table=in_report(ev_table(_ev), "ma2010", f"../report/{_ev}.rst", figure=_spec["figure"], kind="table"),
-            figure=in_report(ev_figure(_ev), "ma2010", f"../report/{_ev}.rst", figure=_spec["figure"], kind="figure"),
-            claims=ev_claims(_ev),
-            **_spec.get("output", {}),
-        params:
-            evaluation=_ev,  # names the script: a script: line is evaluated when the job runs, after the loop
-            options=config_params("ma2010", _spec["options"]),
-            joint_map=lambda wc: joint_map_path(wc.dataset),
-            **_spec.get("params", {}),
-        log:
-            ev_log(_ev),
-        benchmark:
-            ev_benchmark(_ev)
-        threads: 1
-        resources:
-            mem_mb=_spec["mem_mb"],
-        conda:
-            ENV
-        script:
-            "../scripts/{params.evaluation}.py"

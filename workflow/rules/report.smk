@@ -15,7 +15,7 @@ rule dataset_overview:
             figure="key frames per behaviour and walking style",
         ),
     params:
-        key_frames=config["report"]["overview_key_frames"],
+        settings=config["report"],
     log:
         ev_log("dataset_overview"),
     benchmark:
@@ -29,7 +29,7 @@ rule dataset_overview:
         "../scripts/dataset_overview.py"
 
 
-rule animation:
+rule dataset_animation:
     input:
         clips=f"{DATA}/clips.npz",
         metadata=f"{DATA}/metadata.csv",
@@ -41,14 +41,11 @@ rule animation:
             figure="animation, one clip per behaviour",
         ),
     params:
-        clips=config["report"]["animation_clips"],
-        seconds=config["report"]["animation_seconds"],
-        fps=config["report"]["animation_fps"],
-        panel_px=config["report"]["animation_panel_px"],
+        settings=config["report"],
     log:
-        ev_log("animation"),
+        ev_log("dataset_animation"),
     benchmark:
-        ev_benchmark("animation")
+        ev_benchmark("dataset_animation")
     threads: 1
     resources:
         mem_mb=2000,

@@ -1,7 +1,14 @@
-"""Loaders of the Egges 2004 rule scripts: joint map, fitted model, prep dataset and its
-analysed idle clips; and a figure writer."""
+"""Loaders of the Egges 2004 rule scripts: the settings of config section egges2004, joint
+map, fitted model, prep dataset and its analysed idle clips; and a figure writer."""
 
 from pathlib import Path
+
+
+def settings(snakemake):
+    """The rule's Egges2004Settings, from the whole config section (params.settings)."""
+    from motionvar.egges2004.settings import Egges2004Settings
+
+    return Egges2004Settings.from_dict(snakemake.params.settings)
 
 
 def joint_map(snakemake):

@@ -14,9 +14,16 @@ def joint_map(snakemake):
     return load_joint_map(path) if path else cmu_joint_map()
 
 
-def load_walks(snakemake):
+def settings(snakemake):
+    """The rule's Ma2010Settings, built from its whole config section (params.settings)."""
+    from motionvar.ma2010.settings import Ma2010Settings
+
+    return Ma2010Settings.from_dict(snakemake.params.settings)
+
+
+def load_walks(snakemake, settings):
     """The cycles of input ``clips`` (ClipSet model file) with the subjects and walks of input
-    ``table``; the root rotation in the joint group of option ``root_group`` (default legs)."""
+    ``table``; the root rotation in the joint group ``settings.root_group``."""
     import pandas as pd
 
     from motionvar.io.model_file import load_model
@@ -29,12 +36,11 @@ def load_walks(snakemake):
         raise ValueError(
             f"{snakemake.input.table} does not list the cycles of {snakemake.input.clips}; rerun ma2010_clips"
         )
-    root_group = snakemake.params.options.get("root_group", "legs")  # config ma2010.root_group
     return WalkCycles(
         clips,
         table["subject"].tolist(),
         joint_map(snakemake),
         source=snakemake.input.table,
-        root_group=root_group,
+        root_group=settings.root_group,
         source_clips=table["source_clip"].tolist(),
     )

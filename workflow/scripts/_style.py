@@ -1,6 +1,14 @@
-"""Loader shared by the Du 2022 ch. 5 rule scripts: the rule's torch threads, its dataset
-(input ``clips``), the feature joints of its rig (params ``joint_map``) and the trained
-feature space (input ``autoencoder``, when the rule has one)."""
+"""Loader shared by the Du 2022 ch. 5 rule scripts: the rule's settings (params
+``settings``, the config section ``style``), its torch threads, its dataset (input
+``clips``), the feature joints of its rig (params ``joint_map``) and the trained feature
+space (input ``autoencoder``, when the rule has one)."""
+
+
+def load_settings(snakemake):
+    """The rule's StyleSettings, from the config section it was given whole."""
+    from motionvar.du2022.style.settings import StyleSettings
+
+    return StyleSettings.from_dict(snakemake.params.settings)
 
 
 def load_inputs(snakemake):

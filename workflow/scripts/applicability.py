@@ -9,7 +9,7 @@ def main(snakemake) -> None:
 
     from motionvar.applicability import applicability_table
     from motionvar.du2022.requirements import fda_requirements, graph_requirements, style_requirements
-    from motionvar.egges2004.requirements import requirements as egges2004
+    from motionvar.egges2004.requirements import requirements as egges2004_requirements
     from motionvar.ma2010.requirements import requirements as ma2010
 
     p, g = snakemake.params, snakemake.params.graph
@@ -18,7 +18,7 @@ def main(snakemake) -> None:
         *ma2010(**p.ma2010),
         *fda_requirements(**p.fda),
         *style_requirements(**p.style),
-        *egges2004(**p.idle),
+        *egges2004_requirements(**p.egges2004),
         *graph_requirements(g["primitives"], p.graph_search["primitives"], walks, g["reach_primitive"]),
     ]
     meta = {stage: pd.read_csv(snakemake.input[stage], dtype=str, keep_default_na=False) for stage in ("data", "prep")}

@@ -1,4 +1,4 @@
-"""Rule animation: a GIF of one clip per behaviour, side by side."""
+"""Rule dataset_animation: a GIF of one clip per behaviour, side by side."""
 
 
 def main(snakemake) -> None:
@@ -7,18 +7,19 @@ def main(snakemake) -> None:
 
     from motionvar.io import load_dataset
     from motionvar.plots import animate_motions, overview_clips
+    from motionvar.report.settings import ReportSettings
 
-    p = snakemake.params
+    report = ReportSettings.from_dict(snakemake.params.settings)
     dataset = load_dataset(Path(snakemake.input.clips).parent)
     behaviours, _ = overview_clips(dataset.metadata)
-    chosen = behaviours[: p.clips]
+    chosen = behaviours[: report.animation_clips]
     size = animate_motions(
         snakemake.output[0],
         [dataset.motion(i) for _, i in chosen],
         labels=[label for label, _ in chosen],
-        out_fps=p.fps,
-        max_seconds=p.seconds,
-        panel_px=p.panel_px,
+        out_fps=report.animation_fps,
+        max_seconds=report.animation_seconds,
+        panel_px=report.animation_panel_px,
     )
     logging.info("%d clips, %.2f MB", len(chosen), size / 1e6)
 

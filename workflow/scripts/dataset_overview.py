@@ -8,11 +8,12 @@ def main(snakemake) -> None:
 
     from motionvar.io import load_dataset
     from motionvar.plots import dataset_overview
+    from motionvar.report.settings import ReportSettings
 
     dataset = load_dataset(Path(snakemake.input.clips).parent)
     fig = dataset_overview(
         dataset,
-        n_keys=snakemake.params.key_frames,
+        n_keys=ReportSettings.from_dict(snakemake.params.settings).overview_key_frames,
         title=f"Dataset '{snakemake.wildcards.dataset}': one clip per behaviour (left) and per walking style (right)",
     )
     fig.savefig(snakemake.output[0], dpi=110)

@@ -7,9 +7,10 @@ def main(snakemake) -> None:
     from _du2022_fda import canonical
 
     from motionvar.du2022.fda import choose_basis_sizes
+    from motionvar.du2022.fda.settings import FdaSettings
 
-    o = snakemake.params.options
-    rmse, chosen = choose_basis_sizes(canonical(snakemake), o["n_basis"], o["min_relative_drop"])
+    settings = FdaSettings.from_dict(snakemake.params.settings)
+    rmse, chosen = choose_basis_sizes(canonical(snakemake), settings.basis)
     rmse.to_csv(snakemake.output.rmse, index=False)
     chosen.to_csv(snakemake.output.n_basis, index=False)
 

@@ -7,11 +7,12 @@ def main(snakemake) -> None:
     from pathlib import Path
 
     from motionvar.du2022.fda import canonical_primitives
+    from motionvar.du2022.fda.settings import FdaSettings
     from motionvar.io import load_dataset, save_dataset
 
-    o = snakemake.params.options
+    s = FdaSettings.from_dict(snakemake.params.settings)
     dataset = load_dataset(Path(snakemake.input.clips).parent)
-    motions, metadata = canonical_primitives(dataset, o["behaviours"], o["min_clips"], o["time_warping"])
+    motions, metadata = canonical_primitives(dataset, s.behaviours, s.min_clips, s.time_warping)
     save_dataset(Path(snakemake.output.clips).parent, motions, metadata)
 
 

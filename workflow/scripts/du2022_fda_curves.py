@@ -12,23 +12,15 @@ def main(snakemake) -> None:
 
     from motionvar.du2022.fda import functional_primitive, n_basis_of
     from motionvar.du2022.fda.evaluations import reconstruction_curves
+    from motionvar.du2022.fda.settings import FdaSettings
 
     setup_threads(snakemake)
-    o, primitive = snakemake.params.options, snakemake.wildcards.primitive
+    settings = FdaSettings.from_dict(snakemake.params.settings)
+    primitive = snakemake.wildcards.primitive
     n_basis = n_basis_of(pd.read_csv(snakemake.input.n_basis), primitive, snakemake.input.n_basis)
     fd, meta = functional_primitive(canonical(snakemake), primitive, n_basis)
-    curves = reconstruction_curves(
-        fd,
-        meta["variant"],
-        primitive,
-        snakemake.params.methods,
-        o["dims"],
-        o["n_components"],
-        o["seed"],
-        o["sfpca"],
-        o["gplvm"],
-        load_sfpca(getattr(snakemake.input, "sfpca", [])).values(),
-    )
+    models = load_sfpca(getattr(snakemake.input, "sfpca", [])).values()
+    curves = reconstruction_curves(fd, meta["variant"], primitive, snakemake.params.methods, settings, models)
     with open(snakemake.output.curves, "wb") as fh:
         np.savez(fh, **curves)
 

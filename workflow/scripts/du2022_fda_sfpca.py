@@ -9,12 +9,14 @@ def main(snakemake) -> None:
 
     from motionvar.du2022.fda import functional_primitive, n_basis_of
     from motionvar.du2022.fda.evaluations.table3_1 import fit_reference_sfpca
+    from motionvar.du2022.fda.settings import FdaSettings
 
     setup_threads(snakemake)
-    o, primitive = snakemake.params.options, snakemake.wildcards.primitive
+    settings = FdaSettings.from_dict(snakemake.params.settings)
+    primitive = snakemake.wildcards.primitive
     n_basis = n_basis_of(pd.read_csv(snakemake.input.n_basis), primitive, snakemake.input.n_basis)
     fd, _ = functional_primitive(canonical(snakemake), primitive, n_basis)
-    model = fit_reference_sfpca(fd, o["sfpca"], o["reference_components"], o["max_components"])
+    model = fit_reference_sfpca(fd, settings)
     model.save(snakemake.output.model)
 
 

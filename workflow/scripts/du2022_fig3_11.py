@@ -9,17 +9,10 @@ def main(snakemake) -> None:
 
     from motionvar.du2022.fda.evaluations import evaluate_fig3_11
     from motionvar.du2022.fda.figures import draw_fig3_11
+    from motionvar.du2022.fda.settings import FdaSettings
 
-    o = snakemake.params.options
-    result = evaluate_fig3_11(
-        load_curves(snakemake.input.curves),
-        snakemake.params.methods,
-        o["primitives"],
-        o["pick_primitive"],
-        o["knn"],
-        o["tsne_perplexity"],
-        o["seed"],
-    )
+    settings = FdaSettings.from_dict(snakemake.params.settings)
+    result = evaluate_fig3_11(load_curves(snakemake.input.curves), settings)
     write_evaluation(snakemake, result, draw_fig3_11, float_format="%.6g")
 
 

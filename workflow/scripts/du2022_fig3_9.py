@@ -8,8 +8,10 @@ def main(snakemake) -> None:
 
     from motionvar.du2022.fda.evaluations import evaluate_fig3_9
     from motionvar.du2022.fda.figures import draw_fig3_9
+    from motionvar.du2022.fda.settings import FdaSettings
 
-    result = evaluate_fig3_9(pd.read_csv(snakemake.input.rmse), snakemake.params.options["min_relative_drop"])
+    settings = FdaSettings.from_dict(snakemake.params.settings)
+    result = evaluate_fig3_9(pd.read_csv(snakemake.input.rmse), settings)
     write_evaluation(snakemake, result, draw_fig3_9, float_format="%.6g")
 
 

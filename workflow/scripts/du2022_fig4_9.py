@@ -9,10 +9,12 @@ def main(snakemake) -> None:
 
     from motionvar.du2022.graph.evaluations import evaluate_fig4_9
     from motionvar.du2022.graph.figures import draw_fig4_9
+    from motionvar.du2022.graph.settings import GraphSettings
 
+    settings = GraphSettings.from_dict(snakemake.params.settings)
     clips = snakemake.input.clips
     result = evaluate_fig4_9(
-        models(snakemake.input.models), dataset(clips), joint_map(snakemake), source=clips, **snakemake.params.options
+        models(snakemake.input.models), dataset(clips), joint_map(snakemake), settings, source=clips
     )
     write_evaluation(snakemake, result, draw_fig4_9, float_format="%.6g")
 

@@ -9,15 +9,19 @@ def main(snakemake) -> None:
 
     from _graph import joint_map
 
+    from motionvar.du2022.graph.settings import GraphSettings
     from motionvar.io import save_dataset
     from motionvar.prep import PrepOptions, align_motions
     from motionvar.synth.dense_picks import dense_pick_segments
 
-    entry, o = snakemake.params.entry, snakemake.params.options
+    entry, settings = snakemake.params.entry, GraphSettings.from_dict(snakemake.params.settings)
     if entry["source"] != "synthetic":
         raise ValueError(f"dataset {snakemake.wildcards.dataset}: dense picks need the synthetic generator")
     pieces, meta = dense_pick_segments(
-        entry["subjects"], entry["seed"], o["dense_picks_per_subject"], grid_spacing_cm=o["dense_grid_spacing_cm"]
+        entry["subjects"],
+        entry["seed"],
+        settings.dense_picks_per_subject,
+        grid_spacing_cm=settings.dense_grid_spacing_cm,
     )
     motions = align_motions(pieces, joint_map(snakemake), PrepOptions.from_dict(snakemake.params.prep))
     save_dataset(Path(snakemake.output.clips).parent, motions, meta)

@@ -1,6 +1,6 @@
 """Rule du2022_graph_edges (Du 2022 Sec. 4.4, Fig. 4.6): the Morphable Graph's transitions
 (consecutive primitives of each clip of the prep metadata) with the rig's joint map and
-the settings of graph-walk synthesis (config graph.synthesis), saved beside the motion
+the settings of graph-walk synthesis (config graph.synthesis and graph.seed), saved beside the motion
 primitives (motionvar.du2022.graph.storage) for the `motionvar du2022 walk` command."""
 
 
@@ -11,10 +11,13 @@ def main(snakemake) -> None:
     from _graph import joint_map
 
     from motionvar.du2022.graph import MorphableGraph
+    from motionvar.du2022.graph.settings import GraphSettings
     from motionvar.du2022.graph.storage import save_graph
 
+    settings = GraphSettings.from_dict(snakemake.params.settings)
+    saved = {"seed": settings.seed, **settings.synthesis.to_dict()}
     graph = MorphableGraph.from_metadata(pd.read_csv(snakemake.input.metadata, dtype={"clip_id": str}))
-    save_graph(snakemake.output.model, graph, joint_map(snakemake), settings=dict(snakemake.params.options))
+    save_graph(snakemake.output.model, graph, joint_map(snakemake), settings=saved)
     logging.info("nodes %s; edges:\n%s", graph.nodes, graph.edge_table().to_string())
 
 

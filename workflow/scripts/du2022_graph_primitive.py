@@ -1,5 +1,6 @@
 """Rule du2022_graph_primitive (Du 2022 Sec. 4.4.1): fit one motion primitive (DTW +
-SFPCA + GMM chosen by BIC) to its aligned clips and save it (npz + json)."""
+SFPCA + GMM chosen by BIC) to its aligned clips and save it (npz + json); settings: config
+graph.model and graph.seed (params.settings)."""
 
 
 def main(snakemake) -> None:
@@ -8,9 +9,10 @@ def main(snakemake) -> None:
     from _graph import dataset
 
     from motionvar.du2022.graph import MotionPrimitive, PrimitiveOptions, primitive_clips
+    from motionvar.du2022.graph.settings import GraphSettings
 
-    name, o = snakemake.wildcards.primitive, dict(snakemake.params.options)
-    options = PrimitiveOptions(gmm_components=(o.pop("gmm_min"), o.pop("gmm_max")), **o)
+    name, settings = snakemake.wildcards.primitive, GraphSettings.from_dict(snakemake.params.settings)
+    options = PrimitiveOptions.from_settings(settings.model, settings.seed)
     # the dense-grid picks (du2022_graph_dense_picks) are pick_reach clips modelled as pick_reach_dense
     clips = snakemake.input.clips
     motions, _ = primitive_clips(dataset(clips), name.removesuffix("_dense"), source=clips)

@@ -1,7 +1,8 @@
 """Rule du2022_graph_search (Du 2022 Fig. 4.12, one primitive): random position,
 orientation and pose constraints searched by the k-means tree (at every beam measured),
 the GMM tree, the median tree (DFKI's kd-tree) and our median split, random sampling and
-brute force; one row per query, method and beam (column selected: the verdicts' beam)."""
+brute force; one row per query, method and beam (column selected: the verdicts' beam).
+Settings: config graph.search and graph.seed (params.settings)."""
 
 
 def main(snakemake) -> None:
@@ -9,11 +10,12 @@ def main(snakemake) -> None:
 
     from _graph import joint_map, models
 
-    from motionvar.du2022.graph.evaluations import SearchSettings, search_primitive
+    from motionvar.du2022.graph.evaluations import search_primitive
+    from motionvar.du2022.graph.settings import GraphSettings
 
-    p = snakemake.params
+    settings = GraphSettings.from_dict(snakemake.params.settings)
     (model,) = models([snakemake.input.model]).values()
-    queries, trees = search_primitive(model, joint_map(snakemake), SearchSettings(**p.settings), **p.joints)
+    queries, trees = search_primitive(model, joint_map(snakemake), settings)
     queries.to_csv(snakemake.output.queries, index=False)
     trees.to_csv(snakemake.output.trees, index=False)
     km = queries[queries["method"] == "kmeans"]

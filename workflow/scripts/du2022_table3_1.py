@@ -10,17 +10,11 @@ def main(snakemake) -> None:
 
     from motionvar.du2022.fda.evaluations import evaluate_table3_1
     from motionvar.du2022.fda.figures import draw_table3_1
+    from motionvar.du2022.fda.settings import FdaSettings
 
-    o = snakemake.params.options
-    result = evaluate_table3_1(
-        canonical(snakemake),
-        pd.read_csv(snakemake.input.n_basis),
-        o["sfpca"],
-        o["reference_components"],
-        o["max_components"],
-        o["observation_error_cm"],
-        sfpca_models=load_sfpca(snakemake.input.sfpca),
-    )
+    settings = FdaSettings.from_dict(snakemake.params.settings)
+    chosen = pd.read_csv(snakemake.input.n_basis)
+    result = evaluate_table3_1(canonical(snakemake), chosen, settings, sfpca_models=load_sfpca(snakemake.input.sfpca))
     write_evaluation(snakemake, result, draw_table3_1, float_format="%.6g")
 
 

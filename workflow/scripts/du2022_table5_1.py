@@ -4,24 +4,15 @@ between the samples of each model (neutral VAE, six CVAEs) and each style exampl
 
 def main(snakemake) -> None:
     from _rule import write_evaluation
-    from _style import load_inputs
+    from _style import load_inputs, load_settings
 
     from motionvar.du2022.style import evaluate_table5_1, load_vae
     from motionvar.du2022.style.figures import draw_table5_1
 
     dataset, layout, space = load_inputs(snakemake)
-    p = snakemake.params.options
-    result = evaluate_table5_1(
-        dataset,
-        layout,
-        space,
-        load_vae(snakemake.input.vaes[0]),
-        [load_vae(f) for f in snakemake.input.cvaes],
-        p["distance_primitive"],
-        n_frames=p["canonical_frames"],
-        n_samples=p["distance_samples"],
-        seed=p["seed"],
-    )
+    neutral = load_vae(snakemake.input.vaes[0])
+    cvaes = [load_vae(f) for f in snakemake.input.cvaes]
+    result = evaluate_table5_1(dataset, layout, space, neutral, cvaes, load_settings(snakemake))
     write_evaluation(snakemake, result, draw_table5_1, dpi=130)
 
 

@@ -5,24 +5,14 @@ and right stance."""
 
 def main(snakemake) -> None:
     from _rule import write_evaluation
-    from _style import load_inputs
+    from _style import load_inputs, load_settings
 
     from motionvar.du2022.style import evaluate_table5_2, load_vae
     from motionvar.du2022.style.figures import draw_table5_2
 
     dataset, layout, space = load_inputs(snakemake)
-    p = snakemake.params.options
-    result = evaluate_table5_2(
-        dataset,
-        layout,
-        space,
-        [load_vae(f) for f in [*snakemake.input.vaes, *snakemake.input.cvaes]],
-        p["style_primitives"],
-        n_frames=p["canonical_frames"],
-        n_samples=p["diversity_samples"],
-        seed=p["seed"],
-        pose_sd_tolerance=p["pose_sd_tolerance"],
-    )
+    models = [load_vae(f) for f in [*snakemake.input.vaes, *snakemake.input.cvaes]]
+    result = evaluate_table5_2(dataset, layout, space, models, load_settings(snakemake))
     write_evaluation(snakemake, result, draw_table5_2, dpi=120)
 
 

@@ -7,20 +7,18 @@ graphs (Fig. 3)."""
 def main(snakemake) -> None:
     import logging
 
-    from _egges2004 import joint_map, prep, save_figure
+    from _egges2004 import joint_map, prep, save_figure, settings
 
-    from motionvar.egges2004 import IdleSettings
     from motionvar.egges2004.evaluations import category_check
     from motionvar.egges2004.figures import draw_categories
     from motionvar.egges2004.pipeline import fit_idle_model, idle_clips, split_clips
     from motionvar.egges2004.storage import save_idle_model
 
-    p = snakemake.params.options
-    train, test = split_clips(idle_clips(*prep(snakemake)), p["held_out_clips"])
-    settings = IdleSettings(**p["analysis"])
-    model, _ = fit_idle_model(train, test, joint_map(snakemake), settings, p["translation_scale"], p["seed"])
+    s = settings(snakemake)
+    train, test = split_clips(idle_clips(*prep(snakemake)), s.held_out_clips)
+    model, _ = fit_idle_model(train, test, joint_map(snakemake), s)
     save_idle_model(snakemake.output.model, model)
-    result = category_check(model, train, p["figure_subjects"])
+    result = category_check(model, train, s)
     result.table.to_csv(snakemake.output.categories, index=False)
     save_figure(draw_categories(result), snakemake.output.graph)
     logging.info("%d subjects; categories:\n%s", len(model.databases), result.table.to_string())

@@ -8,24 +8,21 @@ def main(snakemake) -> None:
     import logging
     from pathlib import Path
 
-    from _ma2010 import joint_map
+    from _ma2010 import joint_map, settings
 
     from motionvar.io import load_dataset
     from motionvar.io.model_file import save_model
     from motionvar.ma2010.examples import CLIPSET_KIND, walk_cycles
 
-    o = snakemake.params.options
+    s = settings(snakemake)
     clips, table = walk_cycles(
         load_dataset(Path(snakemake.input.clips).parent),
         joint_map(snakemake),
-        o["walk_styles"],
-        o["walk_variants"],
-        o["n_frames"],
-        o["keyframe_prominence"],
-        o["keyframe_min_separation_s"],
+        s,
         what=f"{snakemake.input.metadata} (config ma2010.walk_styles / walk_variants)",
     )
-    save_model(snakemake.output.clips, clips.to_arrays(), {"kind": CLIPSET_KIND, **o})
+    saved = {k: v for k, v in s.to_dict().items() if k in s.CLIP_KEYS}
+    save_model(snakemake.output.clips, clips.to_arrays(), {"kind": CLIPSET_KIND, **saved})
     table.to_csv(snakemake.output.table, index=False)
     logging.info("%d cycles of %d subjects", clips.n_clips, table["subject"].nunique())
 

@@ -5,23 +5,17 @@ the maxima of S_M(t) fall at one gait phase (motionvar.ma2010.evaluations.fig3).
 def main(snakemake) -> None:
     from pathlib import Path
 
-    from _ma2010 import joint_map
+    from _ma2010 import joint_map, settings
     from _rule import write_evaluation
 
     from motionvar.io import load_dataset
     from motionvar.ma2010.evaluations.fig3 import fig3_keyframes
     from motionvar.ma2010.figures import draw_fig3
 
-    o = snakemake.params.options
     result = fig3_keyframes(
         load_dataset(Path(snakemake.input.clips).parent),
         joint_map(snakemake),
-        o["walk_styles"],
-        o["walk_variants"],
-        o["keyframe_prominence"],
-        o["keyframe_min_separation_s"],
-        o["fig3_max_clips"],
-        o["fig3_phase_sd"],
+        settings(snakemake),
         what=f"{snakemake.input.metadata} (config ma2010.walk_styles / walk_variants)",
     )
     write_evaluation(snakemake, result, draw_fig3)

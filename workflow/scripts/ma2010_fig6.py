@@ -4,22 +4,14 @@ as an ablation; Kriging vs RBF on the same folds (motionvar.ma2010.evaluations.f
 
 
 def main(snakemake) -> None:
-    from _ma2010 import load_walks
+    from _ma2010 import load_walks, settings
     from _rule import write_evaluation
 
     from motionvar.ma2010.evaluations.fig6 import fig6_leave_one_out
     from motionvar.ma2010.figures import draw_fig6
 
-    o = snakemake.params.options
-    result = fig6_leave_one_out(
-        load_walks(snakemake),
-        o["structure"],
-        o["variogram_model"],
-        o["seed"],
-        o["loo_max_clips"],
-        o["loo_unit"],
-        stride_reference=o["fig6_stride_reference"],
-    )
+    s = settings(snakemake)
+    result = fig6_leave_one_out(load_walks(snakemake, s), s)
     write_evaluation(snakemake, result, draw_fig6)
 
 

@@ -3,18 +3,15 @@ style space (motionvar.ma2010.evaluations.fig7b)."""
 
 
 def main(snakemake) -> None:
-    from _ma2010 import load_walks
+    from _ma2010 import load_walks, settings
     from _rule import write_evaluation
 
     from motionvar.ma2010.evaluations.fig7b import fig7b_reliability
     from motionvar.ma2010.figures import draw_fig7b
 
-    o = snakemake.params.options
-    walks = load_walks(snakemake)
-    model = walks.fit_model(o["structure"], o["variogram_model"])
-    write_evaluation(
-        snakemake, fig7b_reliability(walks, model, o["reliability_grid"], o["reliability_margin"]), draw_fig7b
-    )
+    s = settings(snakemake)
+    walks = load_walks(snakemake, s)
+    write_evaluation(snakemake, fig7b_reliability(walks, walks.fit_model(s), s), draw_fig7b)
 
 
 if "snakemake" in globals():

@@ -4,19 +4,15 @@ xi sampled, their spread per joint group against the data's, RBF's and Kriging's
 
 
 def main(snakemake) -> None:
-    from _ma2010 import load_walks
+    from _ma2010 import load_walks, settings
     from _rule import write_evaluation
 
     from motionvar.ma2010.evaluations.fig8 import fig8_fixed_style
     from motionvar.ma2010.figures import draw_fig8
 
-    o = snakemake.params.options
-    walks = load_walks(snakemake)
-    model = walks.fit_model(o["structure"], o["variogram_model"])
-    result = fig8_fixed_style(
-        walks, model, o["fig8_variants"], o["seed"], o["variogram_model"], o["spread_ratio_bounds"]
-    )
-    write_evaluation(snakemake, result, draw_fig8)
+    s = settings(snakemake)
+    walks = load_walks(snakemake, s)
+    write_evaluation(snakemake, fig8_fixed_style(walks, walks.fit_model(s), s), draw_fig8)
 
 
 if "snakemake" in globals():

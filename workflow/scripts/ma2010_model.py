@@ -6,20 +6,20 @@ the walking cycles (config ma2010.structure, variogram_model, root_group) and sa
 def main(snakemake) -> None:
     import logging
 
-    from _ma2010 import load_walks
+    from _ma2010 import load_walks, settings
 
     from motionvar.ma2010.storage import save_style_variation_model
 
-    o = snakemake.params.options
-    walks = load_walks(snakemake)
-    model = walks.fit_model(o["structure"], o["variogram_model"])
+    s = settings(snakemake)
+    walks = load_walks(snakemake, s)
+    model = walks.fit_model(s)
     save_style_variation_model(
         snakemake.output.model,
         model,
         walks.joint_map,
         walks.clips.clip_ids,
         walks.subjects,
-        settings={k: o[k] for k in ("structure", "variogram_model", "root_group") if k in o},
+        settings={k: getattr(s, k) for k in ("structure", "variogram_model", "root_group")},
     )
     logging.info(
         "%d cycles of %d subjects; structure %s; style range %s - %s",

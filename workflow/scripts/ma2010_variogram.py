@@ -4,16 +4,14 @@ residuals per joint group and for Kriging on style alone, with the fitted variog
 
 
 def main(snakemake) -> None:
-    from _ma2010 import load_walks
+    from _ma2010 import load_walks, settings
     from _rule import write_evaluation
 
     from motionvar.ma2010.evaluations.variogram import variogram_fits
     from motionvar.ma2010.figures import draw_variogram
 
-    o = snakemake.params.options
-    walks = load_walks(snakemake)
-    result = variogram_fits(walks, o["structure"], o["variogram_model"], o["variogram_scale"], o["seed"])
-    write_evaluation(snakemake, result, draw_variogram)
+    s = settings(snakemake)
+    write_evaluation(snakemake, variogram_fits(load_walks(snakemake, s), s), draw_variogram)
 
 
 if "snakemake" in globals():

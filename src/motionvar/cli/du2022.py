@@ -131,9 +131,8 @@ def run_walk(args: argparse.Namespace) -> int:
         )
     max_steps = args.max_steps or steps_for_path(primitives, path, saved.joint_map, settings)
     settings = walk_settings(saved.settings, max_steps)
-    samples = int(saved.settings.get("tree_samples", 10000))
     with Progress("du2022 walk (trees, then the walk)", len(primitives) + 1, enabled=not args.quiet) as bar:
-        walk = walk_along_path(primitives, saved.graph, path, saved.joint_map, settings, samples, args.seed, bar)
+        walk = walk_along_path(primitives, saved.graph, path, saved.joint_map, settings, args.seed, bar)
     write_motions([out], [on_rig(walk.motion, dataset_rig(rd))], args.unit_cm)
     hips = saved.joint_map.index(walk.motion.skeleton, "hips")
     gap = walk.end_gap_cm(hips)

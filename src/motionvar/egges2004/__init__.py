@@ -13,6 +13,7 @@
 - :mod:`.pipeline`: from a dataset's idle clips to the fitted model of all subjects;
   :mod:`.storage`: that model as .npz + .json
 - :mod:`.evaluations`: the paper's evaluations, one module each; :mod:`.figures` draws them
+- :mod:`.settings`: config section ``egges2004`` (:class:`Egges2004Settings`), the one place its defaults are written
 """
 
 from ..core.lazy import lazy_exports
@@ -22,22 +23,24 @@ from ..core.lazy import lazy_exports
 _EXPORTS = {
     ".balance": ["Event", "synthesize_balance", "time_scale"],
     ".categories": ["CategoryModel", "find_categories", "posture_speed", "static_segments", "support_ratio"],
-    ".database": ["IdleDatabase", "IdleSettings", "Recording", "analyse_recording", "build_database"],
+    ".database": ["IdleDatabase", "Recording", "analyse_recording", "build_database"],
     ".engine": ["generate_idle", "generate_idle_pcs"],
     ".fitting": ["best_fitting_animation", "fit_anim", "fit_anim_part", "posture_distance"],
     ".category_graph": ["CategoryGraph"],
     ".integration": ["add_variations", "blend_motions", "idle_between", "joint_mask"],
     ".pca": ["PosturePCA", "posture_vectors"],
+    ".settings": ["AnalysisSettings", "Egges2004Settings"],
     ".variations": ["VariationModel", "extrema_pairs", "find_extrema", "fit_variation_model"],
 }
 __getattr__, __dir__ = lazy_exports(__name__, _EXPORTS)
 
 __all__ = [
+    "AnalysisSettings",
     "CategoryGraph",
     "CategoryModel",
+    "Egges2004Settings",
     "Event",
     "IdleDatabase",
-    "IdleSettings",
     "PosturePCA",
     "Recording",
     "VariationModel",

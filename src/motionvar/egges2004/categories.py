@@ -93,9 +93,9 @@ def find_categories(
     postures: np.ndarray,
     support: np.ndarray,
     weights: np.ndarray,
-    max_categories: int = 3,
-    margin: float = 0.1,
-    seed: int = 0,
+    max_categories: int,
+    margin: float,
+    seed: int,
 ) -> tuple[CategoryModel, np.ndarray]:
     """Cluster the mean postures (n, D) of static segments into categories.
 

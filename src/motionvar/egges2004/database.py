@@ -27,40 +27,10 @@ from .categories import (
 )
 from .category_graph import CategoryGraph
 from .pca import PosturePCA
+from .settings import AnalysisSettings
 from .variations import VariationModel, fit_variation_model
 
 HORIZONTAL = np.array([1.0, 0.0, 1.0])  # x, z; the vertical (y) is kept (Sec. 3.1, 5.2)
-
-
-@dataclass(frozen=True)
-class IdleSettings:
-    """Analysis settings (rule scripts fill them from config; see config/schema.yaml).
-
-    Attributes:
-        smooth_s: Gaussian smoothing (s) of the PC curves before the posture speed.
-        rest_speed: posture-speed threshold (Eq. 4 units per second) below which a frame
-            rests; None picks it per person as the boundary of a two-component Gaussian
-            mixture of log speeds (rest vs shift).
-        min_rest_s: shortest resting segment (s).
-        min_shift_rms: a gap between two resting segments is a balance shift only if the
-            mean postures on both sides differ by this many times the resting sway RMS
-            (Eq. 4 metric); otherwise the segments are joined.
-        max_categories: k of the k-means on resting postures (the most categories).
-        support_margin: margin around 0.5 of the support ratio for naming left / right.
-        variation_pcs: how many leading PCs get small variations (Sec. 6.2: a subset).
-        extrema_eps_sd: extremum error epsilon in standard deviations of the PC.
-        variation_clusters: k of the k-means on (distance, value) pairs.
-    """
-
-    smooth_s: float = 0.15
-    rest_speed: float | None = None
-    min_rest_s: float = 1.0
-    min_shift_rms: float = 5.0
-    max_categories: int = 3
-    support_margin: float = 0.1
-    variation_pcs: int = 10
-    extrema_eps_sd: float = 0.5
-    variation_clusters: int = 6
 
 
 @dataclass(frozen=True)
@@ -78,7 +48,7 @@ def analyse_recording(motion: Motion, pca: PosturePCA, joint_map: JointMap, name
     return Recording(name, pca.project(motion), support_ratio(motion, joint_map), motion.fps)
 
 
-def rest_speed_threshold(speeds: np.ndarray, seed: int = 0) -> float:
+def rest_speed_threshold(speeds: np.ndarray, seed: int) -> float:
     """Boundary between the rest and the shift components of a two-component Gaussian
     mixture of log posture speeds (the speed where both are equally likely)."""
     from sklearn.mixture import GaussianMixture  # only fitting needs scikit-learn (a slow import)
@@ -148,17 +118,60 @@ def remove_translation_offset(anim: np.ndarray, pca: PosturePCA) -> np.ndarray:
 def build_database(
     recordings: Sequence[Recording],
     pca: PosturePCA,
-    settings: IdleSettings,
+    settings: AnalysisSettings,
     subject: str,
-    seed: int = 0,
+    seed: int,
 ) -> IdleDatabase:
-    """Analyse one person's recordings into an :class:`IdleDatabase`."""
+    """Analyse one person's recordings into an :class:`IdleDatabase`: resting segments and
+    their categories (Sec. 5.1), the balance shifts between them with the translation
+    offset removed (Sec. 5.2), the category graph and posture sets Q_c (Sec. 5.3) and the
+    small-variation model fitted on the rests (Sec. 6)."""
     if not recordings:
         raise ValueError(f"subject {subject}: no idle recordings")
     fps = recordings[0].fps
     if any(r.fps != fps for r in recordings):
         raise ValueError(f"subject {subject}: idle recordings have different frame rates")
     weights = pca.weights()
+    segs, threshold = _resting_segments(recordings, weights, fps, settings, subject, seed)
+    means = np.concatenate([[r.pcs[a:b].mean(axis=0) for a, b in s] for r, s in zip(recordings, segs) if len(s)])
+    supp = np.concatenate([[r.support[a:b].mean() for a, b in s] for r, s in zip(recordings, segs) if len(s)])
+    cat_model, seg_cat = find_categories(means, supp, weights, settings.max_categories, settings.support_margin, seed)
+    k = len(cat_model.names)
+    per_rec = np.split(seg_cat, np.cumsum([len(s) for s in segs])[:-1])
+    graph, animations, a_from, a_to, rest_mid = _transitions(recordings, segs, per_rec, cat_model, pca, subject)
+    postures = _posture_sets(animations, a_from, a_to, rest_mid, pca, k)
+    rests = [r.pcs[a:b] for r, s in zip(recordings, segs) for a, b in s]
+    n_var = min(settings.variation_pcs, pca.n_dims)
+    variations = fit_variation_model(
+        rests, np.arange(n_var), fps, settings.extrema_eps_sd, settings.variation_clusters, seed
+    )
+    return IdleDatabase(
+        subject=subject,
+        fps=fps,
+        weights=weights,
+        categories=cat_model,
+        graph=graph,
+        animations=animations,
+        anim_from=a_from,
+        anim_to=a_to,
+        postures=postures,
+        variations=variations,
+        rest_speed=float(threshold),
+        segments={r.name: (s, c) for r, s, c in zip(recordings, segs, per_rec)},
+    )
+
+
+def _resting_segments(
+    recordings: Sequence[Recording],
+    weights: np.ndarray,
+    fps: float,
+    settings: AnalysisSettings,
+    subject: str,
+    seed: int,
+) -> tuple[list[np.ndarray], float]:
+    """Per recording, the (n, 2) resting intervals (Sec. 5.1): frames below the posture-speed
+    threshold for at least ``min_rest_s``, with rests joined across a gap that does not
+    move the mean posture by ``min_shift_rms`` times the resting sway; and the threshold."""
     speeds = [posture_speed(r.pcs, weights, fps, settings.smooth_s) for r in recordings]
     threshold = settings.rest_speed
     if threshold is None:
@@ -171,12 +184,22 @@ def build_database(
         )
     spread = np.sqrt(np.mean([rest_spread(s, r.pcs, weights) ** 2 for r, s in zip(recordings, segs) if len(s)]))
     segs = [merge_close_rests(s, r.pcs, weights, settings.min_shift_rms * spread) for r, s in zip(recordings, segs)]
-    means = np.concatenate([[r.pcs[a:b].mean(axis=0) for a, b in s] for r, s in zip(recordings, segs) if len(s)])
-    supp = np.concatenate([[r.support[a:b].mean() for a, b in s] for r, s in zip(recordings, segs) if len(s)])
-    cat_model, seg_cat = find_categories(means, supp, weights, settings.max_categories, settings.support_margin, seed)
-    k = len(cat_model.names)
-    per_rec = np.split(seg_cat, np.cumsum([len(s) for s in segs])[:-1])
+    return segs, threshold
 
+
+def _transitions(
+    recordings: Sequence[Recording],
+    segs: list[np.ndarray],
+    per_rec: list[np.ndarray],
+    cat_model: CategoryModel,
+    pca: PosturePCA,
+    subject: str,
+) -> tuple[CategoryGraph, list[np.ndarray], np.ndarray, np.ndarray, list[list[np.ndarray]]]:
+    """The category graph with T_min / T_max (Sec. 5.3, Fig. 3), the balance-shift
+    animations A between consecutive rests with their translation offset removed (Sec. 5.2),
+    their start and end categories, and the middle posture of every rest per category."""
+    k = len(cat_model.names)
+    fps = recordings[0].fps
     sequences, stays, censored = [], [], [[] for _ in range(k)]
     animations, a_from, a_to, rest_mid = [], [], [], [[] for _ in range(k)]
     for rec, s, cats in zip(recordings, segs, per_rec):
@@ -197,7 +220,19 @@ def build_database(
         raise ValueError(f"subject {subject}: no balance shift between two resting segments in the recordings")
     graph = CategoryGraph.from_sequences(cat_model.names, sequences, stays)
     graph = _fill_censored_times(graph, censored)
-    a_from, a_to = np.array(a_from, dtype=np.int64), np.array(a_to, dtype=np.int64)
+    return graph, animations, np.array(a_from, dtype=np.int64), np.array(a_to, dtype=np.int64), rest_mid
+
+
+def _posture_sets(
+    animations: list[np.ndarray],
+    a_from: np.ndarray,
+    a_to: np.ndarray,
+    rest_mid: list[list[np.ndarray]],
+    pca: PosturePCA,
+    k: int,
+) -> list[np.ndarray]:
+    """Q_c per category (Sec. 5.3): the first / last frames of the animations from / to it,
+    then the stand-alone resting postures, moved to the mean translation of the others."""
     postures = []
     for c in range(k):
         ends = [a[0] for a, f in zip(animations, a_from) if f == c] + [
@@ -208,25 +243,7 @@ def build_database(
             target = pca.root_translation(np.array(ends)).mean(axis=0)
             alone = pca.shift_translation(alone, (target - pca.root_translation(alone)) * HORIZONTAL)
         postures.append(np.concatenate([np.array(ends).reshape(-1, pca.n_dims), alone]))
-    rests = [r.pcs[a:b] for r, s in zip(recordings, segs) for a, b in s]
-    n_var = min(settings.variation_pcs, pca.n_dims)
-    variations = fit_variation_model(
-        rests, np.arange(n_var), fps, settings.extrema_eps_sd, settings.variation_clusters, seed
-    )
-    return IdleDatabase(
-        subject=subject,
-        fps=fps,
-        weights=weights,
-        categories=cat_model,
-        graph=graph,
-        animations=animations,
-        anim_from=a_from,
-        anim_to=a_to,
-        postures=postures,
-        variations=variations,
-        rest_speed=float(threshold),
-        segments={r.name: (s, c) for r, s, c in zip(recordings, segs, per_rec)},
-    )
+    return postures
 
 
 def _fill_censored_times(graph: CategoryGraph, censored: list[list[float]]) -> CategoryGraph:

@@ -195,7 +195,7 @@ def draw_categories(result: EvaluationResult) -> Figure:
 def draw_fitting(result: EvaluationResult) -> Figure:
     """Fig. 4 (a database shift fitted to new ends), a stretch of balance shifting with
     its fitted shifts, and the largest junction step per subject and ramp
-    (:func:`~motionvar.egges2004.evaluations.sec5_4_fitting.fitting`)."""
+    (:func:`~motionvar.egges2004.evaluations.fitting.fitting`)."""
     f, table = result.figure, result.table
     fig, axes = plt.subplots(1, 3, figsize=(15, 4.2), gridspec_kw={"width_ratios": [1, 1.6, 1]})
     plot_fitted_animation(axes[0], f["original"], f["fitted"], f["p"], f["q"], f["fps"])
@@ -226,7 +226,7 @@ def draw_fitting(result: EvaluationResult) -> Figure:
 
 def draw_identification(result: EvaluationResult) -> Figure:
     """Accuracy per source and feature set, and the confusion matrix of the generated
-    windows (:func:`~motionvar.egges2004.evaluations.sec8_identification.identification`)."""
+    windows (:func:`~motionvar.egges2004.evaluations.identification.identification`)."""
     f = result.figure
     fig, (a, b) = plt.subplots(1, 2, figsize=(12, 4.6), gridspec_kw={"width_ratios": [1.5, 1]})
     plot_identification(a, b, result.table, f)
@@ -237,7 +237,7 @@ def draw_identification(result: EvaluationResult) -> Figure:
 
 def draw_repetition(result: EvaluationResult) -> Figure:
     """Best-match normalised cross-correlation per source
-    (:func:`~motionvar.egges2004.evaluations.sec6_repetition.repetition`)."""
+    (:func:`~motionvar.egges2004.evaluations.repetition.repetition`)."""
     f = result.figure
     fig, ax = plt.subplots(figsize=(10, 4.6))
     plot_repetition(ax, f["pooled"])
@@ -266,7 +266,7 @@ def draw_pc_extrema(data: dict) -> Figure:
 
 def draw_speed(result: EvaluationResult) -> Figure:
     """Frames generated per second per subject against the playback rate
-    (:func:`~motionvar.egges2004.evaluations.sec8_speed.speed`)."""
+    (:func:`~motionvar.egges2004.evaluations.speed.speed`)."""
     fig, ax = plt.subplots(figsize=(7, 4))
     plot_speed(ax, result.table)
     ax.set_title(f"Idle motion generation, {result.figure['sequence_s']:g}-s sequences (one core)", fontsize=10)

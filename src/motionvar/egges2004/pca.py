@@ -7,7 +7,7 @@ reconstruct), the exponential map (Rodrigues, Eq. 3) bringing rotation vectors b
 rotations.
 
 Units: the paper's H-Anim skeletons are in metres; our motions are in centimetres, so the
-root translation is multiplied by ``translation_scale`` (default 0.01: metres) before the
+root translation is multiplied by ``translation_scale`` (config default 0.01: metres) before the
 PCA, which keeps the translation on the same footing as rotations in radians.
 """
 
@@ -52,7 +52,7 @@ class PosturePCA:
 
     Attributes:
         joints: indices of the joints in the posture vector (the paper uses 25).
-        translation_scale: factor on the root translation (cm -> m by default).
+        translation_scale: factor on the root translation (0.01: cm -> m).
         mean_: (D,) mean posture vector.
         components_: (D, D) principal axes as rows, by decreasing variance.
         explained_variance_: (D,) the eigenvalues.
@@ -70,10 +70,11 @@ class PosturePCA:
     def fit(
         cls,
         motions: Sequence[Motion],
+        translation_scale: float,
         joints: Sequence[int] | None = None,
-        translation_scale: float = 0.01,
     ) -> "PosturePCA":
-        """Fit on all frames of ``motions`` (one rig); ``joints=None`` takes every joint."""
+        """Fit on all frames of ``motions`` (one rig), the root translation times
+        ``translation_scale``; ``joints=None`` takes every joint."""
         from sklearn.decomposition import PCA  # only fitting needs scikit-learn (a slow import)
 
         if len(motions) == 0:

@@ -16,8 +16,9 @@ from ..core.joint_map import JointMap
 from ..core.motion import Motion
 from ..core.skeleton import Skeleton
 from ..io.dataset import MotionDataset
-from .database import IdleDatabase, IdleSettings, Recording, analyse_recording, build_database
+from .database import IdleDatabase, Recording, analyse_recording, build_database
 from .pca import PosturePCA
+from .settings import Egges2004Settings
 
 
 @dataclass
@@ -55,7 +56,7 @@ def split_clips(
     short = [s for s, c in clips.items() if len(c) <= held_out]
     if short:
         raise ValueError(
-            f"subjects {short} have {held_out} or fewer idle clips; need more than idle.held_out_clips = {held_out}"
+            f"subjects {short} have {held_out} or fewer idle clips; need more than egges2004.held_out_clips = {held_out}"
         )
     train = {s: c[: len(c) - held_out] for s, c in clips.items()}
     test = {s: c[len(c) - held_out :] for s, c in clips.items()}
@@ -66,20 +67,21 @@ def fit_idle_model(
     train: dict[str, list[tuple[pd.Series, Motion]]],
     test: dict[str, list[tuple[pd.Series, Motion]]],
     joint_map: JointMap,
-    settings: IdleSettings,
-    translation_scale: float = 0.01,
-    seed: int = 0,
+    settings: Egges2004Settings,
 ) -> tuple[IdleModel, dict[str, list[Recording]]]:
-    """Fit the PCA on every training clip, then one database per subject. Returns the
-    model and the analysed training recordings (PC values, support ratio) per subject."""
+    """Fit the PCA on every training clip (root translation times
+    ``settings.translation_scale``, Sec. 3.2), then one database per subject
+    (``settings.analysis``, ``settings.seed``). Returns the model and the analysed training
+    recordings (PC values, support ratio) per subject."""
     first = next(iter(train.values()))[0][1]
     joint_map.validate(first.skeleton, source="idle: joint map")
-    pca = PosturePCA.fit([m for clips in train.values() for _, m in clips], translation_scale=translation_scale)
+    motions = [m for clips in train.values() for _, m in clips]
+    pca = PosturePCA.fit(motions, settings.translation_scale)
     recordings, databases = {}, {}
     for subject, clips in train.items():
         recordings[subject] = [analyse_recording(m, pca, joint_map, str(row["clip_id"])) for row, m in clips]
         try:
-            databases[subject] = build_database(recordings[subject], pca, settings, subject, seed)
+            databases[subject] = build_database(recordings[subject], pca, settings.analysis, subject, settings.seed)
         except ValueError as exc:
             raise ValueError(f"idle database of subject {subject}: {exc}") from exc
     model = IdleModel(

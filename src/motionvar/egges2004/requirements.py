@@ -10,7 +10,7 @@ PAPER = "egges2004"
 WHY = "Egges 2004 builds its model from recordings of a person standing idle (balance shifts, Sec. 5)"
 
 
-def requirements(held_out_clips: int = 1) -> list[Requirement]:
+def requirements(held_out_clips: int) -> list[Requirement]:
     """Idle clips (``behaviour`` idle): more than ``held_out_clips`` per subject for the
     database and its held-out test recordings; two subjects or more to identify people."""
     idle = Need(

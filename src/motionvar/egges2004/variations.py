@@ -133,7 +133,7 @@ def fit_variation_model(
     fps: float,
     eps_sd: float,
     n_clusters: int,
-    seed: int = 0,
+    seed: int,
 ) -> VariationModel:
     """Fit the Sec. 6 model on resting segments (each (T_i, D) PC values).
 

@@ -16,6 +16,8 @@
 - :mod:`.comparison` — long sequences of every method and their measures (Sec. 7.4).
 - :mod:`.evaluations` — one module per figure or section (Fig. 3, 6, 7b, 8, Sec. 7.4, 8).
 - :mod:`.figures` — the evaluations' figures.
+- :mod:`.settings` — :class:`.settings.Ma2010Settings`, config section ``ma2010`` (every
+  option's one default).
 
 Only the model's names are exported here (not baselines, comparison, evaluations or
 figures), so that the baselines can import the model's modules without a cycle; they are

@@ -31,6 +31,7 @@ from .baselines.mukai_kuriyama import StyleClipInterpolation, mk05_kriging, rose
 from .baselines.perlin import add_rotation_noise
 from .examples import foot_contacts
 from .representation import ClipSet, PoseCodec
+from .settings import XI_DRAWS, Ma2010Settings
 from .svi import ClipPrediction, StyleVariationModel
 from .synthesis import RootSolver, realtime_clips, sequence_motion, stitch
 
@@ -43,9 +44,6 @@ LABELS = {
     "kriging": "Kriging (MK05)",
     "dbn": "DBN (Lau 2009)",
 }
-#: How often ours draws xi (Sec. 7.4 does not say): "sequence" once per sequence (one
-#: person walks the whole sequence; the sequences differ), "clip" anew for every cycle.
-XI_DRAWS = ("sequence", "clip")
 
 
 def clips_for_duration(clips: ClipSet, seconds: float) -> int:
@@ -60,11 +58,12 @@ def trim(motion: Motion, seconds: float) -> Motion:
 
 
 def ours_clips(
-    model: StyleVariationModel, style: np.ndarray, n_clips: int, rng: np.random.Generator, xi_per: str = "sequence"
+    model: StyleVariationModel, style: np.ndarray, n_clips: int, rng: np.random.Generator, xi_per: str
 ) -> ClipPrediction:
     """n_clips predicted cycles at one style, xi sampled from the network (Eq. 10) once for
-    all of them (``xi_per`` "sequence": the cycles are the same) or anew for every cycle
-    ("clip")."""
+    all of them (``xi_per`` "sequence": one person walks the whole sequence, the cycles are
+    the same) or anew for every cycle ("clip"); config ma2010.comparison_xi (Sec. 7.4 does
+    not say)."""
     if xi_per not in XI_DRAWS:
         raise ValueError(f"ours_clips: xi_per must be one of {list(XI_DRAWS)}; got {xi_per!r}")
     c = np.tile(np.atleast_2d(style), (n_clips, 1))
@@ -80,8 +79,8 @@ def ours_sequence(
     n_clips: int,
     solver: RootSolver,
     rng: np.random.Generator,
-    xi_per: str = "sequence",
-    landing_rule: str = "significant_maximum",
+    xi_per: str,
+    landing_rule: str,
 ) -> Motion:
     """Ours: n_clips cycles at one style (:func:`ours_clips`), retimed, stitched and
     root-solved."""
@@ -97,7 +96,7 @@ def interpolation_sequence(
     n_clips: int,
     solver: RootSolver,
     fps: float,
-    landing_rule: str = "significant_maximum",
+    landing_rule: str,
 ) -> Motion:
     """RBF or plain Kriging: the same clip (one style) repeated n_clips times."""
     pred = interp.predict(np.tile(np.atleast_2d(style), (n_clips, 1)))
@@ -113,7 +112,7 @@ def perlin_sequence(
     rng: np.random.Generator,
     amplitude: float,
     frequency_hz: float,
-    landing_rule: str = "significant_maximum",
+    landing_rule: str,
 ) -> Motion:
     """Perlin noise [Per95] on the rotations of the examples concatenated in random order."""
     order = rng.integers(0, clips.n_clips, size=n_clips)
@@ -157,58 +156,44 @@ def dbn_sequence(
 
 
 def method_sequences(
-    examples: ClipSet,
-    groups: Mapping[str, np.ndarray],
-    solver: RootSolver,
-    seconds: float,
-    n_sequences: int = 3,
-    seed: int = 0,
-    *,
-    structure: str = "auto",
-    variogram_model: str = "linear",
-    perlin_amplitude: float = 0.1,
-    perlin_frequency_hz: float = 1.0,
-    gplvm_latent_dim: int = 3,
-    gplvm_iterations: int = 200,
-    gplvm_frame_step: int = 4,
-    dbn_max_parents: int = 8,
-    xi_per: str = "sequence",
-    landing_rule: str = "significant_maximum",
+    examples: ClipSet, groups: Mapping[str, np.ndarray], solver: RootSolver, settings: Ma2010Settings
 ) -> dict[str, list[Motion]]:
-    """Sec. 7.4: ``n_sequences`` sequences of about ``seconds`` s per method (method ->
-    list of Motion, methods in :data:`METHODS` order), every method learning from the same
-    ``examples``: ours (the model of Sec. 5-6, xi sampled once per sequence or per cycle:
-    ``xi_per``), Perlin noise on the examples concatenated in random order, the Bayesian
-    GPLVM (every ``gplvm_frame_step``-th example pose) along a helix, RBF and style-only
-    Kriging at the examples' mean style, and the DBN unrolled (both pose models on
-    :class:`PoseCodec` vectors). Clip-based methods land their transitions by
-    ``landing_rule`` (:func:`.postprocess.landing_frame`). Sequence ``s`` draws from
+    """Sec. 7.4: ``settings.comparison_sequences`` sequences of about
+    ``settings.comparison_seconds`` s per method (method -> list of Motion, methods in
+    :data:`METHODS` order), every method learning from the same ``examples``: ours (the
+    model of Sec. 5-6 with ``settings`` structure and variogram, xi sampled once per
+    sequence or per cycle: ``comparison_xi``), Perlin noise (``perlin_amplitude_rad``,
+    ``perlin_frequency_hz``) on the examples concatenated in random order, the Bayesian
+    GPLVM (``gplvm_latent_dim``, ``gplvm_iterations``; every ``gplvm_frame_step``-th example
+    pose) along a helix, RBF and style-only Kriging at the examples' mean style, and the DBN
+    (``dbn_max_parents``) unrolled (both pose models on :class:`PoseCodec` vectors).
+    Clip-based methods land their transitions by ``comparison_landing``
+    (:func:`.postprocess.landing_frame`). Sequence ``s`` draws from
     ``numpy.random.default_rng([seed, s])``."""
-    five, k = examples, n_sequences
+    five, k, seconds, seed = examples, settings.comparison_sequences, settings.comparison_seconds, settings.seed
+    xi_per, landing_rule = settings.comparison_xi, settings.comparison_landing
     fps = five.fps
     style = five.style.mean(axis=0)
     n_clips = clips_for_duration(five, seconds)
     n_frames = int(round(seconds * fps)) + 1
-    ours = StyleVariationModel(groups, structure, variogram_model).fit(five)
-    krig = mk05_kriging(variogram_model).fit(five)
+    ours = StyleVariationModel(
+        groups, settings.structure, settings.variogram_model, variogram_scale=settings.variogram_scale
+    ).fit(five)
+    krig = mk05_kriging(settings.variogram_model, settings.variogram_scale).fit(five)
     rbf = rose98_rbf().fit(five)
     seqs = example_pose_sequences(five)
     codec = PoseCodec.fit(np.concatenate(seqs))
-    gplvm = BayesianGPLVM(gplvm_latent_dim, max_iter=gplvm_iterations, random_state=seed).fit(
-        np.concatenate([codec.encode(r) for r in seqs])[::gplvm_frame_step]
+    gplvm = BayesianGPLVM(settings.gplvm_latent_dim, max_iter=settings.gplvm_iterations, random_state=seed).fit(
+        np.concatenate([codec.encode(r) for r in seqs])[:: settings.gplvm_frame_step]
     )
-    dbn = LauDBN(dbn_max_parents).fit([codec.encode(r) for r in seqs])
+    dbn = LauDBN(settings.dbn_max_parents).fit([codec.encode(r) for r in seqs])
     turns = seconds / float(np.mean(five.key_times[:, -1]))
+    perlin = (settings.perlin_amplitude_rad, settings.perlin_frequency_hz)
     out: dict[str, list[Motion]] = {m: [] for m in METHODS}
     for s in range(k):  # n_sequences sequences per method
         rng = np.random.default_rng([seed, s])
         out["ours"].append(trim(ours_sequence(ours, style, n_clips, solver, rng, xi_per, landing_rule), seconds))
-        out["perlin"].append(
-            trim(
-                perlin_sequence(five, n_clips, solver, rng, perlin_amplitude, perlin_frequency_hz, landing_rule),
-                seconds,
-            )
-        )
+        out["perlin"].append(trim(perlin_sequence(five, n_clips, solver, rng, *perlin, landing_rule), seconds))
         out["gplvm"].append(
             gplvm_sequence(
                 gplvm,
@@ -245,7 +230,7 @@ class NaturalnessReference:
 
     @classmethod
     def from_examples(
-        cls, motions: Sequence[Motion], solver: RootSolver, contact_height: float = 2.0, threshold_factor: float = 1.5
+        cls, motions: Sequence[Motion], solver: RootSolver, contact_height: float, threshold_factor: float
     ) -> "NaturalnessReference":
         """From the (root-solved) example motions: their poses, their feet's planted
         heights, and ``threshold_factor`` times the largest joint acceleration in them."""

@@ -16,11 +16,12 @@ import pandas as pd
 from ..core.joint_map import JointMap
 from ..core.motion import Motion
 from ..core.skeleton import Skeleton
-from ..metrics.stride import footfall_strides, stride_lengths
+from ..metrics.stride import footfall_strides
 from ..prep.contacts import detect_foot_contacts
 from .correspondence import movement_direction, reference_key_positions, space_warp, standard_skeleton, time_warp
 from .keyframes import Cycle, KeyframeSignal, find_extrema, keyframe_signal, segment_cycles
 from .representation import ClipSet, rest_hip_height
+from .settings import ROOT_GROUPS, Ma2010Settings
 from .svi import StyleVariationModel
 from .synthesis import MIN_SUPPORT_S, RootSolver, rest_foot_heights
 
@@ -35,15 +36,13 @@ class CycleExtraction:
     cycles: list[Cycle]
 
 
-ROOT_GROUPS = ("legs", "upper_body")  # where the root rotation may go (config ma2010.root_group)
-
-
-def joint_groups(joint_map: JointMap, skeleton: Skeleton, root_group: str = "legs") -> dict[str, np.ndarray]:
+def joint_groups(joint_map: JointMap, skeleton: Skeleton, root_group: str) -> dict[str, np.ndarray]:
     """The four joint groups of Fig. 4 (``JointMap.group_indices``) with the root joint
-    (joint 0, the pelvis) moved into ``root_group``: "legs" (A, the default and what every
-    shipped joint map says) or "upper_body" (D). Fig. 4 does not say where the root
-    rotation goes; it tilts the pelvis that carries both legs, Sec. 8 keeps the legs
-    together for foot constraints and Sec. 6.3 models the root's height with the legs.
+    (joint 0, the pelvis) moved into ``root_group`` (config ma2010.root_group, one of
+    :data:`.settings.ROOT_GROUPS`): "legs" (A, what every shipped joint map says) or
+    "upper_body" (D). Fig. 4 does not say where the root rotation goes; it tilts the
+    pelvis that carries both legs, Sec. 8 keeps the legs together for foot constraints and
+    Sec. 6.3 models the root's height with the legs.
     Only the root's rotation moves: the keyframe signal (Eq. 1-4) takes positions relative
     to the root, so it is the same either way."""
     if root_group not in ROOT_GROUPS:
@@ -65,8 +64,8 @@ def lower_upper(joint_map: JointMap, skeleton: Skeleton) -> tuple[np.ndarray, np
 def extract_cycles(
     motion: Motion,
     joint_map: JointMap,
-    min_prominence: float = 0.1,
-    min_separation_s: float = 0.1,
+    min_prominence: float,
+    min_separation_s: float,
     n_components: int | None = None,
 ) -> CycleExtraction:
     """Key frames (Eq. 1-4) of one motion and its gait cycles (:func:`segment_cycles`)."""
@@ -92,14 +91,10 @@ def root_solver(
     return RootSolver(skeleton, feet, planted, flight_threshold, min_support_s)
 
 
-FOOTPRINT_WINDOW_S = 0.1
 #: Shortest contact that is a footfall (s): a walking stance lasts ~60 % of a ~1 s cycle, a
 #: running one 30-40 % of ~0.7 s (docs/gait.md); shorter "contacts" are a swing foot
 #: grazing the floor (the contact detection keeps runs from 0.05 s).
 MIN_FOOTFALL_S = 0.1
-
-
-STRIDE_MEASURES = ("footfalls", "window")  # see :func:`support_strides`
 
 
 def foot_contacts(motion: Motion, solver: RootSolver, positions: np.ndarray | None = None) -> np.ndarray:
@@ -121,41 +116,26 @@ def foot_contacts(motion: Motion, solver: RootSolver, positions: np.ndarray | No
     return np.stack([c.left, c.right], axis=1)
 
 
-def support_strides(
-    motion: Motion, key_frames: np.ndarray, solver: RootSolver, measure: str = "footfalls"
-) -> np.ndarray:
+def support_strides(motion: Motion, key_frames: np.ndarray, solver: RootSolver) -> np.ndarray:
     """Stride length (cm) of the left and the right support phase of one cycle (key
-    frames 0-2 and 2-4, frames of ``motion``), as the horizontal travel of the swing ankle.
-
-    ``measure`` "footfalls": between the swing foot's footfalls
-    (:func:`..metrics.stride.footfall_strides`: at each key frame each foot stands on its
-    nearest contact of at least :data:`MIN_FOOTFALL_S`, from :func:`foot_contacts`). The
-    swing foot's footfall before the phase lies before its first key frame: pass the uncut
-    motion (:func:`uncut_strides`). Checked on the generator's walks: within 0.25 % of
-    their stride (tests/test_ma2010.py). "window": the earlier measure, each foot's
-    stillest frame within 0.1 s of the key frame, short by the trailing foot's roll-off
-    (2-10 %, most on a cut cycle); kept for comparison."""
-    if measure not in STRIDE_MEASURES:
-        raise ValueError(f"support_strides: measure must be one of {list(STRIDE_MEASURES)}; got {measure!r}")
+    frames 0-2 and 2-4, frames of ``motion``), as the horizontal travel of the swing ankle
+    between the swing foot's footfalls (:func:`..metrics.stride.footfall_strides`: at each
+    key frame each foot stands on its nearest contact of at least :data:`MIN_FOOTFALL_S`,
+    from :func:`foot_contacts`). The swing foot's footfall before the phase lies before its
+    first key frame: pass the uncut motion (:func:`uncut_strides`). Checked on the
+    generator's walks: within 0.25 % of their stride (tests/test_ma2010.py)."""
     pos = motion.positions()
     feet = pos[:, [solver.left_foot, solver.right_foot]]
-    window = int(round(FOOTPRINT_WINDOW_S * motion.fps))
     bounds = np.asarray(key_frames)[[0, 2, 4]]
-    if measure == "window":
-        return stride_lengths(feet, bounds, footprint_window=window)
     return footfall_strides(feet, foot_contacts(motion, solver, pos), bounds, int(round(MIN_FOOTFALL_S * motion.fps)))
 
 
-def uncut_strides(
-    motion: Motion, key_frames: Sequence[np.ndarray], solver: RootSolver, measure: str = "footfalls"
-) -> np.ndarray:
+def uncut_strides(motion: Motion, key_frames: Sequence[np.ndarray], solver: RootSolver) -> np.ndarray:
     """(C, 2) strides of the C cycles of one uncut motion (key frames in its frames), its
     rotations put on the solver's (standard) skeleton and its root recovered by footskate
     cleanup once for the whole motion, so that each stride runs between the cycle's own
     footfalls wherever they lie (the one before a cycle's first key frame lies before the cycle)."""
     solved = solver.motion(motion.rotations, motion.fps)
-    if measure == "window":
-        return np.stack([support_strides(solved, k, solver, measure) for k in key_frames])
     pos = solved.positions()
     feet = pos[:, [solver.left_foot, solver.right_foot]]
     contacts = foot_contacts(solved, solver, pos)
@@ -163,33 +143,26 @@ def uncut_strides(
     return np.stack([footfall_strides(feet, contacts, np.asarray(k)[[0, 2, 4]], shortest) for k in key_frames])
 
 
-def normalized_strides(
-    rotations: np.ndarray, key_frames: np.ndarray, solver: RootSolver, fps: float, measure: str = "footfalls"
-) -> np.ndarray:
+def normalized_strides(rotations: np.ndarray, key_frames: np.ndarray, solver: RootSolver, fps: float) -> np.ndarray:
     """Strides of one cycle's rotations (a cut or a predicted clip) on the solver's
     (standard) skeleton, with the root recovered by footskate cleanup (Sec. 1: normalizing
     to one skeleton "unifies the style parameter spaces").
 
-    A cycle alone holds no footfall before its first key frame. With ``measure``
-    "footfalls" it is measured in the middle of three copies of itself joined end to first
-    frame (its last frame is its first one's phase), the steady walk it would make; the
-    footskate cleanup turns the small pose jump at a joint into a root jump, so the planted
-    feet stay put. (A displacement-mapped transition, Eq. 14-15, would blend that jump over
-    half a cycle and can lower a swing foot, which clears the floor by 1-2 cm in late
-    swing, below the stance foot: on generator cycles of fast walks that halved the
-    stride.) "window" measures the cycle alone with the earlier window measure
-    (:func:`support_strides`)."""
-    if measure == "window":
-        return support_strides(solver.motion(rotations, fps), key_frames, solver, measure)
+    A cycle alone holds no footfall before its first key frame: it is measured in the middle
+    of three copies of itself joined end to first frame (its last frame is its first one's
+    phase), the steady walk it would make; the footskate cleanup turns the small pose jump
+    at a joint into a root jump, so the planted feet stay put. (A displacement-mapped
+    transition, Eq. 14-15, would blend that jump over half a cycle and can lower a swing
+    foot, which clears the floor by 1-2 cm in late swing, below the stance foot: on
+    generator cycles of fast walks that halved the stride.)"""
     rot = np.concatenate([rotations[:-1], rotations[:-1], rotations], axis=0)
-    return support_strides(solver.motion(rot, fps), np.asarray(key_frames) + len(rotations) - 1, solver, measure)
+    return support_strides(solver.motion(rot, fps), np.asarray(key_frames) + len(rotations) - 1, solver)
 
 
 def source_strides(
     sources: Sequence[tuple[Motion, int]],
     key_frames: Sequence[np.ndarray],
     solver: RootSolver,
-    measure: str = "footfalls",
 ) -> np.ndarray:
     """(N, 2) strides of N cycles on their uncut motions (:func:`uncut_strides`):
     ``sources`` gives each cycle's uncut motion and its first frame there, ``key_frames``
@@ -201,7 +174,7 @@ def source_strides(
         by_motion.setdefault(id(m), (m, []))[1].append(i)
     out = np.empty((len(sources), 2))
     for m, idx in by_motion.values():  # loop over motions
-        out[idx] = uncut_strides(m, [np.asarray(key_frames[i]) + int(sources[i][1]) for i in idx], solver, measure)
+        out[idx] = uncut_strides(m, [np.asarray(key_frames[i]) + int(sources[i][1]) for i in idx], solver)
     return out
 
 
@@ -272,8 +245,8 @@ def collect_cycles(
     motions: Sequence[Motion],
     clip_ids: Sequence[str],
     joint_map: JointMap,
-    min_prominence: float = 0.1,
-    min_separation_s: float = 0.1,
+    min_prominence: float,
+    min_separation_s: float,
 ) -> tuple[list[Motion], list[np.ndarray], pd.DataFrame]:
     """Every cycle of every motion (Sec. 4.1-4.2: key frames, then clips): the cycles as
     motions, their key frames, and a table (clip_id = "<source>_c<k>", source_clip,
@@ -317,17 +290,11 @@ CLIPSET_KIND = "ma2010.ClipSet"  # the "kind" of a saved ClipSet (motionvar.io.m
 
 
 def walk_cycles(
-    dataset,
-    joint_map: JointMap,
-    walk_styles: str | Sequence[str] = (),
-    walk_variants: str | Sequence[str] = (),
-    n_frames: int = 64,
-    min_prominence: float = 0.1,
-    min_separation_s: float = 0.1,
-    what: str = "metadata",
+    dataset, joint_map: JointMap, settings: Ma2010Settings, what: str = "metadata"
 ) -> tuple[ClipSet, pd.DataFrame]:
-    """The walking clips of a dataset (``motionvar.io.MotionDataset``) with the given styles
-    and variants cut into gait cycles at their key frames (Eq. 1-4), space- and
+    """The walking clips of a dataset (``motionvar.io.MotionDataset``) with the styles and
+    variants of ``settings`` (walk_styles, walk_variants; n_frames, keyframe_prominence,
+    keyframe_min_separation_s) cut into gait cycles at their key frames (Eq. 1-4), space- and
     time-warped onto the mean skeleton (Sec. 4.2), with their style parameters (strides of
     the left and right support phases, Sec. 7.2, measured on the uncut walk between each
     cycle's own footfalls: :func:`source_strides`). Returns the clips and one table row per
@@ -335,10 +302,14 @@ def walk_cycles(
     speed, the two strides and the duration). ValueError naming ``what`` when no clip
     matches or fewer than 3 cycles come out."""
     meta = dataset.metadata
-    idx = rows_matching(meta, behaviour="walk", style=walk_styles, variant=walk_variants, what=what)
+    idx = rows_matching(meta, behaviour="walk", style=settings.walk_styles, variant=settings.walk_variants, what=what)
     motions = [dataset.motion(int(i)) for i in idx]
     cycles, keys, table = collect_cycles(
-        motions, meta["clip_id"].iloc[idx].tolist(), joint_map, min_prominence, min_separation_s
+        motions,
+        meta["clip_id"].iloc[idx].tolist(),
+        joint_map,
+        settings.keyframe_prominence,
+        settings.keyframe_min_separation_s,
     )
     if len(cycles) < 3:
         seconds = np.array([m.duration for m in motions])
@@ -352,7 +323,9 @@ def walk_cycles(
     sk = standard_skeleton([c.skeleton for c in cycles])
     by_id = dict(zip(meta["clip_id"].iloc[idx].tolist(), motions))
     sources = [(by_id[c], int(s)) for c, s in zip(table["source_clip"], table["start_frame"])]  # strides: uncut
-    clips = build_clipset(cycles, keys, sk, joint_map, n_frames, clip_ids=table["clip_id"].tolist(), sources=sources)
+    clips = build_clipset(
+        cycles, keys, sk, joint_map, settings.n_frames, clip_ids=table["clip_id"].tolist(), sources=sources
+    )
     src = meta.set_index("clip_id").loc[table["source_clip"]]
     table["subject"] = src["subject"].astype(str).to_numpy()
     for col in ("style", "stride_length_cm", "speed_cm_s"):
@@ -376,7 +349,7 @@ class WalkCycles:
     """The walking cycles of a dataset (:func:`walk_cycles`) as the evaluations use them:
     the clips, each cycle's subject and the rig's joint map (``source`` names where they
     came from, for error messages), with the joint groups (:func:`joint_groups`, the root
-    rotation in ``root_group``) and the root solver derived. ``source_clips`` names each
+    rotation in ``root_group``, config ma2010.root_group) and the root solver derived. ``source_clips`` names each
     cycle's walk (the ``source_clip`` column of :func:`walk_cycles`' table); without it,
     the walk is read from the cycle's clip id ("<source>_c<k>", :func:`collect_cycles`)."""
 
@@ -384,7 +357,7 @@ class WalkCycles:
     subjects: list[str]
     joint_map: JointMap
     source: str = "walking cycles"
-    root_group: str = "legs"
+    root_group: str = field(kw_only=True)
     source_clips: list[str] | None = None
     groups: dict = field(init=False, repr=False)  # joint group -> joint indices (Fig. 4)
     solver: RootSolver = field(init=False, repr=False)  # footskate cleanup on the clips' skeleton
@@ -401,7 +374,9 @@ class WalkCycles:
         self.groups = joint_groups(self.joint_map, self.clips.skeleton, self.root_group)
         self.solver = root_solver(self.clips.skeleton, self.joint_map)
 
-    def fit_model(self, structure: str = "auto", variogram_model: str = "linear") -> StyleVariationModel:
-        """The model of Sec. 5-6 fitted to all the cycles ("auto" structure: Fig. 5 by D_l
-        vs D_u of the cycles)."""
-        return StyleVariationModel(self.groups, structure, variogram_model).fit(self.clips)
+    def fit_model(self, settings: Ma2010Settings) -> StyleVariationModel:
+        """The model of Sec. 5-6 fitted to all the cycles, with the structure and variogram of
+        ``settings`` ("auto" structure: Fig. 5 by D_l vs D_u of the cycles)."""
+        return StyleVariationModel(
+            self.groups, settings.structure, settings.variogram_model, variogram_scale=settings.variogram_scale
+        ).fit(self.clips)

@@ -8,6 +8,7 @@ from collections.abc import Sequence
 
 import matplotlib.pyplot as plt
 import numpy as np
+import pandas as pd
 from matplotlib.axes import Axes
 from matplotlib.collections import LineCollection
 from matplotlib.figure import Figure
@@ -63,26 +64,16 @@ def draw_fig3(result: EvaluationResult) -> Figure:
     return fig
 
 
-def draw_fig6(result: EvaluationResult) -> Figure:
-    """Fig. 6: true vs synthesized strides per support phase (ours with the held-out
-    cycle's own xi, at the network's conditional mean and sampled; Kriging), closing cycles
-    (the last of each walk) ringed; the stride error per held-out cycle (ours, and the
-    ablation with the root rotation in the other group), closing cycles shaded; and the
-    largest error of every method on steady and on closing cycles."""
-    table, f = result.table, result.figure
-    folds = table[table["kind"] == "fold"].reset_index(drop=True)
-    summary = table[table["kind"] == "summary"].reset_index(drop=True)
-    bound, root, abl = f["published_max_stride_error_cm"], f["root_group"], f.get("ablation")
-    closing = folds["closing"].astype(bool).to_numpy()
-    fig, axes = plt.subplots(1, 4, figsize=(22, 5), gridspec_kw={"width_ratios": [1, 1, 1.5, 1.3]})
+def _fig6_strides(axes, folds: pd.DataFrame, closing: np.ndarray, reference: str) -> None:
+    """Fig. 6, left panels: per support phase, the validation (or requested) stride against
+    the synthesized one of ours (own, mean and sampled xi) and Kriging; closing cycles ringed."""
     kinds = [
         ("ours_own_xi", "ours, held-out cycle's own xi", "o", "tab:blue"),
         ("ours_mean_xi", "ours, xi at the network's conditional mean", "s", "tab:purple"),
         ("ours_sampled_xi", "ours, xi sampled from the network", "+", "tab:green"),
         ("kriging", "Kriging, style only", "x", "tab:orange"),
     ]
-    reference = f.get("stride_reference", "style")
-    for ax, side in zip(axes[:2], ("left", "right")):
+    for ax, side in zip(axes, ("left", "right")):
         t = folds[f"{'validation' if reference == 'validation' else 'true'}_{side}_cm"].to_numpy()
         for name, label, marker, colour in kinds:
             ax.scatter(t, folds[f"{name}_{side}_cm"], s=14, marker=marker, color=colour, label=label)
@@ -103,6 +94,12 @@ def draw_fig6(result: EvaluationResult) -> Figure:
         ax.set_ylabel("stride of the synthesized cycle (cm)")
         ax.set_title(f"{side} support phase (points beyond the frame not shown)", fontsize=9)
         ax.legend(fontsize=7, loc="upper left")
+
+
+def _fig6_errors(ax: Axes, folds: pd.DataFrame, closing: np.ndarray, f: dict) -> None:
+    """Fig. 6, third panel: the stride error per held-out cycle (ours, and the ablation with
+    the root rotation in the other group), closing cycles shaded."""
+    bound, root, abl = f["published_max_stride_error_cm"], f["root_group"], f.get("ablation")
     x = np.arange(len(folds))
     bars = [
         ("ours_own_xi", f"ours, own xi, root in {root}", "tab:blue"),
@@ -112,38 +109,42 @@ def draw_fig6(result: EvaluationResult) -> Figure:
         bars.append((f"ours_own_xi_{abl}", f"ours, own xi, root in {f['alt_root_group']} (ablation)", "tab:red"))
     width = 0.8 / len(bars)
     for k, (name, label, colour) in enumerate(bars):
-        axes[2].bar(
+        ax.bar(
             x + (k - (len(bars) - 1) / 2) * width, folds[f"{name}_stride_error_cm"], width, color=colour, label=label
         )
     for i in np.flatnonzero(closing):
-        axes[2].axvspan(i - 0.45, i + 0.45, color="0.88", zorder=0)
-    axes[2].axhline(bound, color="tab:red", ls="--", lw=1, label=f"paper: max error {bound:g} cm")
-    axes[2].set_xticks(x)
-    axes[2].set_xticklabels([f"{i + 1}{'c' if c else ''}" for i, c in enumerate(closing)], fontsize=6)
-    axes[2].set_xlabel("held-out cycle, in walk order (c, shaded: closing cycle)")
-    axes[2].set_ylabel("stride error: max |error| of the two phases (cm)")
+        ax.axvspan(i - 0.45, i + 0.45, color="0.88", zorder=0)
+    ax.axhline(bound, color="tab:red", ls="--", lw=1, label=f"paper: max error {bound:g} cm")
+    ax.set_xticks(x)
+    ax.set_xticklabels([f"{i + 1}{'c' if c else ''}" for i, c in enumerate(closing)], fontsize=6)
+    ax.set_xlabel("held-out cycle, in walk order (c, shaded: closing cycle)")
+    ax.set_ylabel("stride error: max |error| of the two phases (cm)")
     err = folds["ours_own_xi_stride_error_cm"].to_numpy()
     unit = "whole walk left out per fold" if f["loo_unit"] == "walk" else "one cycle left out per fold"
-    axes[2].set_title(
+    ax.set_title(
         f"{len(folds)} held-out cycles ({unit}): ours max {err.max():.2f} cm, mean {err.mean():.2f} cm", fontsize=9
     )
-    axes[2].legend(fontsize=7)
+    ax.legend(fontsize=7)
+
+
+def _fig6_methods(ax: Axes, summary: pd.DataFrame, bound: float) -> None:
+    """Fig. 6, right panel: the largest stride error of every method on steady and on closing cycles."""
     methods = list(dict.fromkeys(summary["method"]))
     y = np.arange(len(methods))
     for k, (cycles, colour) in enumerate([("steady", "tab:cyan"), ("closing", "0.45")]):
         rows = summary[summary["cycles"] == cycles].set_index("method")
         vals = [rows.loc[m, "max_stride_error_cm"] if m in rows.index else np.nan for m in methods]
-        axes[3].barh(y + (k - 0.5) * 0.4, vals, 0.4, color=colour, label=f"{cycles} cycles")
+        ax.barh(y + (k - 0.5) * 0.4, vals, 0.4, color=colour, label=f"{cycles} cycles")
         for yy, m, v in zip(y, methods, vals):
             if m in rows.index and np.isfinite(v):
-                axes[3].text(
+                ax.text(
                     v,
                     yy + (k - 0.5) * 0.4,
                     f" {int(rows.loc[m, 'n_within_bound'])}/{int(rows.loc[m, 'n'])}",
                     va="center",
                     fontsize=6,
                 )
-    axes[3].axvline(bound, color="tab:red", ls="--", lw=1)
+    ax.axvline(bound, color="tab:red", ls="--", lw=1)
     style_only = {
         "kriging": "Kriging (style only)",
         "rbf": "RBF (style only)",
@@ -154,12 +155,28 @@ def draw_fig6(result: EvaluationResult) -> Figure:
         m: style_only.get(m, f"ours, {r['xi']} xi, root in {r['root_group']}")
         for m, r in summary.drop_duplicates("method").set_index("method").iterrows()
     }
-    axes[3].set_yticks(y)
-    axes[3].set_yticklabels([labels[m] for m in methods], fontsize=7)
-    axes[3].invert_yaxis()
-    axes[3].set_xlabel("max stride error (cm); n within 1.2 cm / n")
-    axes[3].set_title("steady vs closing cycles, per method", fontsize=9)
-    axes[3].legend(fontsize=7, loc="lower right")
+    ax.set_yticks(y)
+    ax.set_yticklabels([labels[m] for m in methods], fontsize=7)
+    ax.invert_yaxis()
+    ax.set_xlabel("max stride error (cm); n within 1.2 cm / n")
+    ax.set_title("steady vs closing cycles, per method", fontsize=9)
+    ax.legend(fontsize=7, loc="lower right")
+
+
+def draw_fig6(result: EvaluationResult) -> Figure:
+    """Fig. 6: true vs synthesized strides per support phase (ours with the held-out
+    cycle's own xi, at the network's conditional mean and sampled; Kriging), closing cycles
+    (the last of each walk) ringed; the stride error per held-out cycle (ours, and the
+    ablation with the root rotation in the other group), closing cycles shaded; and the
+    largest error of every method on steady and on closing cycles."""
+    table, f = result.table, result.figure
+    folds = table[table["kind"] == "fold"].reset_index(drop=True)
+    summary = table[table["kind"] == "summary"].reset_index(drop=True)
+    closing = folds["closing"].astype(bool).to_numpy()
+    fig, axes = plt.subplots(1, 4, figsize=(22, 5), gridspec_kw={"width_ratios": [1, 1, 1.5, 1.3]})
+    _fig6_strides(axes[:2], folds, closing, f.get("stride_reference", "style"))
+    _fig6_errors(axes[2], folds, closing, f)
+    _fig6_methods(axes[3], summary, f["published_max_stride_error_cm"])
     fig.suptitle("Ma 2010 Fig. 6: stride of held-out walking cycles vs the synthesized ones (leave-one-out)")
     fig.tight_layout()
     return fig

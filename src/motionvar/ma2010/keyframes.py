@@ -74,9 +74,7 @@ def keyframe_signal(
     return KeyframeSignal(signal=np.linalg.norm(chosen, axis=1), d_lower=d_l, d_upper=d_u)  # Eq. 4
 
 
-def find_extrema(
-    signal: np.ndarray, min_prominence: float = 0.1, min_distance: int = 1
-) -> tuple[np.ndarray, np.ndarray]:
+def find_extrema(signal: np.ndarray, min_prominence: float, min_distance: int = 1) -> tuple[np.ndarray, np.ndarray]:
     """Key frames: alternating local maxima and minima of S_M(t) (Sec. 4.1, Fig. 3).
 
     Args:

@@ -20,12 +20,12 @@ residuals, gamma(h) = 0.5 * mean_d w_d (r_id - r_jd)^2 over pairs at distance ~h
   seconds and, for flight, root heights in cm): "sd" weighs each output dimension by
   1 / its variance (w_d = 1/sd_d^2, constant dimensions left out), so every varying
   dimension counts alike whatever its unit and a semivariance of ~1 means "as different
-  as two unrelated examples"; "none" averages the raw squares (w_d = 1, the old rule).
+  as two unrelated examples"; "none" averages the raw squares (w_d = 1).
   The weights lambda do not change when gamma is multiplied by a constant, so only the
   shape of the semivariogram matters, and that is what the scaling changes.
 - ``weights``: "cressie" fits by least squares weighted as Cressie (1985),
   sum_k N_k (gamma_hat_k / gamma(h_k) - 1)^2 (N_k pairs in bin k); "pairs" weighs the
-  squared differences by N_k (the old rule).
+  squared differences by N_k.
 - ``model``: linear, power, exponential, gaussian or spherical, each with a nugget; "auto"
   fits linear, exponential, Gaussian and spherical and keeps the one with the least
   Akaike criterion n log(E/n) + 2k on the n binned points (E the weighted error, k the
@@ -34,7 +34,8 @@ residuals, gamma(h) = 0.5 * mean_d w_d (r_id - r_jd)^2 over pairs at distance ~h
   of Journel & Huijbregts 1978: longer lags have few pairs, at the edges of the sample),
   ``n_bins`` of them, or by default ~100 pairs each within 20-100 bins (:func:`bin_count`).
 
-("linear", "none", "pairs", max_lag 1, 20 bins) is the earlier single fitted model.
+("linear", "none", "pairs", max_lag 1, 20 bins) is the plain single fit that the Ma 2010
+variogram table (:mod:`.evaluations.variogram`, series "old") shows beside the chosen one.
 """
 
 from __future__ import annotations
@@ -128,7 +129,7 @@ class VariogramFit:
     weights: str = "cressie"
 
 
-def output_weights(r: np.ndarray, scale: str = "none") -> np.ndarray:
+def output_weights(r: np.ndarray, scale: str) -> np.ndarray:
     """(D,) weights w_d of the output dimensions in the semivariance (module docstring):
     "none" ones; "sd" 1 / variance, zero for (numerically) constant dimensions."""
     if scale not in VARIOGRAM_SCALES:
@@ -141,7 +142,7 @@ def output_weights(r: np.ndarray, scale: str = "none") -> np.ndarray:
     return np.where(varying, 1.0 / np.where(varying, sd, 1.0) ** 2, 0.0)
 
 
-def pair_semivariances(x: np.ndarray, r: np.ndarray, scale: str = "none") -> tuple[np.ndarray, np.ndarray]:
+def pair_semivariances(x: np.ndarray, r: np.ndarray, scale: str) -> tuple[np.ndarray, np.ndarray]:
     """Distance ||x_i - x_j|| and semivariance 0.5 * sum_d w_d (r_id - r_jd)^2 / n_d of every
     pair i < j (the variogram cloud; n_d = D, or the varying dimensions for "sd")."""
     x, r = np.asarray(x, dtype=float), np.asarray(r, dtype=float)
@@ -164,8 +165,8 @@ def bin_count(n_pairs: int) -> int:
 def empirical_semivariogram(
     x: np.ndarray,
     r: np.ndarray,
-    n_bins: int | None = None,
-    scale: str = "none",
+    n_bins: int | None,
+    scale: str,
     max_lag: float = 1.0,
     pair_mask: np.ndarray | None = None,
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -238,9 +239,9 @@ def _fit_model(model: str, hm: np.ndarray, gm: np.ndarray, cnt: np.ndarray, weig
 def fit_semivariogram(
     x: np.ndarray,
     r: np.ndarray,
-    model: str = "linear",
-    n_bins: int | None = None,
-    scale: str = "none",
+    model: str,
+    n_bins: int | None,
+    scale: str,
     weights: str = "cressie",
     max_lag: float = MAX_LAG,
 ) -> VariogramFit:
@@ -281,9 +282,9 @@ def fit_semivariogram(
 def fit_variogram(
     x: np.ndarray,
     r: np.ndarray,
-    model: str = "linear",
-    n_bins: int | None = None,
-    scale: str = "none",
+    model: str,
+    n_bins: int | None,
+    scale: str,
     weights: str = "cressie",
     max_lag: float = MAX_LAG,
 ) -> Variogram:
@@ -295,7 +296,8 @@ class UniversalKriging:
     """Universal Kriging of vector-valued samples s_i (N, D) at parameters x_i (N, p).
 
     ``variogram_model``, ``variogram_scale``, ``variogram_weights``: see the module
-    docstring; ("linear", "none", "pairs") is the earlier single fitted model.
+    docstring (config ma2010.variogram_model, variogram_scale; the weights are Cressie's in
+    every model, "pairs" only in the variogram table's plain fit).
     ``trend_rcond``: singular values of the trend's design [1, c] below ``trend_rcond`` x the
     largest count as zero in the pseudo-inverse (0: numerical precision only, the literal
     Eq. 12-13). Parameters that vary together (the two support strides of a symmetric walk)
@@ -303,10 +305,11 @@ class UniversalKriging:
 
     def __init__(
         self,
-        variogram_model: str = "auto",
+        variogram_model: str,
         n_bins: int | None = None,
         standardize: bool = True,
-        variogram_scale: str = "sd",
+        *,
+        variogram_scale: str,
         variogram_weights: str = "cressie",
         max_lag: float = MAX_LAG,
         trend_rcond: float = 0.0,

@@ -88,8 +88,7 @@ class StyleVariationModel:
             its examples by :func:`structure_evidence`), "lower_first", "upper_first", or an
             explicit parent mapping.
         variogram_model, variogram_scale: the variogram of each group's Kriging, see
-            :mod:`.kriging` (default "auto": chosen by fit; "sd": output dimensions
-            weighed by 1/variance; "linear", "none" is the earlier single model).
+            :mod:`.kriging` (config ma2010.variogram_model, variogram_scale).
         flight: predict the root height curve (behaviours with flight phases, Sec. 6.3).
         trend_rcond: relative cut-off of the pseudo-inverse of each group's Kriging trend
             (Eq. 12-13; :class:`.kriging.UniversalKriging`); 0 is the literal fit.
@@ -98,11 +97,12 @@ class StyleVariationModel:
     def __init__(
         self,
         groups: Mapping[str, np.ndarray],
-        structure: str | Mapping[str, tuple[str, ...]] = "auto",
-        variogram_model: str = "auto",
+        structure: str | Mapping[str, tuple[str, ...]],
+        variogram_model: str,
         flight: bool = False,
         n_bins: int | None = None,
-        variogram_scale: str = "sd",
+        *,
+        variogram_scale: str,
         trend_rcond: float = 0.0,
     ):
         self.groups = {g: np.asarray(v, dtype=np.int64) for g, v in groups.items()}

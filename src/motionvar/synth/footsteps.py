@@ -234,10 +234,27 @@ def _side_index(side: str) -> int:
     return SIDES.index(side)
 
 
-def plan_walk(geo: BodyGeometry, p: WalkParams) -> Plan:
-    """Stand, ``n_steps`` heel strikes (first with ``first_foot``), a closing step beside the
-    last footprint, stand. Footprints lie ``step_width/2`` either side of the path at arc
-    lengths k × stride/2; the standing feet sit under the hip joints."""
+@dataclass(frozen=True)
+class _WalkTiming:
+    """Event times of a walk plan in seconds (module docstring): heel strikes ``hs`` 1 .. K+1
+    and the toe-offs ``lift`` before them; the speed ramps up over [t_a, t_a + tau] and down
+    from ``t_b`` to rest at ``t_stop``; ``t`` holds the times of the plan's ``n`` frames."""
+
+    half_stride: float
+    t_stride: float
+    tau: float
+    t_a: float
+    t_b: float
+    t_stop: float
+    hs: np.ndarray
+    lift: np.ndarray
+    n: int
+    t: np.ndarray
+
+
+def _walk_timing(geo: BodyGeometry, p: WalkParams) -> _WalkTiming:
+    """Heel strikes, toe-offs, speed ramp and frame count of a walk: at heel strike the front
+    ankle is half way between the hip and a point one foot length further (module docstring)."""
     m, fps = p.manner, p.fps
     L, v, K = p.stride_length_cm / 2.0, p.speed_cm_s, p.n_steps
     t_stride = p.stride_length_cm / v
@@ -249,26 +266,40 @@ def plan_walk(geo: BodyGeometry, p: WalkParams) -> Plan:
     t_b = t_a + K * t_step  # deceleration starts; the root then stops exactly at s = K L
     t_stop = t_b + tau
     n = _frame(max(t_stop, hs[-1]) + p.stand_end_s, fps) + 1
-    t = np.arange(n) / fps
-    progress = ramp_progress(t, v, t_a, t_b, tau)
-    path = Path(turn=np.radians(p.turn_deg), s0=0.5 * L, s1=(K - 0.5) * L)
-    heading = path.heading(progress)
-    a = _side_index(p.first_foot)
-    phase_a = (t - hs[0]) / t_stride
-    env = _envelope(t, t_a, hs[0], hs[K - 1], t_stop)
-    _, left = heading_vectors(heading)
-    side_a = 1.0 if a == 0 else -1.0
+    return _WalkTiming(L, t_stride, tau, t_a, t_b, t_stop, hs, lift, n, np.arange(n) / fps)
+
+
+def _closing_laterals(geo: BodyGeometry, p: WalkParams, a: int) -> tuple[float, float]:
+    """Lateral offsets (cm left of the path) of the last heel strike's footprint and of the
+    closing footprint beside it at standing width (hip-joint spacing); ``a`` is the first foot."""
+    K = p.n_steps
     last = a if K % 2 else 1 - a  # the foot of heel strike K; the other one closes beside it
     lat_last = (0.5 if last == 0 else -0.5) * p.step_width_cm
     lat_close = lat_last - (geo.hip[last, 0] - geo.hip[1 - last, 0])  # standing width beside it
-    settle = 0.5 * (lat_last + lat_close) * minimum_jerk((t - hs[K - 1]) / (t_stop - hs[K - 1]))
-    sway = env * m.sway_cm * side_a * np.cos(2 * np.pi * (phase_a - 0.3)) + settle
-    root_xz = path.position(progress) + sway[:, None] * left
-    # Lowest at heel strike (double support), highest at mid-stance.
-    height = -env * (0.5 + m.bob_cm * (1.0 + np.cos(4.0 * np.pi * phase_a)))
+    return lat_last, lat_close
 
-    flat = max(_frame(0.1 * t_stride, fps), 1)
-    roll_len = (m.stance_fraction - 0.3) * t_stride  # terminal stance + pre-swing
+
+def _walk_sway(geo: BodyGeometry, p: WalkParams, tm: _WalkTiming, env: np.ndarray, phase_a: np.ndarray) -> np.ndarray:
+    """(T,) lateral root offset: side-to-side sway over the stance foot in steady gait, then a
+    settle to the middle of the closing stance."""
+    m, K = p.manner, p.n_steps
+    a = _side_index(p.first_foot)
+    side_a = 1.0 if a == 0 else -1.0
+    lat_last, lat_close = _closing_laterals(geo, p, a)
+    settle = 0.5 * (lat_last + lat_close) * minimum_jerk((tm.t - tm.hs[K - 1]) / (tm.t_stop - tm.hs[K - 1]))
+    return env * m.sway_cm * side_a * np.cos(2 * np.pi * (phase_a - 0.3)) + settle
+
+
+def _walk_contacts(
+    geo: BodyGeometry, p: WalkParams, tm: _WalkTiming, path: Path, progress: np.ndarray
+) -> list[Contact]:
+    """The walk's contacts in time order: the two standing feet, heel strikes 1 .. K on
+    alternate sides of the path, and the closing step beside the last footprint."""
+    m, fps, n, K, L = p.manner, p.fps, tm.n, p.n_steps, tm.half_stride
+    a = _side_index(p.first_foot)
+    _, lat_close = _closing_laterals(geo, p, a)
+    flat = max(_frame(0.1 * tm.t_stride, fps), 1)
+    roll_len = (m.stance_fraction - 0.3) * tm.t_stride  # terminal stance + pre-swing
     contacts: list[Contact] = []
 
     def add(side: int, start: int, stop: int, s: float, lateral: float, heel: float, peak: float, roll: bool) -> None:
@@ -294,26 +325,52 @@ def plan_walk(geo: BodyGeometry, p: WalkParams) -> Plan:
 
     lateral = lambda side: (0.5 if side == 0 else -0.5) * p.step_width_cm  # noqa: E731
     for side, k_lift in ((a, 0), (1 - a, 1)):  # standing feet, under the hip joints
-        add(side, 0, _frame(lift[k_lift], fps) + 1, 0.0, geo.hip[side, 0], 0.0, 0.85 * m.knee_peak_deg, True)
+        add(side, 0, _frame(tm.lift[k_lift], fps) + 1, 0.0, geo.hip[side, 0], 0.0, 0.85 * m.knee_peak_deg, True)
     for k in range(1, K + 2):  # heel strikes 1 .. K, then the closing step
         side = a if k % 2 else 1 - a
         closing = k == K + 1
-        stop = _frame(lift[k + 1], fps) + 1 if k + 2 <= K + 1 else n
+        stop = _frame(tm.lift[k + 1], fps) + 1 if k + 2 <= K + 1 else n
         peak = 0.75 * m.knee_peak_deg if k + 2 == K + 1 else m.knee_peak_deg
         s_k, lat = (K * L, lat_close) if closing else (k * L, lateral(side))
         heel = (0.5 if closing else 1.0) * m.heel_strike_deg
-        add(side, _frame(hs[k - 1], fps), stop, s_k, lat, heel, peak, stop < n)
+        add(side, _frame(tm.hs[k - 1], fps), stop, s_k, lat, heel, peak, stop < n)
+    return contacts
 
-    hs_f = [_frame(x, fps) for x in hs]
+
+def _walk_segments(contacts: list[Contact], tm: _WalkTiming, K: int, fps: float) -> list[tuple[str, int, int]]:
+    """Primitives of a walk: ``walk_start``, one ``walk_<side>Stance`` per step between
+    successive heel strikes (named by the foot of the following contact), ``walk_end``."""
+    hs_f = [_frame(x, fps) for x in tm.hs]
     segments = [("walk_start", 0, hs_f[0])]
     segments += [(f"walk_{contacts[k + 1].side}Stance", hs_f[k - 1], hs_f[k]) for k in range(1, K + 1)]
-    segments.append(("walk_end", hs_f[K], n))
+    segments.append(("walk_end", hs_f[K], tm.n))
+    return segments
+
+
+def plan_walk(geo: BodyGeometry, p: WalkParams) -> Plan:
+    """Stand, ``n_steps`` heel strikes (first with ``first_foot``), a closing step beside the
+    last footprint, stand. Footprints lie ``step_width/2`` either side of the path at arc
+    lengths k × stride/2; the standing feet sit under the hip joints."""
+    m, fps, K = p.manner, p.fps, p.n_steps
+    tm = _walk_timing(geo, p)
+    t, L, n = tm.t, tm.half_stride, tm.n
+    progress = ramp_progress(t, p.speed_cm_s, tm.t_a, tm.t_b, tm.tau)
+    path = Path(turn=np.radians(p.turn_deg), s0=0.5 * L, s1=(K - 0.5) * L)
+    heading = path.heading(progress)
+    a = _side_index(p.first_foot)
+    phase_a = (t - tm.hs[0]) / tm.t_stride
+    env = _envelope(t, tm.t_a, tm.hs[0], tm.hs[K - 1], tm.t_stop)
+    _, left = heading_vectors(heading)
+    root_xz = path.position(progress) + _walk_sway(geo, p, tm, env, phase_a)[:, None] * left
+    # Lowest at heel strike (double support), highest at mid-stance.
+    height = -env * (0.5 + m.bob_cm * (1.0 + np.cos(4.0 * np.pi * phase_a)))
+    contacts = _walk_contacts(geo, p, tm, path, progress)
     truth = {
         "stride_length_cm": _stride_truth(contacts, list(range(4, K + 2))),
-        "speed_cm_s": v,
+        "speed_cm_s": p.speed_cm_s,
         "step_width_cm": p.step_width_cm,
         "turn_deg": p.turn_deg,
-        "cadence_steps_min": 120.0 / t_stride,
+        "cadence_steps_min": 120.0 / tm.t_stride,
         "stance_fraction": m.stance_fraction,
         "n_steps": K,
     }
@@ -327,7 +384,7 @@ def plan_walk(geo: BodyGeometry, p: WalkParams) -> Plan:
         height_offset=height,
         ref=[0, 1],
         ref_knee_deg=6.0,
-        segments=segments,
+        segments=_walk_segments(contacts, tm, K, fps),
         crop=(0, n),
         truth=truth,
     )
@@ -336,6 +393,60 @@ def plan_walk(geo: BodyGeometry, p: WalkParams) -> Plan:
 GRAVITY_CM_S2 = 981.0
 RUN_LAND_KNEE_DEG = 12.0  # straightest landing knee used to set the running height; with the smoothing
 # of the root height the knee lands at ≈ 15-25° and flexes to ≈ 40-45° at mid-stance (Novacheck 1998)
+
+
+def _run_height(t: np.ndarray, t_land0: float, t_step: float, t_c: float, t_fl: float) -> np.ndarray:
+    """(T,) root height offset of a run: a spring-mass stance dip of ``t_c`` s after each
+    landing joined to a ballistic flight of ``t_fl`` s with equal take-off and landing speed."""
+    v_up = 0.5 * GRAVITY_CM_S2 * t_fl
+    dip = v_up * t_c / np.pi
+    tau = np.mod(t - t_land0, t_step)
+    return np.where(
+        tau < t_c,
+        -dip * np.sin(np.pi * np.clip(tau / t_c, 0, 1)),
+        v_up * (tau - t_c) - 0.5 * GRAVITY_CM_S2 * (tau - t_c) ** 2,
+    )
+
+
+def _run_contacts(
+    geo: BodyGeometry,
+    p: RunParams,
+    path: Path,
+    progress: np.ndarray,
+    landings: tuple[np.ndarray, np.ndarray, np.ndarray],
+    t_c: float,
+    n: int,
+) -> list[Contact]:
+    """One contact per landing (``landings``: indices k, times, path arc lengths), feet
+    alternating from ``first_foot`` at landing 1, each lasting ``t_c`` s and rolling over the
+    toe base from mid-stance on."""
+    m, fps = p.manner, p.fps
+    a = _side_index(p.first_foot)  # the foot of landing 1
+    flat = max(_frame(0.2 * t_c, fps), 1)
+    contacts = []
+    for k, tl, s in zip(*landings):
+        side = a if (k - 1) % 2 == 0 else 1 - a
+        ankle, yaw = _foot_on_path(path, float(s), (0.5 if side == 0 else -0.5) * p.step_width_cm, geo, side)
+        start, stop = _frame(tl, fps), min(_frame(tl + t_c, fps) + 1, n)
+        mid = _passes_over(progress, float(s), start)
+        contacts.append(
+            Contact(
+                side=SIDES[side],
+                start=start,
+                stop=stop,
+                ankle=ankle,
+                yaw=yaw,
+                heel_deg=m.heel_strike_deg,
+                flat_frames=flat,
+                mid=mid,
+                roll=True,
+                roll_from=mid,
+                push_off_deg=m.push_off_deg,
+                reach_from=start,
+                knee_peak_deg=m.knee_peak_deg,
+            )
+        )
+    return contacts
 
 
 def plan_run(geo: BodyGeometry, p: RunParams) -> Plan:
@@ -357,45 +468,11 @@ def plan_run(geo: BodyGeometry, p: RunParams) -> Plan:
     path = Path(turn=np.radians(p.turn_deg), s0=float(s_land[3]), s1=float(s_land[N + 3]))
     heading = path.heading(progress)
     a = _side_index(p.first_foot)  # the foot of landing 1
-    side_of = lambda k: a if (k - 1) % 2 == 0 else 1 - a  # noqa: E731
     phase_a = (t - t_land[3]) / t_stride
     _, left = heading_vectors(heading)
     side_a = 1.0 if a == 0 else -1.0
     root_xz = path.position(progress) + (m.sway_cm * side_a * np.cos(2 * np.pi * (phase_a - 0.2)))[:, None] * left
-    # Spring-mass stance dip joined to a ballistic flight of equal take-off and landing speed.
-    v_up = 0.5 * GRAVITY_CM_S2 * t_fl
-    dip = v_up * t_c / np.pi
-    tau = np.mod(t - t_land[0], t_step)
-    height = np.where(
-        tau < t_c,
-        -dip * np.sin(np.pi * np.clip(tau / t_c, 0, 1)),
-        v_up * (tau - t_c) - 0.5 * GRAVITY_CM_S2 * (tau - t_c) ** 2,
-    )
-
-    flat = max(_frame(0.2 * t_c, fps), 1)
-    contacts = []
-    for k, tl, s in zip(ks, t_land, s_land):
-        side = side_of(k)
-        ankle, yaw = _foot_on_path(path, float(s), (0.5 if side == 0 else -0.5) * p.step_width_cm, geo, side)
-        start, stop = _frame(tl, fps), min(_frame(tl + t_c, fps) + 1, n)
-        mid = _passes_over(progress, float(s), start)
-        contacts.append(
-            Contact(
-                side=SIDES[side],
-                start=start,
-                stop=stop,
-                ankle=ankle,
-                yaw=yaw,
-                heel_deg=m.heel_strike_deg,
-                flat_frames=flat,
-                mid=mid,
-                roll=True,
-                roll_from=mid,
-                push_off_deg=m.push_off_deg,
-                reach_from=start,
-                knee_peak_deg=m.knee_peak_deg,
-            )
-        )
+    contacts = _run_contacts(geo, p, path, progress, (ks, t_land, s_land), t_c, n)
     land_f = [c.start for c in contacts]
     crop = (land_f[3] - _frame(0.5 * t_fl, fps), land_f[N + 3] + _frame(0.5 * t_c, fps))
     segments = [(f"run_{contacts[i].side}Stance", land_f[i], land_f[i + 1]) for i in range(3, N + 3)]
@@ -417,7 +494,7 @@ def plan_run(geo: BodyGeometry, p: RunParams) -> Plan:
         heading=heading,
         phase=phase_a - (0.0 if a == 0 else 0.5),
         envelope=np.ones(n),
-        height_offset=height,
+        height_offset=_run_height(t, t_land[0], t_step, t_c, t_fl),
         ref=list(range(len(contacts))),
         ref_knee_deg=RUN_LAND_KNEE_DEG,
         segments=segments,

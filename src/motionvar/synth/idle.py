@@ -42,10 +42,13 @@ import numpy as np
 from ..core.kinematics import fk
 from ..core.motion import Motion
 from ..core.quaternions import qmul, qrot
+from ..core.skeleton import Skeleton
 from .intervals import format_intervals, format_ranges
 from .signals import colored_noise, minimum_jerk, subject_rng
 from .stance import (
+    Feet,
     Rig,
+    StanceHabit,
     elbow_pole,
     euler_q,
     hanging_hand_offsets,
@@ -199,6 +202,137 @@ def _truth_intervals(rests: list[Rest], fps: float, n: int) -> tuple[str, str]:
     return format_intervals(postures), format_intervals(phases)
 
 
+@dataclass(frozen=True)
+class _Variations:
+    """Small continuous variations of one idle clip (Egges 2004 Sec. 6): medio-lateral and
+    antero-posterior sway (cm), breathing 0 (exhaled) … 1 (inhaled), head noise (T, 2)
+    (pitch, yaw; rad) and arm noise (T, 2, 3) (per side: elbow, shoulder flexion,
+    abduction; rad)."""
+
+    sway_ml: np.ndarray
+    sway_ap: np.ndarray
+    breath: np.ndarray
+    head: np.ndarray
+    arms: np.ndarray
+
+
+def _small_variations(subject: Subject, style: IdleStyle, n: int, fps: float, rng: np.random.Generator) -> _Variations:
+    """Postural sway of RMS ``subject.sway_cm`` split into antero-posterior and medio-lateral
+    parts, breathing at a slowly varying rate, head and arm noise (module docstring)."""
+    sway = colored_noise(n, fps, style.sway_corner_hz, rng, channels=2)
+    ap_rms = subject.sway_cm / np.hypot(1.0, style.sway_ml_ratio)
+    sway_ml, sway_ap = sway[:, 0] * style.sway_ml_ratio * ap_rms, sway[:, 1] * ap_rms
+    rate = subject.breath_rate_hz * (1.0 + 0.08 * colored_noise(n, fps, 0.05, rng)[:, 0])
+    phase = 2.0 * np.pi * np.cumsum(rate) / fps + rng.uniform(0.0, 2.0 * np.pi)
+    breath = 0.5 * (1.0 - np.cos(phase)) * (1.0 + 0.15 * colored_noise(n, fps, 0.05, rng)[:, 0])
+    head_noise = np.radians(style.head_rms_deg) * colored_noise(n, fps, 0.3, rng, channels=2)
+    arm_noise = np.radians(style.arm_rms_deg) * colored_noise(n, fps, 0.4, rng, channels=6).reshape(n, 2, 3)
+    return _Variations(sway_ml, sway_ap, breath, head_noise, arm_noise)
+
+
+def _pose_pelvis_and_legs(
+    sk: Skeleton,
+    habit: StanceHabit,
+    style: IdleStyle,
+    feet: Feet,
+    width: float,
+    post: np.ndarray,
+    var: _Variations,
+    rot: np.ndarray,
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Pelvis shifted over the loaded foot, dropped towards the unloaded side, turned and
+    swaying as an inverted pendulum about the ankles; legs solved to the planted ``feet``.
+    Fills ``rot``'s root and legs; returns root positions (T, 3), pelvic drop and yaw (T,) (rad)."""
+    w, yaw_off = post[:, 0], post[:, 1]
+    root_x = w * style.com_shift_frac * width / 2.0 + var.sway_ml
+    root_z = habit.com_ahead_cm + var.sway_ap
+    root_y0 = root_height(sk, np.zeros((1, 2)), rot[:1, 0], feet, habit.lock_knee_deg)[0]
+    drop = np.radians(style.pelvis_drop_deg) * w
+    yaw = np.radians(style.pelvis_yaw_deg * w + yaw_off)
+    rot[:, 0] = euler_q(flex=var.sway_ap / root_y0, axial=yaw, lateral=drop - var.sway_ml / root_y0)
+    root_xz = np.stack([root_x, root_z], axis=-1)
+    root_pos = np.stack([root_x, root_height(sk, root_xz, rot[:, 0], feet, habit.lock_knee_deg), root_z], axis=-1)
+    solve_legs(sk, rot, root_pos, feet)
+    return root_pos, drop, yaw
+
+
+def _pose_upper_body(
+    subject: Subject,
+    style: IdleStyle,
+    rig: Rig,
+    post: np.ndarray,
+    var: _Variations,
+    drop: np.ndarray,
+    yaw: np.ndarray,
+    rot: np.ndarray,
+) -> None:
+    """Fills ``rot``'s trunk, head and clavicles: habitual lean, lateral bend back over the
+    pelvis, turn back towards the front, breathing (chest extension, shoulders rising);
+    head at the habitual pitch plus the rest's offsets and small movements."""
+    sk = subject.skeleton
+    head_pitch_off, head_yaw_off = post[:, 3], post[:, 4]
+    lean = np.radians(subject.torso_lean_deg)
+    comp = -style.trunk_compensation * drop
+    for name, share in (("LowerBack", 0.45), ("Spine", 0.35), ("Spine1", 0.2)):
+        extend = np.radians(1.0) * var.breath if name == "Spine1" else 0.0
+        rot[:, rig[name]] = euler_q(flex=share * lean - extend, axial=-0.6 * share * yaw, lateral=share * comp)
+    pitch = np.radians(subject.head_pitch_deg + head_pitch_off) + var.head[:, 0]
+    head_yaw = np.radians(head_yaw_off) + var.head[:, 1]
+    rot[:, rig["Neck1"]] = euler_q(flex=0.5 * pitch, axial=0.5 * head_yaw)
+    rot[:, rig["Head"]] = euler_q(flex=0.5 * pitch, axial=0.5 * head_yaw)
+    for sign, side in ((1.0, "left"), (-1.0, "right")):
+        clav = sk.offsets[rig.side(side, "Arm")]
+        lift = np.radians(subject.shoulder_lift_deg) + style.breath_rise_cm * var.breath / np.linalg.norm(clav)
+        rot[:, rig.side(side, "Shoulder")] = euler_q(lateral=sign * lift)
+
+
+def _hang_arms(
+    subject: Subject,
+    habit: StanceHabit,
+    rig: Rig,
+    root_pos: np.ndarray,
+    rot: np.ndarray,
+    elbow_off: np.ndarray,
+    yaw: np.ndarray,
+    arm_noise: np.ndarray,
+) -> None:
+    """Fills ``rot``'s arms: hands hanging from the shoulders (gravity frame turned with the
+    pelvis), elbows at the habit plus the rest's offset, with small arm movements."""
+    sk = subject.skeleton
+    frames = fk(rot, root_pos, sk.offsets, sk.parents, return_rotations=True)
+    pos = frames[0]
+    turn = heading_quat(yaw)
+    for i, (sign, side) in enumerate(((1.0, "left"), (-1.0, "right"))):
+        elbow = np.maximum(subject.elbow_flex_deg + elbow_off + np.degrees(arm_noise[:, i, 0]), 3.0)
+        hang = hanging_hand_offsets(sk, elbow, habit.arm_abduction_deg)[:, i]
+        swing = euler_q(flex=-arm_noise[:, i, 1], lateral=-sign * arm_noise[:, i, 2])
+        target = pos[:, rig.side(side, "Arm")] + qrot(qmul(turn, swing), hang)
+        solve_arm(sk, rot, root_pos, side, target, elbow_pole(turn, side), frames=frames)
+
+
+def _idle_truth(
+    rests: list[Rest], fps: float, n: int, heading: float, start_xz: tuple[float, float], width: float, toe_out: float
+) -> dict:
+    """Ground truth of an idle clip (see :func:`generate_idle`)."""
+    postures, phases = _truth_intervals(rests, fps, n)
+    return {
+        "variant": "standing",
+        "target_x": float("nan"),
+        "target_y": float("nan"),
+        "target_z": float("nan"),
+        "segments": format_intervals([("idle", 0, n)]),
+        "idle_phases": phases,
+        "left_contacts": format_ranges([(0, n)]),
+        "right_contacts": format_ranges([(0, n)]),
+        "idle_postures": postures,
+        "heading_deg": float(np.degrees(heading)),
+        "start_x": float(start_xz[0]),
+        "start_z": float(start_xz[1]),
+        "stance_width_cm": float(width),
+        "toe_out_deg": float(toe_out),
+    }
+
+
 def generate_idle(subject: Subject, params: IdleParams, rng: np.random.Generator) -> tuple[Motion, dict]:
     """Idle standing of ``params.duration_s`` seconds with balance shifts and small variations.
 
@@ -223,75 +357,14 @@ def generate_idle(subject: Subject, params: IdleParams, rng: np.random.Generator
     toe_out = habit.toe_out_deg + rng.normal(0.0, 1.5)
     feet = plant_feet(sk, width, toe_out)
     rests = sample_rests(subject, params.duration_s, first, rng)
-    post = _posture_tracks(rests, t)
-    w, yaw_off, elbow_off, head_pitch_off, head_yaw_off = post.T
-
-    # Small variations (Egges Sec. 6): sway, breathing, head and arm noise.
-    sway = colored_noise(n, fps, style.sway_corner_hz, rng, channels=2)
-    ap_rms = subject.sway_cm / np.hypot(1.0, style.sway_ml_ratio)
-    sway_ml, sway_ap = sway[:, 0] * style.sway_ml_ratio * ap_rms, sway[:, 1] * ap_rms
-    rate = subject.breath_rate_hz * (1.0 + 0.08 * colored_noise(n, fps, 0.05, rng)[:, 0])
-    phase = 2.0 * np.pi * np.cumsum(rate) / fps + rng.uniform(0.0, 2.0 * np.pi)
-    breath = 0.5 * (1.0 - np.cos(phase)) * (1.0 + 0.15 * colored_noise(n, fps, 0.05, rng)[:, 0])
-    head_noise = np.radians(style.head_rms_deg) * colored_noise(n, fps, 0.3, rng, channels=2)
-    arm_noise = np.radians(style.arm_rms_deg) * colored_noise(n, fps, 0.4, rng, channels=6).reshape(n, 2, 3)
+    post = _posture_tracks(rests, t)  # weight, yaw, elbow, head pitch, head yaw offsets
+    var = _small_variations(subject, style, n, fps, rng)
 
     rig = Rig(sk)
     rot = identity_rotations(n, sk)
-    # Pelvis: shift over the loaded foot, drop towards the unloaded side, turn, pendulum sway.
-    root_x = w * style.com_shift_frac * width / 2.0 + sway_ml
-    root_z = habit.com_ahead_cm + sway_ap
-    root_y0 = root_height(sk, np.zeros((1, 2)), rot[:1, 0], feet, habit.lock_knee_deg)[0]
-    drop = np.radians(style.pelvis_drop_deg) * w
-    yaw = np.radians(style.pelvis_yaw_deg * w + yaw_off)
-    rot[:, 0] = euler_q(flex=sway_ap / root_y0, axial=yaw, lateral=drop - sway_ml / root_y0)
-    root_xz = np.stack([root_x, root_z], axis=-1)
-    root_pos = np.stack([root_x, root_height(sk, root_xz, rot[:, 0], feet, habit.lock_knee_deg), root_z], axis=-1)
-    solve_legs(sk, rot, root_pos, feet)
-
-    # Trunk: habitual lean, lateral bend back over the pelvis, turn back towards the front,
-    # breathing (chest extension) ; head: habitual pitch plus small movements.
-    lean = np.radians(subject.torso_lean_deg)
-    comp = -style.trunk_compensation * drop
-    for name, share in (("LowerBack", 0.45), ("Spine", 0.35), ("Spine1", 0.2)):
-        extend = np.radians(1.0) * breath if name == "Spine1" else 0.0
-        rot[:, rig[name]] = euler_q(flex=share * lean - extend, axial=-0.6 * share * yaw, lateral=share * comp)
-    pitch = np.radians(subject.head_pitch_deg + head_pitch_off) + head_noise[:, 0]
-    head_yaw = np.radians(head_yaw_off) + head_noise[:, 1]
-    rot[:, rig["Neck1"]] = euler_q(flex=0.5 * pitch, axial=0.5 * head_yaw)
-    rot[:, rig["Head"]] = euler_q(flex=0.5 * pitch, axial=0.5 * head_yaw)
-    for sign, side in ((1.0, "left"), (-1.0, "right")):
-        clav = sk.offsets[rig.side(side, "Arm")]
-        lift = np.radians(subject.shoulder_lift_deg) + style.breath_rise_cm * breath / np.linalg.norm(clav)
-        rot[:, rig.side(side, "Shoulder")] = euler_q(lateral=sign * lift)
-
-    # Arms hang from the shoulders (gravity frame turned with the pelvis), elbows at the habit.
-    frames = fk(rot, root_pos, sk.offsets, sk.parents, return_rotations=True)
-    pos = frames[0]
-    turn = heading_quat(yaw)
-    for i, (sign, side) in enumerate(((1.0, "left"), (-1.0, "right"))):
-        elbow = np.maximum(subject.elbow_flex_deg + elbow_off + np.degrees(arm_noise[:, i, 0]), 3.0)
-        hang = hanging_hand_offsets(sk, elbow, habit.arm_abduction_deg)[:, i]
-        swing = euler_q(flex=-arm_noise[:, i, 1], lateral=-sign * arm_noise[:, i, 2])
-        target = pos[:, rig.side(side, "Arm")] + qrot(qmul(turn, swing), hang)
-        solve_arm(sk, rot, root_pos, side, target, elbow_pole(turn, side), frames=frames)
-
+    root_pos, drop, yaw = _pose_pelvis_and_legs(sk, habit, style, feet, width, post, var, rot)
+    _pose_upper_body(subject, style, rig, post, var, drop, yaw, rot)
+    _hang_arms(subject, habit, rig, root_pos, rot, post[:, 2], yaw, var.arms)
     root_w, rot_w = to_world(root_pos, rot, heading, start_xz)
-    postures, phases = _truth_intervals(rests, fps, n)
-    truth = {
-        "variant": "standing",
-        "target_x": float("nan"),
-        "target_y": float("nan"),
-        "target_z": float("nan"),
-        "segments": format_intervals([("idle", 0, n)]),
-        "idle_phases": phases,
-        "left_contacts": format_ranges([(0, n)]),
-        "right_contacts": format_ranges([(0, n)]),
-        "idle_postures": postures,
-        "heading_deg": float(np.degrees(heading)),
-        "start_x": float(start_xz[0]),
-        "start_z": float(start_xz[1]),
-        "stance_width_cm": float(width),
-        "toe_out_deg": float(toe_out),
-    }
+    truth = _idle_truth(rests, fps, n, heading, start_xz, width, toe_out)
     return Motion(skeleton=sk, root_pos=root_w, rotations=rot_w, fps=fps), truth

@@ -65,6 +65,7 @@ from .stance import (
     SIDES,
     Feet,
     Rig,
+    StanceHabit,
     arm_reach,
     body_com,
     elbow_pole,
@@ -263,13 +264,32 @@ class _Body:
         return back, pos
 
 
-def _generate(subject: Subject, params: ReachParams, rng: np.random.Generator, kind: str) -> tuple[Motion, dict]:
-    params.validate()
-    sk = subject.skeleton
-    rig = Rig(sk)
-    habit = stance_habit(subject)
-    style = reach_style(subject)
-    fps = float(params.fps)
+@dataclass(frozen=True)
+class _ClipDraws:
+    """Per-clip values of a reach clip, from :class:`ReachParams` or drawn (module docstring):
+    placement, target and object width, timing, lifting strategy ``q``, preferred reach
+    elbow (deg), carrying arm posture (rad) and the planted feet."""
+
+    heading: float
+    start_xz: tuple[float, float]
+    target: np.ndarray
+    width: float
+    dscale: float
+    hold: float
+    lead: float
+    settle: float
+    q: float
+    elbow_pref: float
+    carry_flex: float
+    carry_elbow: float
+    feet: Feet
+
+
+def _draw_clip(
+    subject: Subject, params: ReachParams, habit: StanceHabit, style: ReachStyle, rng: np.random.Generator
+) -> _ClipDraws:
+    """The clip's :class:`_ClipDraws`, drawn from ``rng`` in a fixed order where
+    ``params`` leaves a value None; the personal habits vary a little per clip."""
     heading = np.radians(params.heading_deg if params.heading_deg is not None else rng.uniform(-180.0, 180.0))
     start_xz = params.start_xz if params.start_xz is not None else tuple(rng.uniform(-300.0, 300.0, 2))
     target = draw_target(params, subject, rng)
@@ -282,13 +302,17 @@ def _generate(subject: Subject, params: ReachParams, rng: np.random.Generator, k
     elbow_pref = subject.elbow_flex_deg + 15.0 + rng.normal(0.0, 4.0)
     carry_flex = np.radians(style.carry_arm_flex_deg + rng.normal(0.0, 3.0))
     carry_elbow = np.radians(style.carry_elbow_deg + rng.normal(0.0, 4.0))
+    feet = plant_feet(subject.skeleton, habit.width_cm + rng.normal(0.0, 1.0), habit.toe_out_deg + rng.normal(0.0, 1.5))
+    return _ClipDraws(
+        heading, start_xz, target, width, dscale, hold, lead, settle, q, elbow_pref, carry_flex, carry_elbow, feet
+    )
 
-    feet = plant_feet(sk, habit.width_cm + rng.normal(0.0, 1.0), habit.toe_out_deg + rng.normal(0.0, 1.5))
-    grips = target + np.array([[width / 2.0, 0.0, 0.0], [-width / 2.0, 0.0, 0.0]])
-    d_pref = min(arm_reach(sk, side, elbow_pref) for side in SIDES)
-    d_max = min(arm_reach(sk, side, 0.0) for side in SIDES)
-    body = _Body(
-        skeleton=sk,
+
+def _make_body(subject: Subject, habit: StanceHabit, feet: Feet, target: np.ndarray) -> _Body:
+    """The clip's :class:`_Body`: the subject's habits, trunk turned and root shifted
+    towards the target's side."""
+    return _Body(
+        skeleton=subject.skeleton,
         feet=feet,
         lean=np.radians(subject.torso_lean_deg),
         knee_lock=habit.lock_knee_deg,
@@ -298,8 +322,20 @@ def _generate(subject: Subject, params: ReachParams, rng: np.random.Generator, k
         shoulder_lift=np.radians(subject.shoulder_lift_deg),
         head_pitch=np.radians(subject.head_pitch_deg),
     )
-    # Least lowering that brings both shoulders within the preferred reach of their grips,
-    # with the personal strategy q, or squatting more when that cannot get there.
+
+
+def _reach_posture(
+    subject: Subject, body: _Body, rig: Rig, grips: np.ndarray, target: np.ndarray, q: float, elbow_pref: float
+) -> tuple[float, int, np.ndarray, np.ndarray]:
+    """Least lowering that brings both shoulders within the preferred reach of their grips,
+    with the personal strategy ``q``, or squatting more when that cannot get there
+    (module docstring); ValueError when the target is out of reach.
+
+    Returns the strategy used, the lowering's index into ``_GRID``, and the balanced hip
+    back-shifts (G,) and joint positions (G, J, 3) of that strategy over ``_GRID``."""
+    sk = body.skeleton
+    d_pref = min(arm_reach(sk, side, elbow_pref) for side in SIDES)
+    d_max = min(arm_reach(sk, side, 0.0) for side in SIDES)
     strategies = np.array([q] + [x for x in (0.25, 0.5, 0.75, 1.0) if x > q])
     s_g, q_g = (a.ravel() for a in np.meshgrid(_GRID, strategies))
     back_g, pos_g = body.balance(s_g, q_g)
@@ -313,55 +349,104 @@ def _generate(subject: Subject, params: ReachParams, rng: np.random.Generator, k
             f"(grips {dist[best]:.1f} cm from the shoulders at best, arm {d_max:.1f} cm)"
         )
     rows = slice(best - best % _GRID.size, best - best % _GRID.size + _GRID.size)  # the chosen strategy
-    q, k = q_g[best], best % _GRID.size
-    back_g, pos_g = back_g[rows], pos_g[rows]
-    s_end = _GRID[k]
+    return q_g[best], best % _GRID.size, back_g[rows], pos_g[rows]
+
+
+def _gaze_track(body: _Body, rig: Rig, pos_g: np.ndarray, target: np.ndarray, q: float) -> np.ndarray:
+    """(G,) head pitch over ``_GRID`` turning the gaze down towards the target: 70 % of the
+    neck-to-target angle not already covered by the trunk, kept in [-30°, 45°] (rad)."""
     necks = pos_g[:, rig["Neck1"]]
     gaze_g = np.arctan2(necks[:, 1] - target[1], np.maximum(target[2] - necks[:, 2], 1.0))
     trunk_g = body.lean + _GRID * body.trunk_range(q)
-    gaze_g = np.clip(0.7 * (gaze_g - trunk_g), np.radians(-30.0), np.radians(45.0))
+    return np.clip(0.7 * (gaze_g - trunk_g), np.radians(-30.0), np.radians(45.0))
 
-    # Key hand states: object centre relative to the shoulders' midpoint, grip spacing.
-    arms = [rig.side(side, "Arm") for side in SIDES]
-    sh = pos_g[0, arms]
-    relaxed = sh + hanging_hand_offsets(sk, subject.elbow_flex_deg, habit.arm_abduction_deg)
-    sagittal = np.array([0.0, -np.cos(carry_flex), np.sin(carry_flex)])
-    fore = np.array([0.0, -np.cos(carry_flex + carry_elbow), np.sin(carry_flex + carry_elbow)])
+
+def _hand_waypoints(
+    subject: Subject,
+    habit: StanceHabit,
+    rig: Rig,
+    shoulders: np.ndarray,
+    grips: np.ndarray,
+    target: np.ndarray,
+    d: _ClipDraws,
+    kind: str,
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Hand positions (2, 3) at the start, just after the hold (grasped, or released 3 cm
+    out and 2 cm up) and at the end of the clip: relaxed hanging arms (habitual elbow and
+    abduction) and the object carried in front (``carry_flex``, ``carry_elbow``), in the
+    order of ``kind``; ``shoulders`` (2, 3) are those of the standing posture."""
+    sk = subject.skeleton
+    relaxed = shoulders + hanging_hand_offsets(sk, subject.elbow_flex_deg, habit.arm_abduction_deg)
+    sagittal = np.array([0.0, -np.cos(d.carry_flex), np.sin(d.carry_flex)])
+    fore = np.array([0.0, -np.cos(d.carry_flex + d.carry_elbow), np.sin(d.carry_flex + d.carry_elbow)])
     ua, fa = (np.mean([np.linalg.norm(sk.offsets[rig.side(side, p)]) for side in SIDES]) for p in ("ForeArm", "Hand"))
-    carry = sh.mean(axis=0) + ua * sagittal + fa * fore + grips - target
+    carry = shoulders.mean(axis=0) + ua * sagittal + fa * fore + grips - target
     release = grips + np.array([[3.0, 2.0, 0.0], [-3.0, 2.0, 0.0]])
     start_hands, end_hands = (relaxed, carry) if kind == "pick" else (carry, relaxed)
     after_hold = grips if kind == "pick" else release
+    return start_hands, after_hold, end_hands
 
-    def state(hands: np.ndarray, row: int) -> tuple[np.ndarray, np.ndarray]:
-        c = hands.mean(axis=0)
-        return c - pos_g[row, arms].mean(axis=0), hands - c
 
-    k0, k1, k1b, k2 = state(start_hands, 0), state(grips, k), state(after_hold, k), state(end_hands, 0)
+def _hand_state(hands: np.ndarray, shoulders: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Key hand state: the hands' centre (3,) relative to the shoulders' midpoint, and each
+    hand's offset (2, 3) from that centre."""
+    c = hands.mean(axis=0)
+    return c - shoulders.mean(axis=0), hands - c
 
-    # Timeline (seconds): lead-in, reach, hold, retrieve, settle.
-    travel = np.linalg.norm(grips.mean(0) - start_hands.mean(0)) / 100.0
-    t_reach = float(np.clip(style.tempo * dscale * (0.55 + 0.9 * travel + 0.4 * s_end), 0.5, 2.5))
-    travel_back = np.linalg.norm(end_hands.mean(0) - after_hold.mean(0)) / 100.0
-    t_back = float(np.clip(style.tempo * dscale * (0.55 + 0.9 * travel_back + 0.4 * s_end), 0.5, 2.5))
-    t_a = lead
+
+@dataclass(frozen=True)
+class _Timeline:
+    """Timing of a reach clip (module docstring): reach and retrieve durations (s), the time
+    the hands reach the grips, the frame count, and the minimum-jerk profiles (T,) of the
+    body and hands going (``m_*``, ``m_hold`` through the hold) and coming back (``u_*``)."""
+
+    t_reach: float
+    t_back: float
+    t_b: float
+    n: int
+    m_body: np.ndarray
+    m_hand: np.ndarray
+    m_hold: np.ndarray
+    u_hand: np.ndarray
+    u_body: np.ndarray
+
+
+def _timeline(
+    style: ReachStyle, d: _ClipDraws, s_end: float, travel: float, travel_back: float, fps: float
+) -> _Timeline:
+    """Lead-in, reach, hold, retrieve, settle: each movement lasts 0.55 s + 0.9 s/m × hand
+    travel (m) + 0.4 s × lowering, times tempo and duration scale, kept in [0.5, 2.5] s; the
+    trunk leads the hands by 10 % of the movement."""
+    t_reach = float(np.clip(style.tempo * d.dscale * (0.55 + 0.9 * travel + 0.4 * s_end), 0.5, 2.5))
+    t_back = float(np.clip(style.tempo * d.dscale * (0.55 + 0.9 * travel_back + 0.4 * s_end), 0.5, 2.5))
+    hold = d.hold
+    t_a = d.lead
     t_b = t_a + t_reach
     t_c = t_b + hold
     t_d = t_c + t_back
-    n = int(np.ceil((t_d + settle) * fps)) + 1
+    n = int(np.ceil((t_d + d.settle) * fps)) + 1
     t = np.arange(n) / fps
-    m_body = minimum_jerk((t - t_a) / (0.9 * t_reach))
-    m_hand = minimum_jerk((t - t_a - 0.1 * t_reach) / (0.9 * t_reach))
-    m_hold = minimum_jerk((t - t_b) / hold) if hold > 0 else (t >= t_b).astype(float)
-    u_hand = minimum_jerk((t - t_c) / (0.9 * t_back))
-    u_body = minimum_jerk((t - t_c - 0.1 * t_back) / (0.9 * t_back))
-    s = s_end * (m_body - u_body)
-    attention = m_body - u_body
+    return _Timeline(
+        t_reach=t_reach,
+        t_back=t_back,
+        t_b=t_b,
+        n=n,
+        m_body=minimum_jerk((t - t_a) / (0.9 * t_reach)),
+        m_hand=minimum_jerk((t - t_a - 0.1 * t_reach) / (0.9 * t_reach)),
+        m_hold=minimum_jerk((t - t_b) / hold) if hold > 0 else (t >= t_b).astype(float),
+        u_hand=minimum_jerk((t - t_c) / (0.9 * t_back)),
+        u_body=minimum_jerk((t - t_c - 0.1 * t_back) / (0.9 * t_back)),
+    )
 
-    back = np.interp(s, _GRID, back_g)
-    root, rot = body.pose(s, q, back, gaze=attention * np.interp(s, _GRID, gaze_g))
-    frames = fk(rot, root, sk.offsets, sk.parents, return_rotations=True)
-    sh_mid = frames[0][:, arms].mean(axis=1)
+
+def _hand_path(
+    sh_mid: np.ndarray, keys: list[tuple[np.ndarray, np.ndarray]], tl: _Timeline
+) -> tuple[np.ndarray, np.ndarray]:
+    """Hands' centre (T, 3) in world coordinates and offsets (T, 2, 3) from it, blended
+    between the key states ``keys`` (start, grips, after the hold, end) relative to the
+    shoulders' midpoint ``sh_mid`` (T, 3), bowing forward by up to 6 cm on the way."""
+    k0, k1, k1b, k2 = keys
+    m_hand, m_hold, u_hand = tl.m_hand, tl.m_hold, tl.u_hand
     centre = k0[0] + np.outer(m_hand, k1[0] - k0[0]) + np.outer(m_hold, k1b[0] - k1[0])
     centre = centre + np.outer(u_hand, k2[0] - k1b[0])
     bow = np.array([0.0, 0.0, 1.0])
@@ -370,31 +455,70 @@ def _generate(subject: Subject, params: ReachParams, rng: np.random.Generator, k
         centre += np.outer(amp * np.sin(np.pi * m), bow)
     spacing = k0[1] + m_hand[:, None, None] * (k1[1] - k0[1]) + m_hold[:, None, None] * (k1b[1] - k1[1])
     spacing = spacing + u_hand[:, None, None] * (k2[1] - k1b[1])
-    centre_w = sh_mid + centre
-    turn = heading_quat(s * body.yaw)
-    for i, side in enumerate(SIDES):
-        solve_arm(sk, rot, root, side, centre_w + spacing[:, i], elbow_pole(turn, side), frames=frames)
+    return sh_mid + centre, spacing
 
-    frame_b = int(np.ceil(t_b * fps - 1e-9))  # first frame with the hands at the grips
-    root_w, rot_w = to_world(root, rot, heading, start_xz)
-    truth = {
+
+def _reach_truth(params: ReachParams, kind: str, d: _ClipDraws, tl: _Timeline, s_end: float) -> dict:
+    """Ground truth of a reach clip (see :func:`generate_pick`)."""
+    n = tl.n
+    frame_b = int(np.ceil(tl.t_b * float(params.fps) - 1e-9))  # first frame with the hands at the grips
+    return {
         "variant": params.region if params.target is None else "custom",
-        "target_x": float(target[0]),
-        "target_y": float(target[1]),
-        "target_z": float(target[2]),
+        "target_x": float(d.target[0]),
+        "target_y": float(d.target[1]),
+        "target_z": float(d.target[2]),
         "segments": format_intervals([(f"{kind}_reach", 0, frame_b + 1), (f"{kind}_retrieve", frame_b + 1, n)]),
         "left_contacts": format_ranges([(0, n)]),
         "right_contacts": format_ranges([(0, n)]),
         "idle_postures": "",
-        "object_width_cm": float(width),
-        "reach_duration_s": t_reach,
-        "retrieve_duration_s": t_back,
+        "object_width_cm": float(d.width),
+        "reach_duration_s": tl.t_reach,
+        "retrieve_duration_s": tl.t_back,
         "lowering": float(s_end),
-        "heading_deg": float(np.degrees(heading)),
-        "start_x": float(start_xz[0]),
-        "start_z": float(start_xz[1]),
+        "heading_deg": float(np.degrees(d.heading)),
+        "start_x": float(d.start_xz[0]),
+        "start_z": float(d.start_xz[1]),
     }
-    return Motion(skeleton=sk, root_pos=root_w, rotations=rot_w, fps=fps), truth
+
+
+def _generate(subject: Subject, params: ReachParams, rng: np.random.Generator, kind: str) -> tuple[Motion, dict]:
+    """One ``kind`` ("pick" or "place") clip: see :func:`generate_pick` / :func:`generate_place`."""
+    params.validate()
+    sk = subject.skeleton
+    rig = Rig(sk)
+    habit = stance_habit(subject)
+    style = reach_style(subject)
+    fps = float(params.fps)
+    d = _draw_clip(subject, params, habit, style, rng)
+    target = d.target
+    grips = target + np.array([[d.width / 2.0, 0.0, 0.0], [-d.width / 2.0, 0.0, 0.0]])
+    body = _make_body(subject, habit, d.feet, target)
+    q, k, back_g, pos_g = _reach_posture(subject, body, rig, grips, target, d.q, d.elbow_pref)
+    s_end = _GRID[k]
+    gaze_g = _gaze_track(body, rig, pos_g, target, q)
+
+    # Key hand states: object centre relative to the shoulders' midpoint, grip spacing.
+    arms = [rig.side(side, "Arm") for side in SIDES]
+    start_hands, after_hold, end_hands = _hand_waypoints(subject, habit, rig, pos_g[0, arms], grips, target, d, kind)
+    keys = [
+        _hand_state(h, pos_g[row, arms]) for h, row in ((start_hands, 0), (grips, k), (after_hold, k), (end_hands, 0))
+    ]
+    travel = np.linalg.norm(grips.mean(0) - start_hands.mean(0)) / 100.0
+    travel_back = np.linalg.norm(end_hands.mean(0) - after_hold.mean(0)) / 100.0
+    tl = _timeline(style, d, s_end, travel, travel_back, fps)
+
+    s = s_end * (tl.m_body - tl.u_body)
+    attention = tl.m_body - tl.u_body
+    back = np.interp(s, _GRID, back_g)
+    root, rot = body.pose(s, q, back, gaze=attention * np.interp(s, _GRID, gaze_g))
+    frames = fk(rot, root, sk.offsets, sk.parents, return_rotations=True)
+    centre_w, spacing = _hand_path(frames[0][:, arms].mean(axis=1), keys, tl)
+    turn = heading_quat(s * body.yaw)
+    for i, side in enumerate(SIDES):
+        solve_arm(sk, rot, root, side, centre_w + spacing[:, i], elbow_pole(turn, side), frames=frames)
+
+    root_w, rot_w = to_world(root, rot, d.heading, d.start_xz)
+    return Motion(skeleton=sk, root_pos=root_w, rotations=rot_w, fps=fps), _reach_truth(params, kind, d, tl, s_end)
 
 
 def generate_pick(subject: Subject, params: ReachParams, rng: np.random.Generator) -> tuple[Motion, dict]:

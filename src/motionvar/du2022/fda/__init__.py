@@ -40,6 +40,10 @@ API:
   :func:`canonical_primitives` (time warping to a canonical timeline),
   :func:`choose_basis_sizes` (K per primitive, Fig. 3.9 cut-off), :func:`n_basis_of`,
   :func:`primitive_motions`, :func:`functional_primitive`, :func:`sfpca_for`.
+- :mod:`.settings`: :class:`~.settings.FdaSettings`, config section ``fda`` (subsections
+  ``basis``, ``reconstruction``, ``sfpca``, ``gplvm``, ``latent``, ``table``), the one place
+  its defaults are written; the evaluations take it whole, :func:`sfpca_for` takes its
+  ``sfpca`` part.
 - :mod:`.evaluations`: one module per figure or table (Fig. 3.9-3.11, Table 3.1) and the
   shared measures :func:`feature_error`, :func:`observation_error`, :func:`knn_accuracy`,
   :func:`latent_separation` (silhouette, leave-one-out k-NN accuracy);

@@ -19,6 +19,7 @@ from .bspline import choose_n_basis
 from .functions import FunctionalMotions, bspline_fit_rmse
 
 if TYPE_CHECKING:
+    from .settings import BasisSettings, SfpcaSettings
     from .sfpca import SFPCA
 
 log = logging.getLogger(__name__)
@@ -78,11 +79,13 @@ def canonical_primitives(
     return out_motions, pd.concat(out_rows, ignore_index=True)
 
 
-def choose_basis_sizes(dataset, n_basis: Sequence[int], min_relative_drop: float) -> tuple[pd.DataFrame, pd.DataFrame]:
+def choose_basis_sizes(dataset, basis: BasisSettings) -> tuple[pd.DataFrame, pd.DataFrame]:
     """Sec. 3.3.3, Fig. 3.9: for every primitive of the canonical ``dataset`` the joint-space
-    RMSE (cm) of its B-spline functions for each candidate K in ``n_basis`` (those not above
-    the canonical frames), and the K chosen by the cut-off rule (:func:`choose_n_basis`).
-    Returns (RMSE table: one row per primitive and K, chosen table: one row per primitive)."""
+    RMSE (cm) of its B-spline functions for each candidate K in ``basis.n_basis`` (those not
+    above the canonical frames), and the K chosen by the cut-off rule (:func:`choose_n_basis`
+    with ``basis.min_relative_drop``). Returns (RMSE table: one row per primitive and K,
+    chosen table: one row per primitive)."""
+    n_basis, min_relative_drop = basis.n_basis, basis.min_relative_drop
     rows, chosen = [], []
     for primitive in sorted(dataset.metadata["primitive"].unique()):
         motions, meta = primitive_motions(dataset, primitive)
@@ -132,12 +135,21 @@ def functional_primitive(dataset, primitive: str, n_basis: int) -> tuple[Functio
     return FunctionalMotions.from_motions(motions, n_basis), meta
 
 
-def sfpca_for(fd: FunctionalMotions, n_components: int, eval_frames_per_basis: int = 0, **options) -> SFPCA:
-    """An unfitted :class:`SFPCA` for the clips ``fd``: its objective runs forward kinematics
-    at ``eval_frames_per_basis`` frames per basis function (0: every canonical frame);
-    ``options`` are SFPCA's (``weight_groups``, ``gradient``, ``max_iter``, ``tol``)."""
+def sfpca_for(fd: FunctionalMotions, n_components: int, settings: SfpcaSettings) -> SFPCA:
+    """An unfitted :class:`SFPCA` of ``n_components`` for the clips ``fd`` with the options of
+    ``settings`` (config ``fda.sfpca``): its objective runs forward kinematics at
+    ``settings.eval_frames_per_basis`` frames per basis function (0: every canonical frame)."""
     from .sfpca import SFPCA  # here: rules that fit no SFPCA skip scipy.optimize and scikit-learn
 
-    per_basis = eval_frames_per_basis
+    per_basis = settings.eval_frames_per_basis
     n_eval = min(fd.n_frames, per_basis * fd.basis.n_basis) if per_basis else None
-    return SFPCA(n_components, n_eval_frames=n_eval, **options)
+    return SFPCA(
+        n_components,
+        weight_groups=settings.weight_groups,
+        gradient=settings.gradient,
+        max_iter=settings.max_iter,
+        tol=settings.tol,
+        n_eval_frames=n_eval,
+        stop_window=settings.stop_window,
+        stop_rtol=settings.stop_rtol,
+    )

@@ -29,6 +29,7 @@ from scipy.optimize import minimize
 
 from .fpca import FPCA, functional_std, register_saved, zscore_weights
 from .functions import FunctionalMotions
+from .settings import SfpcaSettings
 
 
 def _torch():
@@ -230,6 +231,9 @@ class StallTest:
 class SFPCA(FPCA):
     """Scaled FPCA (Eq. 3.8), sklearn-style.
 
+    The options that config ``fda.sfpca`` sets default to :class:`.settings.SfpcaSettings`'s
+    (:func:`motionvar.du2022.fda.sfpca_for` builds an SFPCA from those settings).
+
     Args:
         n_components: latent dimension (weights are optimised for this number of
             eigenfunctions, as in the thesis).
@@ -247,7 +251,7 @@ class SFPCA(FPCA):
             the thesis' setting: it states no stopping rule). L-BFGS-B's ``ftol`` compares one
             iteration with the next; a window is less easily fooled by a slow creep, but a
             long plateau before a drop still passes for convergence (measured at full size:
-            d = 5 fell 8 % after 10 flat iterations), hence off in the shipped config.
+            d = 5 fell 8 % after 10 flat iterations), hence off by default.
 
     Fitted attributes (besides FPCA's): ``init_`` ("raw" or "normalized"), ``loss_raw_``,
     ``loss_normalized_``, ``loss_`` (objective at the optimum, cm^2), ``n_iter_``,
@@ -272,15 +276,15 @@ class SFPCA(FPCA):
     def __init__(
         self,
         n_components: int = 20,
-        weight_groups: str = "function",
-        gradient: str = "autograd",
-        max_iter: int = 100,
-        tol: float = 1e-6,
+        weight_groups: str = SfpcaSettings.weight_groups,
+        gradient: str = SfpcaSettings.gradient,
+        max_iter: int = SfpcaSettings.max_iter,
+        tol: float = SfpcaSettings.tol,
         bounds: tuple[float, float] = (1e-3, 1e3),
         n_eval_frames: int | None = None,
         init: str = "best",
-        stop_window: int = 0,
-        stop_rtol: float = 1e-3,
+        stop_window: int = SfpcaSettings.stop_window,
+        stop_rtol: float = SfpcaSettings.stop_rtol,
     ) -> None:
         super().__init__(n_components)
         self.weight_groups = weight_groups

@@ -2,6 +2,9 @@
 latent density chosen by BIC, space-partitioning trees for constraint search, MAP
 synthesis by Levenberg-Marquardt and graph-walk generation.
 
+- :mod:`.settings`: :class:`GraphSettings` (config section ``graph``) and its subsections
+  :class:`ModelSettings`, :class:`SearchSettings`, :class:`DiversitySettings`,
+  :class:`SynthesisSettings` (the settings of the graph walk).
 - :mod:`.primitive`: :class:`MotionPrimitive` (DTW time warping + SFPCA + GMM/BIC,
   Sec. 4.4.1, Eq. 4.1): ``fit``, ``sample``, ``log_prob``, ``key_frame_pose`` (f_k(M(s))
   at key frames), ``to_motions`` (back-projection), ``save``/``load`` (npz + json);
@@ -33,19 +36,21 @@ _EXPORTS = {
         "MorphableGraph",
         "Path2D",
         "StepResult",
-        "WalkSettings",
         "concatenate_steps",
         "follow_path",
         "place_motion",
         "synthesize_step",
     ],
     ".primitive": ["MotionPrimitive", "PrimitiveOptions", "primitive_clips", "select_gmm"],
+    ".settings": ["DiversitySettings", "GraphSettings", "ModelSettings", "SearchSettings", "SynthesisSettings"],
     ".synthesis": ["ChainResult", "MapResult", "StepChain", "StepGoal", "optimize_chain", "optimize_map"],
     ".trees": [
         "TREE_KINDS",
         "KeyFramePositionIndex",
         "MedianKDTree",
+        "ModelSettings",
         "SearchResult",
+        "SearchSettings",
         "SpacePartitioningTree",
         "brute_force",
         "random_search",
@@ -61,20 +66,24 @@ __all__ = [
     "ChainResult",
     "Constraint",
     "ConstraintStack",
+    "DiversitySettings",
+    "GraphSettings",
     "KeyFramePositionIndex",
     "MapResult",
     "MedianKDTree",
+    "ModelSettings",
     "MorphableGraph",
     "MotionPrimitive",
     "Objective",
     "Path2D",
     "PrimitiveOptions",
     "SearchResult",
+    "SearchSettings",
     "SpacePartitioningTree",
     "StepChain",
     "StepGoal",
     "StepResult",
-    "WalkSettings",
+    "SynthesisSettings",
     "brute_force",
     "concatenate_steps",
     "follow_path",

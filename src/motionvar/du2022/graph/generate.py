@@ -20,15 +20,15 @@ from .morphable_graph import (
     MorphableGraph,
     Path2D,
     StepResult,
-    WalkSettings,
     concatenate_steps,
     follow_path,
     step_length,
 )
 from .primitive import MotionPrimitive
+from .settings import SynthesisSettings
 from .trees import SpacePartitioningTree
 
-WALK_SETTING_KEYS = tuple(f.name for f in fields(WalkSettings))
+WALK_SETTING_KEYS = tuple(f.name for f in fields(SynthesisSettings))
 
 
 def check_path(points: Sequence[Sequence[float]]) -> Path2D:
@@ -46,18 +46,16 @@ def check_path(points: Sequence[Sequence[float]]) -> Path2D:
     return Path2D(p)
 
 
-def walk_settings(settings: Mapping[str, object], max_steps: int | None = None) -> WalkSettings:
-    """:class:`WalkSettings` from a saved settings mapping (unknown keys ignored)."""
-    kw = {k: v for k, v in settings.items() if k in WALK_SETTING_KEYS}
-    if "cyclic" in kw:
-        kw["cyclic"] = tuple(kw["cyclic"])
-    if max_steps is not None:
-        kw["max_steps"] = int(max_steps)
-    return WalkSettings(**kw)
+def walk_settings(settings: Mapping[str, object], max_steps: int | None = None) -> SynthesisSettings:
+    """The graph walk's :class:`~.settings.SynthesisSettings` from the settings saved with the
+    graph (config ``graph.synthesis`` and ``graph.seed``; other keys ignored), with
+    ``max_steps`` when given."""
+    st = SynthesisSettings.from_dict({k: v for k, v in settings.items() if k in WALK_SETTING_KEYS})
+    return st if max_steps is None else st.replace(max_steps=int(max_steps))
 
 
 def steps_for_path(
-    primitives: Mapping[str, MotionPrimitive], path: Path2D, joint_map: JointMap, settings: WalkSettings
+    primitives: Mapping[str, MotionPrimitive], path: Path2D, joint_map: JointMap, settings: SynthesisSettings
 ) -> int:
     """How many steps ``path`` takes. With the end primitive modelled the walk ends itself
     when the path's end is within a step (:func:`~.morphable_graph.follow_path`): a bound
@@ -101,14 +99,13 @@ def walk_along_path(
     graph: MorphableGraph,
     path: Path2D,
     joint_map: JointMap,
-    settings: WalkSettings,
-    tree_samples: int = 10000,
-    seed: int = 0,
+    settings: SynthesisSettings,
+    seed: int,
     progress: Callable[[int, int], None] | None = None,
 ) -> GeneratedPathWalk:
     """A walk following ``path`` (module docstring) with the walking primitives among
     ``primitives`` (``settings``' start, stepping and end primitives) on the transitions of
-    ``graph``. The trees hold ``tree_samples`` GMM samples each, drawn from
+    ``graph``. The trees hold ``settings.tree_samples`` GMM samples each, drawn from
     ``numpy.random.default_rng([seed, 410])`` (as Fig. 4.10). ``progress(done, total)`` is
     called after each tree and after the walk."""
     names = [n for n in (settings.start, *settings.cyclic, settings.end) if n in primitives]
@@ -121,7 +118,7 @@ def walk_along_path(
     total = len(names) + 1
     trees = {}
     for k, n in enumerate(names):  # one tree per primitive
-        trees[n] = SpacePartitioningTree(primitives[n].sample(tree_samples, rng), "kmeans", seed=seed)
+        trees[n] = SpacePartitioningTree(primitives[n].sample(settings.tree_samples, rng), "kmeans", seed=seed)
         if progress is not None:
             progress(k + 1, total)
     walk_graph = MorphableGraph(graph.edges, graph.start_nodes, graph.end_nodes, {n: primitives[n] for n in names})

@@ -13,7 +13,7 @@ step's constraint is the floor position of the hips at the step's last frame, a 
 step length further along the path, and the heading along the path there. The next
 primitive: the thesis "enumerate[s] all optional transitions from the current motion
 primitive looking at a fixed number of steps T ahead" with the mean motions and Eq. 4.2;
-:class:`WalkSettings` ``look_ahead`` is T (1: the best single transition). With T > 1 the
+:class:`~.settings.SynthesisSettings` ``look_ahead`` is T (1: the best single transition). With T > 1 the
 step's latent vector is also optimised together with the T - 1 planned steps after it
 (tree seeds, :func:`~.synthesis.optimize_chain`) and only the step itself is kept (a
 receding horizon: the walk starts turning before a corner it cannot take in one step).
@@ -41,6 +41,7 @@ from ...core.motion import Motion
 from ...core.quaternions import qmul, qrot, quat_about_axis
 from .constraints import Constraint, Objective
 from .primitive import MotionPrimitive
+from .settings import SynthesisSettings
 from .synthesis import MapResult, StepChain, StepGoal, optimize_chain, optimize_map, step_end_local
 from .trees import SpacePartitioningTree
 
@@ -118,14 +119,14 @@ def synthesize_step(
     primitive: MotionPrimitive,
     tree: SpacePartitioningTree,
     constraints: Sequence[Constraint],
-    beam: int = 2,
-    likelihood_weight: float = 1.0,
-    method: str = "lm",
-    max_nfev: int = 200,
+    settings: SynthesisSettings,
 ) -> tuple[MapResult, float, int]:
-    """Tree search (Eq. 4.2) then LM on Eq. 4.9 from the best candidate (Sec. 4.5.3)."""
-    found = tree.search(Objective(primitive, constraints), beam)
-    fit = optimize_map(primitive, constraints, found.latent, likelihood_weight, method, max_nfev)
+    """Tree search (Eq. 4.2, ``settings.beam``) then LM on Eq. 4.9 from the best candidate
+    (Sec. 4.5.3; ``settings.likelihood_weight``, ``method``, ``max_nfev``)."""
+    found = tree.search(Objective(primitive, constraints), settings.beam)
+    fit = optimize_map(
+        primitive, constraints, found.latent, settings.likelihood_weight, settings.method, settings.max_nfev
+    )
     return fit, found.error, found.n_evals
 
 
@@ -203,37 +204,6 @@ def step_length(primitive: MotionPrimitive, hips: int) -> float:
     return float(np.linalg.norm((pos[0, 1, 0] - pos[0, 0, 0])[[0, 2]]))
 
 
-@dataclass
-class WalkSettings:
-    """Path following: start/end primitives, step constraints, search and LM settings,
-    the look-ahead T (``look_ahead``) and Algorithm 1 line 9 (``joint_steps``: 0, N or
-    "all"); ``joint_method`` ("lm", MINPACK's Levenberg-Marquardt as DFKI's ``leastsq``,
-    or "trf") and ``joint_max_nfev`` are the least-squares method and the residual
-    evaluations of those joint optimisations of several steps (:func:`~.synthesis.optimize_chain`)."""
-
-    start: str = "walk_start"
-    end: str = "walk_end"
-    cyclic: tuple[str, ...] = ("walk_leftStance", "walk_rightStance")
-    max_steps: int = 30
-    beam: int = 2
-    likelihood_weight: float = 1.0
-    method: str = "lm"
-    max_nfev: int = 100
-    look_ahead: int = 1
-    joint_steps: int | str = 0
-    joint_method: str = "lm"
-    joint_max_nfev: int = 100
-
-    def __post_init__(self) -> None:
-        if int(self.look_ahead) < 1:
-            raise ValueError(f"graph.synthesis.look_ahead must be >= 1; got {self.look_ahead}")
-        js = self.joint_steps
-        if not (js == "all" or (isinstance(js, (int, np.integer)) and not isinstance(js, bool) and js >= 0)):
-            raise ValueError(f"graph.synthesis.joint_steps: 'all' or an integer >= 0; got {js!r}")
-        if self.joint_method not in ("lm", "trf"):
-            raise ValueError(f"graph.synthesis.joint_method must be 'lm' or 'trf'; got {self.joint_method!r}")
-
-
 class _Walker:
     """State and helpers of one :func:`follow_path` run."""
 
@@ -243,7 +213,7 @@ class _Walker:
         trees: Mapping[str, SpacePartitioningTree],
         path: Path2D,
         joint_map: JointMap,
-        st: WalkSettings,
+        st: SynthesisSettings,
     ) -> None:
         self.graph, self.trees, self.path, self.st = graph, trees, path, st
         self.usable = [n for n in (st.start, *st.cyclic, st.end) if n in graph.primitives and n in trees]
@@ -312,11 +282,12 @@ def follow_path(
     trees: Mapping[str, SpacePartitioningTree],
     path: Path2D,
     joint_map: JointMap,
-    settings: WalkSettings | None = None,
+    settings: SynthesisSettings,
 ) -> list[StepResult]:
     """Graph-walk generation for a floor path (Algorithm 1, one "walk" action; module
-    docstring). Returns the steps in world coordinates."""
-    st = settings or WalkSettings()
+    docstring) with the step, look-ahead and line-9 ``settings``. Returns the steps in world
+    coordinates."""
+    st = settings
     w = _Walker(graph, trees, path, joint_map, st)
     pos = path.points[0].copy()
     heading = path.tangent(0.0)

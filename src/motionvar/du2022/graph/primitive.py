@@ -50,13 +50,18 @@ from ...io.model_file import load_model, model_base
 from ...prep import apply_warp, warp_to_median
 from ..fda import SFPCA, BSplineBasis, FunctionalMotions, frame_times
 from .kinematics import chain_fk
+from .settings import GraphSettings, ModelSettings
 
 FORMAT_VERSION = 1
 
 
+_MODEL = ModelSettings()  # the defaults of config graph.model
+
+
 @dataclass(frozen=True)
 class PrimitiveOptions:
-    """Settings of :meth:`MotionPrimitive.fit`.
+    """Settings of :meth:`MotionPrimitive.fit`, saved with the model; built from config
+    ``graph.model`` by :meth:`from_settings` (the defaults are :class:`~.settings.ModelSettings`').
 
     Attributes:
         n_basis: B-spline basis functions per function (Sec. 3.3.3).
@@ -69,20 +74,35 @@ class PrimitiveOptions:
             the latent dimensions (scikit-learn's is absolute; with few clips per component
             an absolute 1e-6 lets BIC pick near-singular components).
         sfpca_eval_frames: canonical frames at which SFPCA's objective runs FK (None: all).
-        dtw_window: optional Sakoe-Chiba band of the DTW (frames).
-        seed: random state of the GMM fits and of sampling defaults.
+        dtw_window: optional Sakoe-Chiba band of the DTW (frames; not a config key).
+        seed: random state of the GMM fits and of sampling defaults (config ``graph.seed``).
     """
 
-    n_basis: int = 10
-    n_components: int = 20
-    gmm_components: tuple[int, int] = (1, 10)
-    gmm_criterion: str = "bic"
-    sfpca_max_iter: int = 30
-    sfpca_weight_groups: str = "function"
-    reg_covar: float = 1e-3
-    sfpca_eval_frames: int | None = None
+    n_basis: int = _MODEL.n_basis
+    n_components: int = _MODEL.n_components
+    gmm_components: tuple[int, int] = (_MODEL.gmm_min, _MODEL.gmm_max)
+    gmm_criterion: str = _MODEL.gmm_criterion
+    sfpca_max_iter: int = _MODEL.sfpca_max_iter
+    sfpca_weight_groups: str = _MODEL.sfpca_weight_groups
+    reg_covar: float = _MODEL.reg_covar
+    sfpca_eval_frames: int | None = _MODEL.sfpca_eval_frames
     dtw_window: int | None = None
-    seed: int = 0
+    seed: int = GraphSettings.seed
+
+    @classmethod
+    def from_settings(cls, model: ModelSettings, seed: int) -> PrimitiveOptions:
+        """The options of config ``graph.model`` with the section's ``seed``."""
+        return cls(
+            n_basis=model.n_basis,
+            n_components=model.n_components,
+            gmm_components=(model.gmm_min, model.gmm_max),
+            gmm_criterion=model.gmm_criterion,
+            sfpca_max_iter=model.sfpca_max_iter,
+            sfpca_weight_groups=model.sfpca_weight_groups,
+            reg_covar=model.reg_covar,
+            sfpca_eval_frames=model.sfpca_eval_frames,
+            seed=seed,
+        )
 
     def validate(self) -> None:
         lo, hi = self.gmm_components

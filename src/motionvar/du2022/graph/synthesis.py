@@ -80,12 +80,14 @@ def optimize_map(
     primitive: MotionPrimitive,
     constraints: Sequence[Constraint],
     s0: np.ndarray,
-    likelihood_weight: float = 1.0,
-    method: str = "lm",
-    max_nfev: int = 200,
+    likelihood_weight: float,
+    method: str,
+    max_nfev: int,
     fd_step: float = 1e-4,
 ) -> MapResult:
-    """Minimise Eq. 4.9 from ``s0`` with Levenberg-Marquardt ("lm") or scipy's "trf"."""
+    """Minimise Eq. 4.9 from ``s0`` with Levenberg-Marquardt ("lm") or scipy's "trf", at most
+    ``max_nfev`` residual evaluations (config ``graph.synthesis``: ``likelihood_weight``,
+    ``method``, ``max_nfev``)."""
     if method not in ("lm", "trf"):
         raise ValueError(f"optimize_map: method must be 'lm' or 'trf'; got {method!r}")
     objective = Objective(primitive, constraints)
@@ -268,9 +270,9 @@ class ChainResult:
 def optimize_chain(
     chain: StepChain,
     latents: Sequence[np.ndarray],
-    likelihood_weight: float = 1.0,
-    method: str = "lm",
-    max_nfev: int = 100,
+    likelihood_weight: float,
+    method: str,
+    max_nfev: int,
     fd_step: float = 1e-4,
     anchor_weight: float = ANCHOR_WEIGHT,
 ) -> ChainResult:

@@ -3,22 +3,23 @@ a VAE per primitive and a CVAE per style with a Gram-matrix style loss.
 
 Typical use (one primitive, clips resampled to the canonical 60 frames)::
 
-    from motionvar.du2022.style import (FeatureScaler, FeatureSpace, TrainConfig, motions_features,
-                                 sliding_windows, style_joints, train_autoencoder, train_vae)
+    from motionvar.du2022.style import (FeatureScaler, FeatureSpace, StyleSettings, motions_features,
+                                 sliding_windows, style_joints, train_autoencoder, train_cvae, train_vae)
 
+    s = StyleSettings()                                        # the thesis' values (Sec. 5.4.1)
     layout = style_joints(skeleton, joint_map)                 # 21 joints (Sec. 5.2)
-    windows = sliding_windows([motion_features(m, layout) for m in all_clips])  # 60 / 30
+    windows = sliding_windows([motion_features(m, layout) for m in all_clips], 60, 30)
     scaler = FeatureScaler.fit(windows, layout.n_joints)
-    ae, hist = train_autoencoder(scaler.transform(windows), TrainConfig(20, 1e-3, 64))
+    ae, hist = train_autoencoder(scaler.transform(windows), s.autoencoder, s.seed)
     space = FeatureSpace(ae, scaler)                           # Eq. 5.1-5.2
     maps = space.encode(motions_features(neutral_clips, layout))
-    vae, hist = train_vae(maps, TrainConfig(200, 1e-3, 32))    # Eq. 5.6-5.8
-    cvae, hist = train_vae(maps, cfg, style_maps=space.encode(example[None])[0],
-                           alpha=200, init=vae)                # Eq. 5.9-5.11
+    vae, hist = train_vae(maps, s.vae, s.seed)                 # Eq. 5.6-5.8
+    cvae, hist = train_cvae(maps, space.encode(example[None])[0], s.vae, s.cvae, s.seed,
+                            init=vae)                          # Eq. 5.9-5.11
     samples = sample_features(cvae, maps.shape[1:], space, n=1000, seed=0)
     diversity(samples, layout.n_joints)                        # Eq. 5.13-5.15
 
-Modules: :mod:`.features` (Sec. 5.2 representation, windows, scaling),
+Modules: :mod:`.settings` (config section ``style``), :mod:`.features` (Sec. 5.2 representation, windows, scaling),
 :mod:`.networks` (Eq. 5.1-5.2, Fig. 5.3), :mod:`.losses` (Eq. 5.6-5.12),
 :mod:`.training` (training runs; from a dataset to the saved models),
 :mod:`.model` (feature space, save/load, sampling), :mod:`.data` (clips of a primitive,
@@ -68,19 +69,24 @@ _EXPORTS = {
         "fit_primitive_vae",
         "fit_style_cvae",
         "train_autoencoder",
+        "train_cvae",
         "train_vae",
     ],
+    ".settings": ["AutoencoderSettings", "CvaeSettings", "StyleSettings", "VaeSettings"],
 }
 __getattr__, __dir__ = lazy_exports(__name__, _EXPORTS)
 
 __all__ = [
+    "AutoencoderSettings",
     "ConvAutoencoder",
+    "CvaeSettings",
     "FeatureLayout",
     "active_units",
     "FeatureScaler",
     "FeatureSpace",
     "MotionVAE",
     "SavedVAE",
+    "StyleSettings",
     "TrainConfig",
     "content_loss",
     "diagonal_minima",
@@ -114,7 +120,9 @@ __all__ = [
     "style_joints",
     "style_loss",
     "train_autoencoder",
+    "train_cvae",
     "train_vae",
+    "VaeSettings",
     "vae_loss",
     "velocity_sd",
 ]

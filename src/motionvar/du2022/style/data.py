@@ -39,7 +39,7 @@ def dataset_layout(dataset: MotionDataset, joint_map: JointMap) -> FeatureLayout
     return style_joints(dataset.motion(0).skeleton, joint_map)
 
 
-def window_counts(dataset: MotionDataset, size: int = 60, stride: int = 30) -> np.ndarray:
+def window_counts(dataset: MotionDataset, size: int, stride: int) -> np.ndarray:
     """(clips,) number of windows of ``size`` frames every ``stride`` frames in each clip (0
     for a clip shorter than a window), without loading the clips."""
     if size < 1 or stride < 1:
@@ -51,8 +51,8 @@ def window_counts(dataset: MotionDataset, size: int = 60, stride: int = 30) -> n
 def training_windows(
     dataset: MotionDataset,
     layout: FeatureLayout,
-    size: int = 60,
-    stride: int = 30,
+    size: int,
+    stride: int,
     subset: np.ndarray | None = None,
 ) -> np.ndarray:
     """(W, size, C) windows of all clips' features (clips shorter than a window skipped),

@@ -222,7 +222,7 @@ def split_features(features: np.ndarray, n_joints: int) -> tuple[np.ndarray, np.
     return local, features[..., 3 * J : 3 * J + 2], features[..., 3 * J + 2]
 
 
-def sliding_windows(clips: Sequence[np.ndarray], size: int = 60, stride: int = 30) -> np.ndarray:
+def sliding_windows(clips: Sequence[np.ndarray], size: int, stride: int) -> np.ndarray:
     """(W, size, C) overlapping windows of per-frame features (Sec. 5.4.1: windows of 60
     frames overlapping by half). Clips shorter than ``size`` give no window."""
     if size < 1 or stride < 1:

@@ -217,7 +217,7 @@ def draw_fig5_4(result: EvaluationResult) -> Figure:
     return samples_figure(f["rows"], f["parents"], f["names"])
 
 
-def animate_fig5_4(result: EvaluationResult, group: str, panel_px: int = 200, loops: int = 3) -> np.ndarray:
+def animate_fig5_4(result: EvaluationResult, group: str, panel_px: int, loops: int = 3) -> np.ndarray:
     """RGB frames (N, H, W, 3) of one sample per model of ``group`` ("neutral" or
     "styles") side by side, each clip played ``loops`` times in a row (moving on from
     where it ended, so that a half-second step can be watched)."""

@@ -6,7 +6,7 @@ joint positions (:func:`.features.features_to_positions`) and put on the dataset
 joint rotations (:func:`positions_to_motion`).
 
 The models generate positions of the 21 feature joints only; a BVH file needs rotations
-of every joint of the rig. :class:`StyleRig` (saved by rule ``style_rig`` beside the
+of every joint of the rig. :class:`StyleRig` (saved by rule ``du2022_style_rig`` beside the
 models) holds what that takes and the models do not: the rig's mean skeleton, its feature
 layout and the real-time frame rate of each primitive's canonical clips (the primitive's
 mean duration over its 60 canonical frames, as Fig. 5.4's animation).
@@ -57,7 +57,7 @@ class StyleRig:
     joint_map: JointMap
 
 
-def fit_rig(dataset: MotionDataset, joint_map: JointMap, n_frames: int = 60) -> StyleRig:
+def fit_rig(dataset: MotionDataset, joint_map: JointMap, n_frames: int) -> StyleRig:
     """The :class:`StyleRig` of a (preprocessed) dataset: bone offsets and end sites
     averaged over its clips, channel layout as its clips', the feature layout of its rig
     and a frame rate per primitive of its metadata."""
@@ -134,7 +134,7 @@ def load_rig(path: str | Path) -> StyleRig:
         jm = JointMap.from_dict(info["joint_map"], origin=f"{base}.json")
         return StyleRig(sk, lay, {str(k): float(v) for k, v in info["fps"].items()}, int(info["n_frames"]), jm)
     except (KeyError, TypeError, ValueError) as exc:
-        raise ValueError(f"{base}.npz/.json: not a complete {RIG_KIND} ({exc!r}); rerun rule style_rig") from exc
+        raise ValueError(f"{base}.npz/.json: not a complete {RIG_KIND} ({exc!r}); rerun rule du2022_style_rig") from exc
 
 
 def _swing(a: np.ndarray, b: np.ndarray) -> np.ndarray:

@@ -2,17 +2,17 @@
 
 - :func:`train_autoencoder`: the convolutional autoencoder on sliding windows of all
   motion, mean squared reconstruction error.
-- :func:`train_vae`: a primitive's VAE on its clips' feature maps (loss Eq. 5.6), or,
-  given a style example, its CVAE (loss Eq. 5.11 = Eq. 5.6 + the style term Eq. 5.10).
-  A CVAE may start from the neutral VAE's weights (``init``): the thesis' stylistic
-  primitives are "deformed from" the neutral ones.
+- :func:`train_vae`: a primitive's VAE on its clips' feature maps (loss Eq. 5.6);
+  :func:`train_cvae`: given a style example, its CVAE (loss Eq. 5.11 = Eq. 5.6 + the style
+  term Eq. 5.10). A CVAE may start from the neutral VAE's weights (``init``): the thesis'
+  stylistic primitives are "deformed from" the neutral ones.
 - :class:`SlicedAdam`: the optimiser of both (unless ``sgd``): torch's Adam update run slice
   by slice over each parameter, the same weights bit for bit in less time.
 
 The thesis trains with "stochastic gradient descent" at learning rates 1e-4 (autoencoder,
 300 epochs) and 1e-5 (VAE/CVAE, 1000 epochs) and names no optimiser or batch size; we use
 the optimiser (Adam by default, or plain minibatch SGD), epochs, learning rate and batch
-size given by the caller (the config). A CVAE's regime decides whether its posterior
+size of the config (:class:`~.settings.StyleSettings`; its defaults are the thesis'). A CVAE's regime decides whether its posterior
 collapses: its Frobenius style term (Eq. 5.10) starts one (frame-averaged Gram) to three
 (summed Gram, Eq. 5.9) orders of magnitude above the content term and, left to run, drives
 the decoder to one output that matches the style example whatever z is. Measured at full
@@ -53,6 +53,7 @@ from .features import FeatureLayout, FeatureScaler
 from .losses import GRAM_REDUCTIONS, STYLE_NORMS, content_loss, kl_loss, style_loss
 from .model import FeatureSpace, active_units
 from .networks import ConvAutoencoder, MotionVAE
+from .settings import AutoencoderSettings, CvaeSettings, StyleSettings, VaeSettings
 
 log = logging.getLogger(__name__)
 
@@ -64,24 +65,33 @@ AUTOENCODER_THREADS = 2
 
 OPTIMIZERS = ("adam", "sgd")
 AUTOENCODER_KEEP = ("best", "last")  # which epoch's weights train_autoencoder returns
+AUTOENCODER_OPTIMIZER = "adam"  # the autoencoder's optimiser (the VAE's and CVAE's are configured)
+VAE_HIDDEN = (512, 256, 128)  # the VAE's hidden layers (Fig. 5.3)
 
 
 @dataclass(frozen=True)
 class TrainConfig:
     """Epochs, learning rate, minibatch size, the seed and the optimiser (``"adam"`` or
-    ``"sgd"``, plain minibatch gradient descent as the thesis names) of one training run."""
+    ``"sgd"``, plain minibatch gradient descent as the thesis names) of one training run
+    (from a subsection of :class:`~.settings.StyleSettings`: :meth:`of`)."""
 
     epochs: int
     lr: float
     batch_size: int
-    seed: int = 0
-    optimizer: str = "adam"
+    seed: int
+    optimizer: str
 
     def __post_init__(self) -> None:
         if self.epochs < 1 or self.batch_size < 1 or not self.lr > 0:
             raise ValueError(f"TrainConfig: epochs and batch_size must be >= 1 and lr > 0; got {self}")
         if self.optimizer not in OPTIMIZERS:
             raise ValueError(f"TrainConfig: optimizer must be one of {OPTIMIZERS}; got {self.optimizer!r}")
+
+    @classmethod
+    def of(cls, settings: AutoencoderSettings | VaeSettings | CvaeSettings, seed: int) -> TrainConfig:
+        """The run of a config subsection (the autoencoder's optimiser: AUTOENCODER_OPTIMIZER)."""
+        optimizer = getattr(settings, "optimizer", AUTOENCODER_OPTIMIZER)
+        return cls(settings.epochs, settings.lr, settings.batch_size, seed, optimizer)
 
     def describe(self) -> str:
         """E.g. "adam lr 0.0001, 10 epochs, batch 32"."""
@@ -176,14 +186,11 @@ def _batches(n: int, batch_size: int, gen: torch.Generator) -> list[torch.Tensor
 
 
 def train_autoencoder(
-    windows: np.ndarray,
-    cfg: TrainConfig,
-    decoder_order: str = "conv_depool",
-    n_kernels: int = 256,
-    kernel_width: int = 15,
-    keep: str = "last",
+    windows: np.ndarray, settings: AutoencoderSettings, seed: int
 ) -> tuple[ConvAutoencoder, pd.DataFrame]:
-    """Train Eq. 5.1-5.2 on scaled windows (W, T, C). ``keep``: "last" returns the weights
+    """Train Eq. 5.1-5.2 (``settings.kernels`` kernels of ``settings.kernel_width`` frames,
+    ``settings.decoder_order``) on scaled windows (W, T, C) for ``settings.epochs`` epochs of
+    Adam, the shuffles drawn with ``seed``. ``settings.keep``: "last" returns the weights
     of the last epoch (the thesis' final model), "best" those of the epoch whose
     end-of-epoch loss over all windows is lowest (a late spike of the loss does not end in
     the model; at full size this changed the VAEs downstream: config/schema.yaml). History columns:
@@ -193,12 +200,16 @@ def train_autoencoder(
     epoch's time), kept (the epoch returned), seconds."""
     if windows.ndim != 3 or len(windows) == 0:
         raise ValueError(f"train_autoencoder: windows must be a non-empty (W, T, C) array; got {windows.shape}")
+    keep = settings.keep
     if keep not in AUTOENCODER_KEEP:
         raise ValueError(f"train_autoencoder: keep must be one of {AUTOENCODER_KEEP}; got {keep!r}")
+    cfg = TrainConfig.of(settings, seed)
     torch.manual_seed(cfg.seed)
     gen = torch.Generator().manual_seed(cfg.seed)
     x = torch.as_tensor(windows, dtype=torch.float32).permute(0, 2, 1).contiguous()
-    model = ConvAutoencoder(x.shape[1], n_kernels=n_kernels, kernel_width=kernel_width, decoder_order=decoder_order)
+    model = ConvAutoencoder(
+        x.shape[1], n_kernels=settings.kernels, kernel_width=settings.kernel_width, decoder_order=settings.decoder_order
+    )
     opt = cfg.make_optimizer(model.parameters())
     rows, t0 = [], time.perf_counter()
     best_loss, best_state, kept = np.inf, None, cfg.epochs
@@ -227,25 +238,49 @@ def train_autoencoder(
 
 
 def train_vae(
+    maps: torch.Tensor | np.ndarray, settings: VaeSettings, seed: int, hidden: tuple[int, ...] = VAE_HIDDEN
+) -> tuple[MotionVAE, pd.DataFrame]:
+    """Train a primitive's VAE (``settings.latent`` latent dimensions, hidden layers
+    ``hidden``) on its clips' feature maps (N, K, T') with the loss of Eq. 5.6 (L =
+    ``settings.samples_per_input`` draws of z per input, Eq. 5.7), the run of ``settings``
+    seeded by ``seed``. History columns: epoch, loss, content, kl, style (0), seconds
+    (per-epoch means over the inputs) and active (latent dimensions in use on the inputs at
+    the end of the epoch, :func:`~.model.active_units`)."""
+    return _train_vae(maps, TrainConfig.of(settings, seed), settings.samples_per_input, settings.latent, hidden)
+
+
+def train_cvae(
+    maps: torch.Tensor | np.ndarray,
+    style_maps: torch.Tensor | np.ndarray,
+    vae: VaeSettings,
+    cvae: CvaeSettings,
+    seed: int,
+    init: MotionVAE | None,
+    hidden: tuple[int, ...] = VAE_HIDDEN,
+) -> tuple[MotionVAE, pd.DataFrame]:
+    """Train a primitive's CVAE on its clips' feature maps (N, K, T') and ``style_maps``
+    (K, T_s), the encoded style example: the loss of Eq. 5.11 with the style term of Eq.
+    5.10 (weight ``cvae.alpha``, norm ``cvae.style_norm``, Gram matrices of Eq. 5.9 summed
+    or averaged over frames by ``cvae.gram``, :func:`~.losses.style_loss`), the neutral
+    VAE's latent size and L (``vae``), the run of ``cvae`` seeded by ``seed``. ``init`` (a
+    trained VAE) gives the starting weights, or None. History columns: those of
+    :func:`train_vae`."""
+    cfg = TrainConfig.of(cvae, seed)
+    return _train_vae(maps, cfg, vae.samples_per_input, vae.latent, hidden, init, (style_maps, cvae))
+
+
+def _train_vae(
     maps: torch.Tensor | np.ndarray,
     cfg: TrainConfig,
-    n_samples: int = 10,
-    style_maps: torch.Tensor | np.ndarray | None = None,
-    alpha: float = 200.0,
-    style_norm: str = "frobenius",
+    n_samples: int,
+    latent: int,
+    hidden: tuple[int, ...],
     init: MotionVAE | None = None,
-    hidden: tuple[int, ...] = (512, 256, 128),
-    latent: int = 32,
-    gram_reduce: str = "sum",
+    style: tuple[torch.Tensor | np.ndarray, CvaeSettings] | None = None,
 ) -> tuple[MotionVAE, pd.DataFrame]:
-    """Train a primitive's VAE on its clips' feature maps (N, K, T') (Eq. 5.6, L =
-    ``n_samples`` draws of z per input, Eq. 5.7); with ``style_maps`` (K, T_s), the
-    encoded style example, a CVAE with the loss of Eq. 5.11, style weight ``alpha``, the
-    norm ``style_norm`` of Eq. 5.10 and the Gram matrices of Eq. 5.9 summed or averaged
-    over frames (``gram_reduce``, :func:`~.losses.style_loss`).
-    ``init`` copies a trained VAE's weights first. History columns: epoch, loss, content,
-    kl, style, seconds (per-epoch means over the inputs) and active (latent dimensions in
-    use on the inputs at the end of the epoch, :func:`~.model.active_units`)."""
+    """The training loop of :func:`train_vae` and, with ``style`` (the style example's maps
+    and the CVAE's settings), of :func:`train_cvae`."""
+    style_maps, style_term = style if style is not None else (None, None)
     maps = torch.as_tensor(maps, dtype=torch.float32)
     if maps.ndim != 3 or len(maps) == 0:
         raise ValueError(f"train_vae: maps must be a non-empty (N, K, T) array; got {tuple(maps.shape)}")
@@ -260,11 +295,12 @@ def train_vae(
         if init.hparams != model.hparams:
             raise ValueError(f"train_vae: init VAE has {init.hparams}, expected {model.hparams}")
         model.load_state_dict(init.state_dict())
-    if style_norm not in STYLE_NORMS:
-        raise ValueError(f"train_vae: style_norm must be one of {STYLE_NORMS}; got {style_norm!r}")
-    if gram_reduce not in GRAM_REDUCTIONS:
-        raise ValueError(f"train_vae: gram_reduce must be one of {GRAM_REDUCTIONS}; got {gram_reduce!r}")
-    if style_maps is not None:
+    if style_term is not None:
+        alpha, style_norm, gram_reduce = style_term.alpha, style_term.style_norm, style_term.gram
+        if style_norm not in STYLE_NORMS:
+            raise ValueError(f"train_cvae: style_norm must be one of {STYLE_NORMS}; got {style_norm!r}")
+        if gram_reduce not in GRAM_REDUCTIONS:
+            raise ValueError(f"train_cvae: gram must be one of {GRAM_REDUCTIONS}; got {gram_reduce!r}")
         style_maps = torch.as_tensor(style_maps, dtype=torch.float32)
         if style_maps.ndim != 2 or style_maps.shape[0] != K:
             raise ValueError(f"train_vae: style_maps must be ({K}, T_s); got {tuple(style_maps.shape)}")
@@ -311,27 +347,24 @@ def train_vae(
 def fit_feature_space(
     dataset: MotionDataset,
     layout: FeatureLayout,
-    cfg: TrainConfig,
-    window: int = 60,
-    stride: int = 30,
-    max_windows: int = 0,
-    decoder_order: str = "conv_depool",
-    n_kernels: int = 256,
-    kernel_width: int = 15,
-    keep: str = "last",
+    settings: StyleSettings,
     threads: int = AUTOENCODER_THREADS,
 ) -> tuple[FeatureSpace, pd.DataFrame]:
     """The conv autoencoder (Eq. 5.1-5.2) with its :class:`~.features.FeatureScaler`,
-    trained on the windows of ``window`` frames every ``stride`` frames of all clips
-    (Sec. 5.4.1); ``max_windows`` > 0 keeps a random subset of that many (drawn with
-    ``cfg.seed``); ``keep`` as :func:`train_autoencoder`. History columns: those of
-    :func:`train_autoencoder` and windows. Trained on ``threads`` torch and BLAS threads
-    (:data:`AUTOENCODER_THREADS`), whatever cores the caller has."""
+    trained (:func:`train_autoencoder`, ``settings.autoencoder``, seed ``settings.seed``) on
+    the windows of ``settings.canonical_frames`` frames every
+    ``settings.autoencoder.window_stride`` frames of all clips (Sec. 5.4.1);
+    ``settings.autoencoder.max_windows`` > 0 keeps a random subset of that many (drawn with
+    the seed). History columns: those of :func:`train_autoencoder` and windows. Trained on
+    ``threads`` torch and BLAS threads (:data:`AUTOENCODER_THREADS`), whatever cores the
+    caller has."""
     with fixed_threads(threads):
+        ae_settings, window, seed = settings.autoencoder, settings.canonical_frames, settings.seed
+        stride, max_windows = ae_settings.window_stride, ae_settings.max_windows
         n_all = int(window_counts(dataset, window, stride).sum())
         subset = None
         if 0 < max_windows < n_all:  # only the drawn windows' frames are computed
-            subset = np.sort(np.random.default_rng(cfg.seed).choice(n_all, max_windows, replace=False))
+            subset = np.sort(np.random.default_rng(seed).choice(n_all, max_windows, replace=False))
         windows = training_windows(dataset, layout, window, stride, subset)
         log.info(
             "%d windows of %d frames (%d in all) from %d clips; joints %s",
@@ -342,14 +375,7 @@ def fit_feature_space(
             ", ".join(layout.names),
         )
         scaler = FeatureScaler.fit(windows, layout.n_joints)
-        ae, history = train_autoencoder(
-            scaler.transform(windows),
-            cfg,
-            decoder_order=decoder_order,
-            n_kernels=n_kernels,
-            kernel_width=kernel_width,
-            keep=keep,
-        )
+        ae, history = train_autoencoder(scaler.transform(windows), ae_settings, seed)
         space = FeatureSpace(ae, scaler)
         history["windows"] = len(windows)
         kept = history.loc[history["kept"]].iloc[0]
@@ -370,19 +396,17 @@ def fit_primitive_vae(
     layout: FeatureLayout,
     space: FeatureSpace,
     primitive: str,
-    cfg: TrainConfig,
-    n_frames: int = 60,
-    n_samples: int = 10,
-    latent: int = 32,
-    hidden: tuple[int, ...] = (512, 256, 128),
+    settings: StyleSettings,
+    hidden: tuple[int, ...] = VAE_HIDDEN,
 ) -> tuple[MotionVAE, tuple[int, int], dict, pd.DataFrame]:
-    """The VAE of ``primitive`` (Fig. 5.3, Eq. 5.6) on the feature maps of its neutral
-    clips resampled to ``n_frames``: (VAE, feature-map shape (K, T'), info for
+    """The VAE of ``primitive`` (Fig. 5.3, Eq. 5.6; :func:`train_vae`, ``settings.vae``, seed
+    ``settings.seed``) on the feature maps of its neutral clips resampled to
+    ``settings.canonical_frames``: (VAE, feature-map shape (K, T'), info for
     :func:`~.model.save_vae`, history)."""
-    rows, feats = primitive_features(dataset, layout, primitive, "neutral", n_frames)
+    rows, feats = primitive_features(dataset, layout, primitive, "neutral", settings.canonical_frames)
     maps = space.encode(feats)
     log.info("%s: %d neutral clips, feature maps %s", primitive, len(rows), tuple(maps.shape))
-    vae, history = train_vae(maps, cfg, n_samples=n_samples, hidden=hidden, latent=latent)
+    vae, history = train_vae(maps, settings.vae, settings.seed, hidden)
     log.info(
         "trained in %.1f s; final loss %.4g (content %.4g, KL %.4g); %d of %d latent dimensions active",
         history["seconds"].iloc[-1],
@@ -390,14 +414,14 @@ def fit_primitive_vae(
         history["content"].iloc[-1],
         history["kl"].iloc[-1],
         history["active"].iloc[-1],
-        latent,
+        settings.vae.latent,
     )
     info = {
         "primitive": primitive,
         "style": "neutral",
         "n_clips": len(rows),
         "active_units": int(history["active"].iloc[-1]),
-        "regime": f"{cfg.describe()}, L = {n_samples}",
+        "regime": f"{TrainConfig.of(settings.vae, settings.seed).describe()}, L = {settings.vae.samples_per_input}",
     }
     return vae, tuple(maps.shape[1:]), info, history
 
@@ -409,39 +433,24 @@ def fit_style_cvae(
     neutral: MotionVAE,
     primitive: str,
     style: str,
-    cfg: TrainConfig,
-    n_frames: int = 60,
-    n_samples: int = 10,
-    alpha: float = 200.0,
-    style_norm: str = "frobenius",
-    init_from_neutral: bool = True,
-    latent: int = 32,
-    hidden: tuple[int, ...] = (512, 256, 128),
-    gram_reduce: str = "sum",
+    settings: StyleSettings,
+    hidden: tuple[int, ...] = VAE_HIDDEN,
 ) -> tuple[MotionVAE, tuple[int, int], dict, pd.DataFrame]:
     """The CVAE of ``primitive`` and ``style`` (Sec. 5.3.3, loss Eq. 5.11 with the Gram
-    style term Eq. 5.10 weighted ``alpha``, Gram matrices summed or averaged over frames by
-    ``gram_reduce``): content the neutral clips, style example the
-    straightest forward clip of the style (:func:`~.data.select_style_example`); starts
-    from the ``neutral`` VAE's weights when ``init_from_neutral``. Returns (CVAE,
-    feature-map shape, info with the example's clip id, history)."""
+    style term Eq. 5.10; :func:`train_cvae`, ``settings.cvae``): content the neutral clips
+    (on ``settings.canonical_frames`` frames), style example the straightest forward clip of
+    the style (:func:`~.data.select_style_example`); starts from the ``neutral`` VAE's
+    weights when ``settings.cvae.init_from_neutral``. Returns (CVAE, feature-map shape, info
+    with the example's clip id, history)."""
+    c, n_frames, latent = settings.cvae, settings.canonical_frames, settings.vae.latent
+    cfg = TrainConfig.of(c, settings.seed)
     rows, feats = primitive_features(dataset, layout, primitive, "neutral", n_frames)
     example_id = select_style_example(dataset.metadata, primitive, style)
     example = space.encode(example_features(dataset, layout, example_id, n_frames)[None])[0]
     maps = space.encode(feats)
     log.info("%s/%s: %d neutral clips, style example %s", primitive, style, len(rows), example_id)
-    cvae, history = train_vae(
-        maps,
-        cfg,
-        n_samples=n_samples,
-        style_maps=example,
-        alpha=alpha,
-        style_norm=style_norm,
-        init=neutral if init_from_neutral else None,
-        hidden=hidden,
-        latent=latent,
-        gram_reduce=gram_reduce,
-    )
+    init = neutral if c.init_from_neutral else None
+    cvae, history = train_cvae(maps, example, settings.vae, c, settings.seed, init, hidden)
     first = history.iloc[0]
     log.info(
         "epoch 1: content %.4g, KL %.4g, style %.4g; %d active latent dimensions",
@@ -470,7 +479,7 @@ def fit_style_cvae(
         "example": example_id,
         "n_clips": len(rows),
         "active_units": int(history["active"].iloc[-1]),
-        "regime": f"{cfg.describe()}; alpha {alpha:g}, {style_norm.replace('_', ' ')} norm, Gram {gram_reduce} "
-        f"over frames" + (", from the neutral VAE" if init_from_neutral else ""),
+        "regime": f"{cfg.describe()}; alpha {c.alpha:g}, {c.style_norm.replace('_', ' ')} norm, Gram {c.gram} "
+        f"over frames" + (", from the neutral VAE" if c.init_from_neutral else ""),
     }
     return cvae, tuple(maps.shape[1:]), info, history

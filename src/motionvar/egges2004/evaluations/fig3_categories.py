@@ -12,17 +12,18 @@ from ...claims import EvaluationResult
 from ...core.motion import Motion
 from ..categories import frame_labels, parse_postures, segment_agreement
 from ..pipeline import IdleModel
+from ..settings import Egges2004Settings
 
 
 def category_check(
-    model: IdleModel, train: dict[str, list[tuple[pd.Series, Motion]]], figure_subjects: int = 3
+    model: IdleModel, train: dict[str, list[tuple[pd.Series, Motion]]], settings: Egges2004Settings
 ) -> EvaluationResult:
     """Per subject: the categories found, resting segments, transitions, and (where the
     metadata has ``idle_postures``) the share of resting segments whose category is the
     true one and the adjusted Rand index. ``train``: the training clips (metadata row,
     Motion) per subject, as :func:`~motionvar.egges2004.pipeline.split_clips` gives them.
     No claim; the figure's data are ``graphs``, the category transition graphs (Fig. 3)
-    of the first ``figure_subjects`` subjects."""
+    of the first ``settings.figure_subjects`` subjects."""
     rows = []
     for subject, db in model.databases.items():
         found = []
@@ -50,5 +51,5 @@ def category_check(
                 "category_ari": ari,
             }
         )
-    graphs = {s: model.databases[s].graph for s in list(model.databases)[:figure_subjects]}
+    graphs = {s: model.databases[s].graph for s in list(model.databases)[: settings.figure_subjects]}
     return EvaluationResult(pd.DataFrame(rows), [], {"graphs": graphs})

@@ -17,12 +17,15 @@ from .rbf import RBFInterpolation
 
 
 class StyleClipInterpolation:
-    """Whole clips as a function of style, interpolated by ``method`` ('kriging' or 'rbf')."""
+    """Whole clips as a function of style, interpolated by ``method`` ('kriging' or 'rbf');
+    ``variogram_model`` and ``variogram_scale`` are Kriging's (:class:`..kriging.UniversalKriging`;
+    None for RBF)."""
 
     def __init__(
         self,
-        method: str = "kriging",
-        variogram_model: str = "linear",
+        method: str,
+        variogram_model: str | None,
+        variogram_scale: str | None,
         flight: bool = False,
         trend_rcond: float = 0.0,
     ):
@@ -30,6 +33,7 @@ class StyleClipInterpolation:
             raise ValueError(f"StyleClipInterpolation: method must be 'kriging' or 'rbf'; got {method!r}")
         self.method = method
         self.variogram_model = variogram_model
+        self.variogram_scale = variogram_scale
         self.flight = flight
         self.trend_rcond = trend_rcond  # cut-off of the hyperplane's pseudo-inverse (both methods)
 
@@ -38,7 +42,7 @@ class StyleClipInterpolation:
         self.n_keys_ = len(clips.reference_keys)
         self.reference_keys_ = clips.reference_keys
         interp = (
-            UniversalKriging(self.variogram_model, trend_rcond=self.trend_rcond)
+            UniversalKriging(self.variogram_model, variogram_scale=self.variogram_scale, trend_rcond=self.trend_rcond)
             if self.method == "kriging"
             else RBFInterpolation(linear_rcond=self.trend_rcond)
         )
@@ -51,12 +55,12 @@ class StyleClipInterpolation:
 
 
 def mk05_kriging(
-    variogram_model: str = "linear", flight: bool = False, trend_rcond: float = 0.0
+    variogram_model: str, variogram_scale: str, flight: bool = False, trend_rcond: float = 0.0
 ) -> StyleClipInterpolation:
     """Universal Kriging over the style parameters only (Mukai & Kuriyama 2005)."""
-    return StyleClipInterpolation("kriging", variogram_model, flight, trend_rcond)
+    return StyleClipInterpolation("kriging", variogram_model, variogram_scale, flight, trend_rcond)
 
 
 def rose98_rbf(flight: bool = False, trend_rcond: float = 0.0) -> StyleClipInterpolation:
     """RBF interpolation with a linear term (Rose et al. 1998)."""
-    return StyleClipInterpolation("rbf", flight=flight, trend_rcond=trend_rcond)
+    return StyleClipInterpolation("rbf", None, None, flight, trend_rcond)

@@ -1,5 +1,6 @@
 """The evaluations of Ma et al. 2010, one module per figure or section; each function takes
-the loaded walking cycles (or dataset) and fitted models and returns a
+the loaded walking cycles (or dataset), the fitted model where it needs one, and the whole
+:class:`motionvar.ma2010.settings.Ma2010Settings`, and returns a
 :class:`motionvar.claims.EvaluationResult` (table, claims, the numbers its figure draws;
 figures: :mod:`motionvar.ma2010.figures`).
 
@@ -10,4 +11,5 @@ figures: :mod:`motionvar.ma2010.figures`).
 - :mod:`.fig8` — variation at a fixed style (Fig. 8a, Sec. 7.3).
 - :mod:`.sec7_4` — comparison with related methods (Sec. 7.4).
 - :mod:`.sec8` — synthesis time per second of motion (Sec. 8).
+- :mod:`.variogram` — the Kriging variograms (Sec. 6.1-6.2; a diagnostic, no claim).
 """

@@ -15,6 +15,7 @@ from ...core.kinematics import fk
 from ..correspondence import retime
 from ..examples import normalized_strides
 from ..representation import ClipSet
+from ..settings import LOO_UNITS
 from ..svi import ClipPrediction
 from ..synthesis import RootSolver
 
@@ -86,9 +87,6 @@ def nearest_clips(clips: ClipSet, style: np.ndarray, n: int, distinct_subjects: 
     return np.array(picked)
 
 
-LOO_UNITS = ("walk", "cycle")  # what a leave-one-out fold holds out (config ma2010.loo_unit)
-
-
 def walk_positions(source_clips: Sequence[str]) -> tuple[np.ndarray, np.ndarray]:
     """Each cycle's place in its walk: (N,) position (0 = the walk's first cycle, in the
     order the cycles are listed, which is their order in the walk) and (N,) ``closing``,
@@ -101,17 +99,18 @@ def walk_positions(source_clips: Sequence[str]) -> tuple[np.ndarray, np.ndarray]
 
 
 def loo_folds(
-    source_clips: Sequence[str] | None, held_out: Sequence[int], unit: str = "walk", n_clips: int | None = None
+    source_clips: Sequence[str] | None, held_out: Sequence[int], unit: str, n_clips: int | None = None
 ) -> list[tuple[np.ndarray, np.ndarray]]:
     """Leave-one-out folds: a list of (training cycle indices, held-out cycle indices).
 
-    ``unit`` "walk": a fold leaves out every cycle of one walk (``source_clips`` names each
-    cycle's walk) and predicts the cycles of ``held_out`` among them, so no model is
-    trained on a sibling cycle of the cycle it predicts (the paper predicts a new clip
-    from the others, Sec. 7.1; cycles cut from one capture are near-copies of each other).
-    "cycle": one cycle per fold, its sibling cycles stay in training (the literal "single
-    example motion clip as the test data", with a clip = a cycle). ``n_clips`` (default
-    ``len(source_clips)``) is the number of cycles."""
+    ``unit`` (config ma2010.loo_unit, one of :data:`..settings.LOO_UNITS`) "walk": a fold
+    leaves out every cycle of one walk (``source_clips`` names each cycle's walk) and
+    predicts the cycles of ``held_out`` among them, so no model is trained on a sibling
+    cycle of the cycle it predicts (the paper predicts a new clip from the others, Sec. 7.1;
+    cycles cut from one capture are near-copies of each other). "cycle": one cycle per fold,
+    its sibling cycles stay in training (the literal "single example motion clip as the test
+    data", with a clip = a cycle). ``n_clips`` (default ``len(source_clips)``) is the number
+    of cycles."""
     if unit not in LOO_UNITS:
         raise ValueError(f"loo_folds: unit must be one of {list(LOO_UNITS)}; got {unit!r}")
     if source_clips is None:

@@ -5,7 +5,7 @@ that the key frames cut every cycle at the same gait phase."""
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from dataclasses import dataclass, field
 
 import numpy as np
 import pandas as pd
@@ -16,6 +16,7 @@ from ...core.motion import Motion
 from ...prep.contacts import detect_foot_contacts
 from ...prep.intervals import parse_intervals
 from ..examples import extract_cycles, rows_matching
+from ..settings import Ma2010Settings
 from .common import PAPER, PROTOCOL
 
 GERUNDS = {"walk": "walking", "run": "running"}  # claim statements: "the key frames of running"
@@ -53,111 +54,145 @@ def foot_strikes(row: pd.Series, motion: Motion, joint_map: JointMap) -> np.ndar
     return all_starts[all_starts > 0]
 
 
-def fig3_keyframes(
-    dataset,
-    joint_map: JointMap,
-    walk_styles: str | Sequence[str] = (),
-    walk_variants: str | Sequence[str] = (),
-    min_prominence: float = 0.1,
-    min_separation_s: float = 0.1,
-    max_clips: int = 0,
-    phase_sd_bound: float = 0.05,
-    what: str = "metadata",
-) -> EvaluationResult:
-    """Fig. 3 on a dataset (``motionvar.io.MotionDataset``): the key frames of the first
-    walk (of the given styles and variants) and the first run as the table, and per
-    behaviour a claim on the circular SD of the maxima's phase within the step over its
-    first ``max_clips`` clips (0: all), reproduced at most ``phase_sd_bound``. ``what``
-    names the metadata in errors. A behaviour whose clips hold no maximum between two foot
-    strikes gets its claim with verdict ``not applicable`` and the reason. Figure: ``shown``
-    (behaviour -> clip id, motion, its :class:`CycleExtraction`, foot strikes) and
-    ``strike_source`` (behaviour -> "ground truth" or "detected": the shown clip's strikes)."""
-    meta = dataset.metadata
-    walks = rows_matching(meta, behaviour="walk", style=walk_styles, variant=walk_variants, what=what)
-    runs = np.flatnonzero(meta["behaviour"].astype(str).to_numpy() == "run")
-    limit = max_clips or None
-    rows, counts, shown, strike_source, shown_source, missing = [], {}, {}, {}, {}, {}
-    for behaviour, idx in (("walk", walks), ("run", runs)):
-        phases, offsets = [], []
-        n_maxima = n_struck = 0
-        truth = [has_true_contacts(meta.iloc[int(i)]) for i in idx[:limit]]
-        if len(truth):
-            strike_source[behaviour] = "ground truth" if all(truth) else "detected" if not any(truth) else "mixed"
-        for k, i in enumerate(idx[:limit]):  # loop over clips
-            m = dataset.motion(int(i))
-            ex = extract_cycles(m, joint_map, min_prominence, min_separation_s)
-            strikes = foot_strikes(meta.iloc[int(i)], m, joint_map)
-            maxima = ex.frames[ex.kinds == 1]
-            n_maxima, n_struck = n_maxima + len(maxima), n_struck + int(len(strikes) >= 2)
-            if len(strikes) and len(maxima):
-                diff = maxima[:, None] - strikes[None, :]
-                offsets.extend((diff[np.arange(len(maxima)), np.abs(diff).argmin(axis=1)] / m.fps).tolist())
-                phases.extend(step_phases(maxima, strikes).tolist())
-            if k == 0:
-                shown[behaviour] = (meta["clip_id"].iloc[int(i)], m, ex, strikes)
-                shown_source[behaviour] = "ground truth" if truth[0] else "detected"
-                for f, kind in zip(ex.frames, ex.kinds):
-                    near = np.abs(strikes - f).min() / m.fps if len(strikes) else np.nan
-                    rows.append(
-                        {
-                            "clip_id": meta["clip_id"].iloc[int(i)],
-                            "behaviour": behaviour,
-                            "frame": int(f),
-                            "time_s": f / m.fps,
-                            "extremum": "max" if kind == 1 else "min",
-                            "S_M": float(ex.signal.signal[f]),
-                            "to_foot_strike_s": near,
-                            "D_l": ex.signal.d_lower,
-                            "D_u": ex.signal.d_upper,
-                            "part": ex.signal.part,
-                        }
-                    )
-        if phases:
-            counts[behaviour] = (circular_sd(phases), len(phases), float(np.median(offsets)))
-        elif len(idx):
-            n = len(idx[:limit])
-            missing[behaviour] = (
-                f"none of the {n} {behaviour} clips has a maximum of S_M(t) (legs farthest apart) between two foot "
-                f"strikes: {n_struck} of them have two or more {strike_source[behaviour]} foot strikes, {n_maxima} "
-                "maxima in all; the claim measures where in the step the maxima fall, so it needs clips holding at "
-                "least one whole step, from a foot strike to the next"
-            )
+@dataclass
+class BehaviourScan:
+    """What :func:`scan_behaviour` finds over the clips of one behaviour: the phase of every
+    maximum within its step and its offset from the nearest foot strike (s), the counts of
+    maxima and of clips with two or more strikes, where the strikes came from (all clips;
+    the shown first clip), and the first clip's key frames as table rows with what Fig. 3
+    shows of it."""
 
-    claims = []
-    for behaviour in ("walk", "run"):
-        common = dict(
-            claim_id=f"{PAPER}.fig3.{behaviour}_keyframes_at_one_gait_phase",
-            paper=PAPER,
-            source="Fig. 3, Sec. 4.1-4.2",
-            statement=f"The key frames (extrema of S_M(t)) of {GERUNDS.get(behaviour, behaviour)} fall at the same gait phase in every "
-            "step, so they can segment and time-warp the motion.",
-            published="each local extremum of S_M(t) is a key frame, used to cut and time-warp clips (no number given)",
+    phases: list = field(default_factory=list)
+    offsets: list = field(default_factory=list)
+    n_maxima: int = 0
+    n_struck: int = 0
+    strike_source: str | None = None
+    shown_source: str | None = None
+    rows: list = field(default_factory=list)
+    shown: tuple | None = None
+
+
+def keyframe_rows(clip_id: str, behaviour: str, motion: Motion, ex, strikes: np.ndarray) -> list[dict]:
+    """One table row per key frame of the shown clip: frame, time, kind, S_M, time to the
+    nearest foot strike and the signal's D_l, D_u and part (Eq. 3-4)."""
+    rows = []
+    for f, kind in zip(ex.frames, ex.kinds):
+        near = np.abs(strikes - f).min() / motion.fps if len(strikes) else np.nan
+        rows.append(
+            {
+                "clip_id": clip_id,
+                "behaviour": behaviour,
+                "frame": int(f),
+                "time_s": f / motion.fps,
+                "extremum": "max" if kind == 1 else "min",
+                "S_M": float(ex.signal.signal[f]),
+                "to_foot_strike_s": near,
+                "D_l": ex.signal.d_lower,
+                "D_u": ex.signal.d_upper,
+                "part": ex.signal.part,
+            }
         )
-        if behaviour in missing:
-            claims.append(Claim(**common, measured="-", verdict="not applicable", note=missing[behaviour]))
-            continue
-        if behaviour not in counts:
-            continue
-        sd, n, offset = counts[behaviour]
-        source = {
-            "ground truth": "generator ground truth",
-            "detected": "detected from foot contacts, motionvar.prep",
-            "mixed": "ground truth where the metadata has it, else detected",
-        }[strike_source[behaviour]]
-        claims.append(
-            Claim(
-                **common,
-                measured=f"circular SD of the maxima's phase within the step: {sd:.3f} of a step over {n} maxima; median "
-                f"offset from the nearest foot strike {offset * 1000:+.0f} ms",
-                verdict=verdict_threshold(sd, phase_sd_bound, "<=", tolerance=1.0),
-                value=sd,
-                bound=phase_sd_bound,
-                unit="step",
-                direction="<=",
-                note=f"Reproduced when the SD is at most {phase_sd_bound:g} of a step (partial: twice that; our bound, the "
-                f"paper gives none). Steps run from one foot strike ({source}) to the next. {PROTOCOL}",
-            )
-        )
+    return rows
+
+
+def scan_behaviour(
+    dataset, idx: np.ndarray, behaviour: str, joint_map: JointMap, settings: Ma2010Settings
+) -> BehaviourScan:
+    """Key frames (``settings`` keyframe_prominence, keyframe_min_separation_s) and foot
+    strikes of the first ``settings.fig3_max_clips`` clips ``idx`` (0: all) of one behaviour."""
+    meta = dataset.metadata
+    clips = idx[: settings.fig3_max_clips or None]
+    scan = BehaviourScan()
+    truth = [has_true_contacts(meta.iloc[int(i)]) for i in clips]
+    if len(truth):
+        scan.strike_source = "ground truth" if all(truth) else "detected" if not any(truth) else "mixed"
+    for k, i in enumerate(clips):  # loop over clips
+        m = dataset.motion(int(i))
+        ex = extract_cycles(m, joint_map, settings.keyframe_prominence, settings.keyframe_min_separation_s)
+        strikes = foot_strikes(meta.iloc[int(i)], m, joint_map)
+        maxima = ex.frames[ex.kinds == 1]
+        scan.n_maxima, scan.n_struck = scan.n_maxima + len(maxima), scan.n_struck + int(len(strikes) >= 2)
+        if len(strikes) and len(maxima):
+            diff = maxima[:, None] - strikes[None, :]
+            scan.offsets.extend((diff[np.arange(len(maxima)), np.abs(diff).argmin(axis=1)] / m.fps).tolist())
+            scan.phases.extend(step_phases(maxima, strikes).tolist())
+        if k == 0:
+            scan.shown = (meta["clip_id"].iloc[int(i)], m, ex, strikes)
+            scan.shown_source = "ground truth" if truth[0] else "detected"
+            scan.rows = keyframe_rows(meta["clip_id"].iloc[int(i)], behaviour, m, ex, strikes)
+    return scan
+
+
+def no_maximum_reason(behaviour: str, n: int, scan: BehaviourScan) -> str:
+    """Why the claim of a behaviour whose ``n`` clips hold no maximum between two foot
+    strikes is not applicable."""
+    return (
+        f"none of the {n} {behaviour} clips has a maximum of S_M(t) (legs farthest apart) between two foot "
+        f"strikes: {scan.n_struck} of them have two or more {scan.strike_source} foot strikes, {scan.n_maxima} "
+        "maxima in all; the claim measures where in the step the maxima fall, so it needs clips holding at "
+        "least one whole step, from a foot strike to the next"
+    )
+
+
+def phase_claim(behaviour: str, scan: BehaviourScan, phase_sd_bound: float) -> Claim:
+    """The claim of one behaviour: the circular SD of its maxima's phase within the step at
+    most ``phase_sd_bound`` (reproduced; partial: twice that)."""
+    sd, n, offset = circular_sd(scan.phases), len(scan.phases), float(np.median(scan.offsets))
+    source = {
+        "ground truth": "generator ground truth",
+        "detected": "detected from foot contacts, motionvar.prep",
+        "mixed": "ground truth where the metadata has it, else detected",
+    }[scan.strike_source]
+    return Claim(
+        **claim_head(behaviour),
+        measured=f"circular SD of the maxima's phase within the step: {sd:.3f} of a step over {n} maxima; median "
+        f"offset from the nearest foot strike {offset * 1000:+.0f} ms",
+        verdict=verdict_threshold(sd, phase_sd_bound, "<=", tolerance=1.0),
+        value=sd,
+        bound=phase_sd_bound,
+        unit="step",
+        direction="<=",
+        note=f"Reproduced when the SD is at most {phase_sd_bound:g} of a step (partial: twice that; our bound, the "
+        f"paper gives none). Steps run from one foot strike ({source}) to the next. {PROTOCOL}",
+    )
+
+
+def claim_head(behaviour: str) -> dict:
+    """Id, paper, source, statement and published value of a behaviour's claim."""
+    return dict(
+        claim_id=f"{PAPER}.fig3.{behaviour}_keyframes_at_one_gait_phase",
+        paper=PAPER,
+        source="Fig. 3, Sec. 4.1-4.2",
+        statement=f"The key frames (extrema of S_M(t)) of {GERUNDS.get(behaviour, behaviour)} fall at the same gait phase in every "
+        "step, so they can segment and time-warp the motion.",
+        published="each local extremum of S_M(t) is a key frame, used to cut and time-warp clips (no number given)",
+    )
+
+
+def fig3_keyframes(dataset, joint_map: JointMap, settings: Ma2010Settings, what: str = "metadata") -> EvaluationResult:
+    """Fig. 3 on a dataset (``motionvar.io.MotionDataset``): the key frames of the first
+    walk (of ``settings`` walk_styles and walk_variants) and the first run as the table,
+    and per behaviour a claim on the circular SD of the maxima's phase within the step over
+    its first ``settings.fig3_max_clips`` clips (0: all), reproduced at most
+    ``settings.fig3_phase_sd``. ``what`` names the metadata in errors. A behaviour whose
+    clips hold no maximum between two foot strikes gets its claim with verdict ``not
+    applicable`` and the reason. Figure: ``shown`` (behaviour -> clip id, motion, its
+    :class:`CycleExtraction`, foot strikes) and ``strike_source`` (behaviour -> "ground
+    truth" or "detected": the shown clip's strikes)."""
+    meta = dataset.metadata
+    walks = rows_matching(meta, behaviour="walk", style=settings.walk_styles, variant=settings.walk_variants, what=what)
+    runs = np.flatnonzero(meta["behaviour"].astype(str).to_numpy() == "run")
+    rows, shown, shown_source, claims = [], {}, {}, []
+    for behaviour, idx in (("walk", walks), ("run", runs)):
+        scan = scan_behaviour(dataset, idx, behaviour, joint_map, settings)
+        rows += scan.rows
+        if scan.shown is not None:
+            shown[behaviour], shown_source[behaviour] = scan.shown, scan.shown_source
+        if scan.phases:
+            claims.append(phase_claim(behaviour, scan, settings.fig3_phase_sd))
+        elif len(idx):
+            reason = no_maximum_reason(behaviour, len(idx[: settings.fig3_max_clips or None]), scan)
+            claims.append(Claim(**claim_head(behaviour), measured="-", verdict="not applicable", note=reason))
     return EvaluationResult(
         table=pd.DataFrame(rows), claims=claims, figure={"shown": shown, "strike_source": shown_source}
     )

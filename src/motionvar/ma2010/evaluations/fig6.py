@@ -18,8 +18,9 @@ import pandas as pd
 
 from ...claims import Claim, EvaluationResult, verdict_from_bool, verdict_threshold
 from ..baselines.mukai_kuriyama import mk05_kriging, rose98_rbf
-from ..examples import ROOT_GROUPS, WalkCycles, joint_groups
+from ..examples import WalkCycles, joint_groups
 from ..representation import ClipCodec, ClipSet
+from ..settings import ROOT_GROUPS, STRIDE_REFERENCES, Ma2010Settings
 from ..svi import GROUP_ORDER, ClipPrediction, StyleVariationModel, resolve_structure
 from ..synthesis import RootSolver
 from ..variation import joint_variation
@@ -33,7 +34,6 @@ from .common import (
     walk_positions,
 )
 
-STRIDE_REFERENCES = ("validation", "style")  # what a predicted stride is compared with
 XI_KINDS = ("own", "mean", "sampled")  # the held-out cycle's xi, the network's conditional mean, a draw
 # the previous full-config run (25 subjects, 126 cycles, 80 folds): root rotation in group D, per-cycle folds
 PREVIOUS_FULL = (
@@ -64,46 +64,124 @@ def alternative_root_group(root_group: str) -> str:
     return next(g for g in ROOT_GROUPS if g != root_group)
 
 
+def fold_predictions(
+    train: ClipSet,
+    truth: np.ndarray,
+    c: np.ndarray,
+    groups: Mapping[str, np.ndarray],
+    structure: str | dict,
+    settings: Ma2010Settings,
+    rng: np.random.Generator,
+    ablation_groups: Mapping[str, np.ndarray] | None,
+    ablation_name: str,
+) -> tuple[dict[str, dict[str, np.ndarray]], dict[str, ClipPrediction]]:
+    """One fold of :func:`leave_one_out`: every model fitted to ``train`` and asked for the
+    held-out cycles ``truth`` (M, T, J, 4) at their styles ``c`` (M, d). Returns xi per kind
+    (:data:`XI_KINDS`) and group, and the predictions per method (table prefix)."""
+    scale = settings.variogram_scale
+    model = StyleVariationModel(groups, structure, settings.variogram_model, variogram_scale=scale).fit(train)
+    delta = joint_variation(truth)
+    xi = {
+        "own": {g: delta[:, j] for g, j in model.tau_.items()},
+        "mean": model.sample_variation(c, noise=False),
+        "sampled": model.sample_variation(c, rng=rng),
+    }
+    preds = {f"ours_{k}_xi": model.predict(c, xi[k]) for k in XI_KINDS}
+    if ablation_groups is not None:
+        alt = StyleVariationModel(ablation_groups, structure, settings.variogram_model, variogram_scale=scale).fit(
+            train
+        )
+        preds[f"ours_own_xi_{ablation_name}"] = alt.predict(c, {g: delta[:, j] for g, j in alt.tau_.items()})
+        preds[f"ours_mean_xi_{ablation_name}"] = alt.predict(c, alt.sample_variation(c, noise=False))
+    preds["kriging"] = mk05_kriging(settings.variogram_model, scale).fit(train).predict(c)
+    preds["rbf"] = rose98_rbf().fit(train).predict(c)
+    preds["least_squares"] = least_squares_clips(train, c)
+    return xi, preds
+
+
+def fold_rows(
+    clips: ClipSet,
+    test: np.ndarray,
+    context: dict,
+    xi: dict[str, dict[str, np.ndarray]],
+    measured: dict[str, tuple[np.ndarray, np.ndarray]],
+    validation: np.ndarray,
+    stride_reference: str,
+) -> list[dict]:
+    """The table rows of one fold's held-out cycles ``test`` (:func:`leave_one_out`):
+    ``context`` holds each cycle's walk, place in it and whether it closes it, and the
+    training size; ``measured`` method -> (strides (M, 2), pose errors (M,))."""
+    walks, position, closing = context["walks"], context["position"], context["closing"]
+    c = clips.style[test]
+    rows = []
+    for m, i in enumerate(test):  # loop over the fold's held-out cycles
+        row = {
+            "clip_id": clips.clip_ids[i],
+            "source_clip": walks[i],
+            "cycle_in_walk": int(position[i]),
+            "closing": bool(closing[i]),
+            "n_train": context["n_train"],
+            "last_key_interval_s": float(clips.key_times[i, -1] - clips.key_times[i, -2]),
+            "true_left_cm": c[m, 0],
+            "true_right_cm": c[m, 1],
+            "validation_left_cm": validation[m, 0],
+            "validation_right_cm": validation[m, 1],
+            "validation_style_error_cm": float(np.max(np.abs(validation[m] - c[m]))),
+            # the held-out cycle as a "method": the measure's own error against the style (its floor)
+            "validation_stride_error_cm": float(np.max(np.abs(validation[m] - c[m]))),
+            "validation_pose_error_cm": 0.0,
+        }
+        for k in XI_KINDS:
+            row.update({f"{k}_xi_{g}": float(xi[k][g][m]) for g in GROUP_ORDER})
+        for name, (s, pose) in measured.items():
+            row[f"{name}_left_cm"], row[f"{name}_right_cm"] = s[m]
+            reference = validation[m] if stride_reference == "validation" else c[m]
+            row[f"{name}_stride_error_cm"] = float(np.max(np.abs(s[m] - reference)))
+            row[f"{name}_style_error_cm"] = float(np.max(np.abs(s[m] - c[m])))
+            row[f"{name}_pose_error_cm"] = float(pose[m])
+        rows.append(row)
+    return rows
+
+
 def leave_one_out(
     clips: ClipSet,
     groups: Mapping[str, np.ndarray],
     solver: RootSolver,
-    structure: str | dict = "lower_first",
-    variogram_model: str = "linear",
-    seed: int = 0,
+    structure: str | dict,
+    settings: Ma2010Settings,
     held_out: Sequence[int] | None = None,
     source_clips: Sequence[str] | None = None,
-    unit: str = "walk",
     ablation_groups: Mapping[str, np.ndarray] | None = None,
     ablation_name: str = "ablation",
-    trend_rcond: float = 0.0,
-    stride_reference: str = "validation",
 ) -> pd.DataFrame:
-    """Fig. 6 protocol over the folds of :func:`.common.loo_folds`: every model is fitted to
-    a fold's training cycles and asked for each held-out cycle's style.
+    """Fig. 6 protocol over the folds of :func:`.common.loo_folds` (``settings.loo_unit``):
+    every model is fitted to a fold's training cycles and asked for each held-out cycle's style.
 
     One row per held-out cycle: its walk (``source_clips``; without them each cycle is its
     own walk), place in the walk and whether it closes it, the training size, the true
     strides; xi per group of the held-out cycle itself (Eq. 7-9 with the training model's
-    tau), at the network's conditional mean and sampled from it (Eq. 10); for ours with
-    each xi (``ours_own_xi``, ``ours_mean_xi``, ``ours_sampled_xi``), Kriging on style
-    only (MK05) and RBF (RBC98): the predicted strides, the larger stride error of the two
-    phases and the pose error to the truth; the same for a plain least-squares fit on style
-    (``least_squares``, :func:`least_squares_clips`). Stride errors (``*_stride_error_cm``)
-    are taken against ``stride_reference``: "validation" (default), the held-out cycle put
-    through the same measure (retimed from the common timeline, root by footskate cleanup,
-    the swing ankle's travel: :func:`.common.predicted_strides`), as Fig. 6 compares "the
-    stride length of the validation walking clips and the predicted motion clips"; or
-    "style", the strides asked for (measured on the uncut walk). ``*_style_error_cm`` is
-    always the latter, and ``validation_style_error_cm`` is the measure's own error on the
-    held-out truth (its floor). ``trend_rcond``: the trend cut-off of every Kriging, RBF and
-    least-squares fit (:class:`~..kriging.UniversalKriging`). With ``ablation_groups`` the model is also
+    tau), at the network's conditional mean and sampled from it (Eq. 10; seeded by
+    ``settings.seed``); for ours with each xi (``ours_own_xi``, ``ours_mean_xi``,
+    ``ours_sampled_xi``), Kriging on style only (MK05) and RBF (RBC98): the predicted
+    strides, the larger stride error of the two phases and the pose error to the truth; the
+    same for a plain least-squares fit on style (``least_squares``,
+    :func:`least_squares_clips`). Stride errors (``*_stride_error_cm``) are taken against
+    ``settings.fig6_stride_reference``: "validation", the held-out cycle put through the
+    same measure (retimed from the common timeline, root by footskate cleanup, the swing
+    ankle's travel: :func:`.common.predicted_strides`), as Fig. 6 compares "the stride
+    length of the validation walking clips and the predicted motion clips"; or "style", the
+    strides asked for (measured on the uncut walk). ``*_style_error_cm`` is always the
+    latter, and ``validation_style_error_cm`` is the measure's own error on the held-out
+    truth (its floor). Kriging uses ``settings`` variogram_model and variogram_scale; every
+    trend hyperplane (Kriging, RBF, least squares) is the literal least-squares fit
+    (Eq. 12-13). With ``ablation_groups`` the model is also
     fitted with those joint groups (``ours_own_xi_<ablation_name>``,
     ``ours_mean_xi_<ablation_name>``). ``held_out`` limits the predicted cycles (default:
     all). ``structure`` is used by every fold as given (resolve "auto" on all clips first:
     :func:`.svi.resolve_structure`)."""
-    rng = np.random.default_rng(seed)
+    rng = np.random.default_rng(settings.seed)
     n = clips.n_clips
+    stride_reference = settings.fig6_stride_reference
     if stride_reference not in STRIDE_REFERENCES:
         raise ValueError(
             f"leave_one_out: stride_reference must be one of {STRIDE_REFERENCES}; got {stride_reference!r}"
@@ -114,24 +192,10 @@ def leave_one_out(
         raise ValueError(f"leave_one_out: {len(walks)} source clips for {n} cycles")
     position, closing = walk_positions(walks)
     rows = []
-    for train_idx, test in loo_folds(walks, held, unit):  # loop over folds
+    for train_idx, test in loo_folds(walks, held, settings.loo_unit):  # loop over folds
         train = clips.subset(train_idx)
         truth, c = clips.rotations[test], clips.style[test]
-        model = StyleVariationModel(groups, structure, variogram_model, trend_rcond=trend_rcond).fit(train)
-        delta = joint_variation(truth)
-        xi = {
-            "own": {g: delta[:, j] for g, j in model.tau_.items()},
-            "mean": model.sample_variation(c, noise=False),
-            "sampled": model.sample_variation(c, rng=rng),
-        }
-        preds = {f"ours_{k}_xi": model.predict(c, xi[k]) for k in XI_KINDS}
-        if ablation_groups is not None:
-            alt = StyleVariationModel(ablation_groups, structure, variogram_model, trend_rcond=trend_rcond).fit(train)
-            preds[f"ours_own_xi_{ablation_name}"] = alt.predict(c, {g: delta[:, j] for g, j in alt.tau_.items()})
-            preds[f"ours_mean_xi_{ablation_name}"] = alt.predict(c, alt.sample_variation(c, noise=False))
-        preds["kriging"] = mk05_kriging(variogram_model, trend_rcond=trend_rcond).fit(train).predict(c)
-        preds["rbf"] = rose98_rbf(trend_rcond=trend_rcond).fit(train).predict(c)
-        preds["least_squares"] = least_squares_clips(train, c, trend_rcond)
+        xi, preds = fold_predictions(train, truth, c, groups, structure, settings, rng, ablation_groups, ablation_name)
         measured = {
             name: (
                 predicted_strides(p, clips.reference_keys, solver, clips.fps),
@@ -144,32 +208,8 @@ def leave_one_out(
         validation = predicted_strides(
             ClipPrediction(rotations=truth, key_times=clips.key_times[test]), clips.reference_keys, solver, clips.fps
         )
-        for m, i in enumerate(test):  # loop over the fold's held-out cycles
-            row = {
-                "clip_id": clips.clip_ids[i],
-                "source_clip": walks[i],
-                "cycle_in_walk": int(position[i]),
-                "closing": bool(closing[i]),
-                "n_train": len(train_idx),
-                "last_key_interval_s": float(clips.key_times[i, -1] - clips.key_times[i, -2]),
-                "true_left_cm": c[m, 0],
-                "true_right_cm": c[m, 1],
-                "validation_left_cm": validation[m, 0],
-                "validation_right_cm": validation[m, 1],
-                "validation_style_error_cm": float(np.max(np.abs(validation[m] - c[m]))),
-                # the held-out cycle as a "method": the measure's own error against the style (its floor)
-                "validation_stride_error_cm": float(np.max(np.abs(validation[m] - c[m]))),
-                "validation_pose_error_cm": 0.0,
-            }
-            for k in XI_KINDS:
-                row.update({f"{k}_xi_{g}": float(xi[k][g][m]) for g in GROUP_ORDER})
-            for name, (s, pose) in measured.items():
-                row[f"{name}_left_cm"], row[f"{name}_right_cm"] = s[m]
-                reference = validation[m] if stride_reference == "validation" else c[m]
-                row[f"{name}_stride_error_cm"] = float(np.max(np.abs(s[m] - reference)))
-                row[f"{name}_style_error_cm"] = float(np.max(np.abs(s[m] - c[m])))
-                row[f"{name}_pose_error_cm"] = float(pose[m])
-            rows.append(row)
+        context = {"walks": walks, "position": position, "closing": closing, "n_train": len(train_idx)}
+        rows += fold_rows(clips, test, context, xi, measured, validation, stride_reference)
     return pd.DataFrame(rows)
 
 
@@ -225,52 +265,15 @@ def _describe(s: dict | None) -> str:
     )
 
 
-def fig6_leave_one_out(
-    walks: WalkCycles,
-    structure: str = "auto",
-    variogram_model: str = "linear",
-    seed: int = 0,
-    max_clips: int = 0,
-    loo_unit: str = "walk",
-    ablation: bool = True,
-    trend_rcond: float = 0.0,
-    stride_reference: str = "validation",
-) -> EvaluationResult:
-    """Fig. 6 over the walking cycles (at most ``max_clips`` held-out cycles, a seeded random
-    subset; 0: all), folds by ``loo_unit`` ("walk": the whole walk of the held-out cycle
-    leaves training; "cycle": only the cycle), the structure resolved once on all cycles.
-    With ``ablation`` the model is refitted with the root rotation in the other joint group
-    than ``walks.root_group``. Claims (on ``walks.root_group``, the held-out cycle's own xi):
-    every stride error within the published 1.2 cm; Kriging beats RBF by mean pose error
-    (MK05). Table: summary rows (``kind`` "summary": method x all / steady / closing
-    cycles) then one row per held-out cycle (``kind`` "fold"). Figure:
-    ``published_max_stride_error_cm``, ``root_group``, ``ablation`` (the ablation's table
-    prefix or None), ``loo_unit``, ``stride_reference``."""
-    clips = walks.clips
-    if max_clips and clips.n_clips > max_clips:
-        held_out = np.sort(np.random.default_rng(seed).choice(clips.n_clips, max_clips, replace=False))
-    else:
-        held_out = np.arange(clips.n_clips)
-    root, alt = walks.root_group, alternative_root_group(walks.root_group)
-    alt_name = f"root_{alt}"
-    alt_groups = joint_groups(walks.joint_map, clips.skeleton, alt) if ablation else None
-    folds = leave_one_out(
-        clips,
-        walks.groups,
-        walks.solver,
-        resolve_structure(structure, clips, walks.groups),
-        variogram_model,
-        seed,
-        held_out=held_out,
-        source_clips=walks.source_clips,
-        unit=loo_unit,
-        ablation_groups=alt_groups,
-        ablation_name=alt_name,
-        trend_rcond=trend_rcond,
-        stride_reference=stride_reference,
-    )
-    folds.insert(0, "kind", "fold")
-    folds.insert(2, "subject", [walks.subjects[clips.clip_ids.index(c)] for c in folds["clip_id"]])
+def held_out_cycles(n_clips: int, max_clips: int, seed: int) -> np.ndarray:
+    """The cycles Fig. 6 predicts: at most ``max_clips`` (a subset seeded by ``seed``; 0: all)."""
+    if max_clips and n_clips > max_clips:
+        return np.sort(np.random.default_rng(seed).choice(n_clips, max_clips, replace=False))
+    return np.arange(n_clips)
+
+
+def loo_methods(root: str, alt: str, alt_name: str, ablation: bool) -> dict[str, dict]:
+    """Table prefix -> label columns (root group, xi) of every method of :func:`leave_one_out`."""
     methods = {f"ours_{k}_xi": {"root_group": root, "xi": k} for k in XI_KINDS}
     if ablation:
         methods |= {f"ours_{k}_xi_{alt_name}": {"root_group": alt, "xi": k} for k in ("own", "mean")}
@@ -280,34 +283,21 @@ def fig6_leave_one_out(
         "least_squares": {"root_group": "", "xi": "none (style only)"},
         "validation": {"root_group": "", "xi": "the held-out cycle itself, against its style"},
     }
-    summary = loo_summary(folds, methods, PUBLISHED_MAX_STRIDE_ERROR_CM)
-    summary.insert(3, "loo_unit", loo_unit)
-    table = pd.concat([summary, folds], ignore_index=True)
+    return methods
 
-    err = folds["ours_own_xi_stride_error_cm"].to_numpy()
-    own, steady, closing = (_stats(summary, "ours_own_xi", s) for s in ("all", "steady", "closing"))
-    mean_xi, sampled = _stats(summary, "ours_mean_xi"), _stats(summary, "ours_sampled_xi")
-    alt_own = _stats(summary, f"ours_own_xi_{alt_name}")
-    alt_steady = _stats(summary, f"ours_own_xi_{alt_name}", "steady")
-    kr, rb = folds["kriging_pose_error_cm"].mean(), folds["rbf_pose_error_cm"].mean()
-    n_better = int(np.sum(folds["kriging_pose_error_cm"] < folds["rbf_pose_error_cm"] - POSE_TIE_CM))
-    ls_krig = float(np.max(np.abs(folds["kriging_pose_error_cm"] - folds["least_squares_pose_error_cm"])))
-    ls_rbf = float(np.max(np.abs(folds["rbf_pose_error_cm"] - folds["least_squares_pose_error_cm"])))
-    n_tied = int(np.sum(np.abs(folds["kriging_pose_error_cm"] - folds["rbf_pose_error_cm"]) <= POSE_TIE_CM))
+
+def _unit_text(folds: pd.DataFrame, loo_unit: str) -> str:
     n_walks = folds["source_clip"].nunique()
-    unit_text = (
+    return (
         f"each fold leaves out the held-out cycle's whole walk ({n_walks} walks; no model sees a sibling "
         "cycle of the cycle it predicts)"
         if loo_unit == "walk"
         else "each fold leaves out one cycle (its sibling cycles from the same walk stay in training)"
     )
-    ablation_text = (
-        f" Ablation, root rotation in {alt} instead of {root}: own xi {_describe(alt_own)} "
-        f"(steady cycles {_describe(alt_steady)}); xi at the conditional mean "
-        f"{_describe(_stats(summary, f'ours_mean_xi_{alt_name}'))}."
-        if ablation
-        else ""
-    )
+
+
+def _changed_text(root: str, loo_unit: str, stride_reference: str) -> str:
+    """The claim note's comparison with the previous full-config run (:data:`PREVIOUS_FULL`)."""
     changes = []
     if root == "legs":
         changes.append(
@@ -330,19 +320,18 @@ def fig6_leave_one_out(
             "Fig. 6 compares the validation and predicted clips (the measure on the held-out truth itself "
             "errs against its style: see the floor)"
         )
-    if trend_rcond > 0:
-        changes.append(
-            f"every trend hyperplane ignores directions of the style cloud thinner than {trend_rcond:g} "
-            "of its widest (the two strides of a steady walk vary together)"
-        )
-    changed = (
+    return (
         f"Previous full-config run: {PREVIOUS_FULL}. Changed: " + "; ".join(changes) + "."
         if changes
         else f"As in the previous full-config run ({PREVIOUS_FULL})."
     )
+
+
+def _reference_text(summary: pd.DataFrame, stride_reference: str) -> str:
+    """What the stride errors are taken against, with the measure's floor."""
     own_style = _stats(summary, "ours_own_xi")
     floor, floor_steady = _stats(summary, "validation"), _stats(summary, "validation", "steady")
-    reference_text = (
+    return (
         "Stride errors against the validation cycle through the same measure (retimed, root by footskate cleanup, "
         f"swing-ankle travel). Against the strides asked for (measured on the uncut walk): max "
         f"{own_style['max_style_error_cm']:.2f} cm, mean {own_style['mean_style_error_cm']:.2f} cm; the measure's "
@@ -354,73 +343,141 @@ def fig6_leave_one_out(
         f"validation cycle itself: max {floor['max_stride_error_cm']:.2f} cm, mean "
         f"{floor['mean_stride_error_cm']:.2f} cm, {floor['n_within_bound']}/{floor['n']} within 1.2 cm."
     )
+
+
+def stride_claim(
+    folds: pd.DataFrame, summary: pd.DataFrame, settings: Ma2010Settings, root: str, alt: str | None
+) -> Claim:
+    """Fig. 6's claim: every stride error of ours (own xi, root rotation in ``root``) within
+    the published 1.2 cm; the note adds the network's xi, the ablation (root rotation in
+    ``alt``; None: no ablation) and the measure's floor."""
+    err = folds["ours_own_xi_stride_error_cm"].to_numpy()
+    steady, closing = (_stats(summary, "ours_own_xi", s) for s in ("steady", "closing"))
+    mean_xi, sampled = _stats(summary, "ours_mean_xi"), _stats(summary, "ours_sampled_xi")
+    alt_name = f"root_{alt}"
+    ablation_text = (
+        f" Ablation, root rotation in {alt} instead of {root}: own xi {_describe(_stats(summary, f'ours_own_xi_{alt_name}'))} "
+        f"(steady cycles {_describe(_stats(summary, f'ours_own_xi_{alt_name}', 'steady'))}); xi at the conditional mean "
+        f"{_describe(_stats(summary, f'ours_mean_xi_{alt_name}'))}."
+        if alt is not None
+        else ""
+    )
     if verdict_threshold(float(err.max()), PUBLISHED_MAX_STRIDE_ERROR_CM, "<=") == "reproduced":
         verdict_text = "Every stride error within the published bound."
     else:
         verdict_text = "partial if the max error is within twice the published bound."
+    changed = _changed_text(root, settings.loo_unit, settings.fig6_stride_reference)
+    return Claim(
+        claim_id=f"{PAPER}.fig6.loo_max_stride_error_below_1_2cm",
+        paper=PAPER,
+        source="Fig. 6, Sec. 7.1",
+        statement="In leave-one-out cross validation over walking clips the stride length of every synthesized "
+        "clip is within 1.2 cm of the held-out clip's.",
+        published=f"max stride error < {PUBLISHED_MAX_STRIDE_ERROR_CM} cm",
+        measured=f"max {err.max():.2f} cm, mean {err.mean():.2f} cm over {len(err)} cycles "
+        f"({int(np.sum(err <= PUBLISHED_MAX_STRIDE_ERROR_CM))} within 1.2 cm); steady cycles: "
+        f"{_describe(steady)}; closing cycles: {_describe(closing)}",
+        verdict=verdict_threshold(float(err.max()), PUBLISHED_MAX_STRIDE_ERROR_CM, "<=", tolerance=1.0),
+        value=float(err.max()),
+        bound=PUBLISHED_MAX_STRIDE_ERROR_CM,
+        unit="cm",
+        direction="<=",
+        note=f"{verdict_text} {_reference_text(summary, settings.fig6_stride_reference)} Verdict on ours with each "
+        f"held-out cycle's own style and latent variation (Eq. 7-9, the training model's tau), root rotation in {root}; "
+        f"{_unit_text(folds, settings.loo_unit)}. The network's xi instead: conditional mean {_describe(mean_xi)}, "
+        f"sampled {_describe(sampled)}. A closing cycle is the last of its walk, running into the slow-down of the "
+        f"closing step; the others are steady.{ablation_text} {changed} {PROTOCOL}",
+    )
+
+
+def mk05_claim(folds: pd.DataFrame, summary: pd.DataFrame, settings: Ma2010Settings) -> Claim:
+    """MK05's claim on the same folds: Kriging on style alone beats RBF by mean pose error
+    (ties within :data:`POSE_TIE_CM`), with plain least squares on style as the reference."""
+    kr, rb = folds["kriging_pose_error_cm"].mean(), folds["rbf_pose_error_cm"].mean()
+    n_better = int(np.sum(folds["kriging_pose_error_cm"] < folds["rbf_pose_error_cm"] - POSE_TIE_CM))
+    ls_krig = float(np.max(np.abs(folds["kriging_pose_error_cm"] - folds["least_squares_pose_error_cm"])))
+    ls_rbf = float(np.max(np.abs(folds["rbf_pose_error_cm"] - folds["least_squares_pose_error_cm"])))
+    n_tied = int(np.sum(np.abs(folds["kriging_pose_error_cm"] - folds["rbf_pose_error_cm"]) <= POSE_TIE_CM))
+    return Claim(
+        claim_id=f"{PAPER}.mk05.kriging_beats_rbf",
+        paper=PAPER,
+        source="Sec. 2 (citing Mukai & Kuriyama 2005)",
+        statement="Universal Kriging predicts motions more accurately than RBFs.",
+        published="Kriging error < RBF error (MK05)",
+        measured=f"mean LOO pose error: Kriging {kr:.2f} cm, RBF {rb:.2f} cm; Kriging better on "
+        f"{n_better}/{len(folds)} cycles, tied (within {POSE_TIE_CM:g} cm) on {n_tied}",
+        verdict=verdict_from_bool(kr < rb - POSE_TIE_CM),
+        value=kr - rb,
+        bound=-POSE_TIE_CM,
+        unit="cm",
+        direction="<",  # Kriging minus RBF mean pose error
+        note=(
+            f"A tie: the mean errors differ by {abs(kr - rb):.3f} cm, within {POSE_TIE_CM:g} cm. "
+            if abs(kr - rb) <= POSE_TIE_CM
+            else ""
+        )
+        + "Both interpolate whole cycles over the style alone (same clip vectors, same folds as Fig. 6: "
+        f"{_unit_text(folds, settings.loo_unit)}); pose error = mean joint-position distance with the root at the "
+        f"origin on the common timeline. RBF: cubic B-splines with a linear term (Rose 1998); Kriging: "
+        f"{settings.variogram_model} variogram. "
+        + (
+            f"Changed from the previous full-config run ({PREVIOUS_MK05}): folds leave out the whole walk, "
+            "since with one cycle per fold RBF's narrow kernels copy the held-out cycle's sibling cycles."
+            if settings.loo_unit == "walk"
+            else f"Folds as in the previous full-config run ({PREVIOUS_MK05})."
+        )
+        + f" Plain least squares on style (the trend alone): {folds['least_squares_pose_error_cm'].mean():.2f}"
+        f" cm; Kriging within {ls_krig:.3f} cm and RBF within {ls_rbf:.3f} cm of it per cycle (0: the method "
+        "adds nothing to the linear fit)."
+        + f" Kriging vs RBF on steady cycles: {_pose(summary, 'kriging', 'steady')} vs "
+        f"{_pose(summary, 'rbf', 'steady')} cm; closing: {_pose(summary, 'kriging', 'closing')} vs "
+        f"{_pose(summary, 'rbf', 'closing')} cm.",
+    )
+
+
+def fig6_leave_one_out(walks: WalkCycles, settings: Ma2010Settings, ablation: bool = True) -> EvaluationResult:
+    """Fig. 6 over the walking cycles (at most ``settings.loo_max_clips`` held-out cycles, a
+    subset seeded by ``settings.seed``; 0: all), folds by ``settings.loo_unit`` ("walk": the
+    whole walk of the held-out cycle leaves training; "cycle": only the cycle), the
+    structure (``settings.structure``) resolved once on all cycles; :func:`leave_one_out`.
+    With ``ablation`` the model is refitted with the root rotation in the other joint group
+    than ``walks.root_group``. Claims (on ``walks.root_group``, the held-out cycle's own xi):
+    every stride error within the published 1.2 cm; Kriging beats RBF by mean pose error
+    (MK05). Table: summary rows (``kind`` "summary": method x all / steady / closing
+    cycles) then one row per held-out cycle (``kind`` "fold"). Figure:
+    ``published_max_stride_error_cm``, ``root_group``, ``ablation`` (the ablation's table
+    prefix or None), ``loo_unit``, ``stride_reference``."""
+    clips = walks.clips
+    held_out = held_out_cycles(clips.n_clips, settings.loo_max_clips, settings.seed)
+    root, alt = walks.root_group, alternative_root_group(walks.root_group)
+    alt_name = f"root_{alt}"
+    alt_groups = joint_groups(walks.joint_map, clips.skeleton, alt) if ablation else None
+    folds = leave_one_out(
+        clips,
+        walks.groups,
+        walks.solver,
+        resolve_structure(settings.structure, clips, walks.groups),
+        settings,
+        held_out=held_out,
+        source_clips=walks.source_clips,
+        ablation_groups=alt_groups,
+        ablation_name=alt_name,
+    )
+    folds.insert(0, "kind", "fold")
+    folds.insert(2, "subject", [walks.subjects[clips.clip_ids.index(c)] for c in folds["clip_id"]])
+    summary = loo_summary(folds, loo_methods(root, alt, alt_name, ablation), PUBLISHED_MAX_STRIDE_ERROR_CM)
+    summary.insert(3, "loo_unit", settings.loo_unit)
+    table = pd.concat([summary, folds], ignore_index=True)
     claims = [
-        Claim(
-            claim_id=f"{PAPER}.fig6.loo_max_stride_error_below_1_2cm",
-            paper=PAPER,
-            source="Fig. 6, Sec. 7.1",
-            statement="In leave-one-out cross validation over walking clips the stride length of every synthesized "
-            "clip is within 1.2 cm of the held-out clip's.",
-            published=f"max stride error < {PUBLISHED_MAX_STRIDE_ERROR_CM} cm",
-            measured=f"max {err.max():.2f} cm, mean {err.mean():.2f} cm over {len(err)} cycles "
-            f"({int(np.sum(err <= PUBLISHED_MAX_STRIDE_ERROR_CM))} within 1.2 cm); steady cycles: "
-            f"{_describe(steady)}; closing cycles: {_describe(closing)}",
-            verdict=verdict_threshold(float(err.max()), PUBLISHED_MAX_STRIDE_ERROR_CM, "<=", tolerance=1.0),
-            value=float(err.max()),
-            bound=PUBLISHED_MAX_STRIDE_ERROR_CM,
-            unit="cm",
-            direction="<=",
-            note=f"{verdict_text} {reference_text} Verdict on ours with each held-out cycle's "
-            f"own style and latent variation (Eq. 7-9, the training model's tau), root rotation in {root}; "
-            f"{unit_text}. The network's xi instead: conditional mean {_describe(mean_xi)}, sampled "
-            f"{_describe(sampled)}. A closing cycle is the last of its walk, running into the slow-down of the "
-            f"closing step; the others are steady.{ablation_text} {changed} {PROTOCOL}",
-        ),
-        Claim(
-            claim_id=f"{PAPER}.mk05.kriging_beats_rbf",
-            paper=PAPER,
-            source="Sec. 2 (citing Mukai & Kuriyama 2005)",
-            statement="Universal Kriging predicts motions more accurately than RBFs.",
-            published="Kriging error < RBF error (MK05)",
-            measured=f"mean LOO pose error: Kriging {kr:.2f} cm, RBF {rb:.2f} cm; Kriging better on "
-            f"{n_better}/{len(folds)} cycles, tied (within {POSE_TIE_CM:g} cm) on {n_tied}",
-            verdict=verdict_from_bool(kr < rb - POSE_TIE_CM),
-            value=kr - rb,
-            bound=-POSE_TIE_CM,
-            unit="cm",
-            direction="<",  # Kriging minus RBF mean pose error
-            note=(
-                f"A tie: the mean errors differ by {abs(kr - rb):.3f} cm, within {POSE_TIE_CM:g} cm. "
-                if abs(kr - rb) <= POSE_TIE_CM
-                else ""
-            )
-            + "Both interpolate whole cycles over the style alone (same clip vectors, same folds as Fig. 6: "
-            f"{unit_text}); pose error = mean joint-position distance with the root at the origin on the common "
-            f"timeline. RBF: cubic B-splines with a linear term (Rose 1998); Kriging: {variogram_model} variogram. "
-            + (
-                f"Changed from the previous full-config run ({PREVIOUS_MK05}): folds leave out the whole walk, "
-                "since with one cycle per fold RBF's narrow kernels copy the held-out cycle's sibling cycles."
-                if loo_unit == "walk"
-                else f"Folds as in the previous full-config run ({PREVIOUS_MK05})."
-            )
-            + f" Plain least squares on style (the trend alone): {folds['least_squares_pose_error_cm'].mean():.2f}"
-            f" cm; Kriging within {ls_krig:.3f} cm and RBF within {ls_rbf:.3f} cm of it per cycle (0: the method "
-            "adds nothing to the linear fit)."
-            + f" Kriging vs RBF on steady cycles: {_pose(summary, 'kriging', 'steady')} vs "
-            f"{_pose(summary, 'rbf', 'steady')} cm; closing: {_pose(summary, 'kriging', 'closing')} vs "
-            f"{_pose(summary, 'rbf', 'closing')} cm.",
-        ),
+        stride_claim(folds, summary, settings, root, alt if ablation else None),
+        mk05_claim(folds, summary, settings),
     ]
     figure = {
         "published_max_stride_error_cm": PUBLISHED_MAX_STRIDE_ERROR_CM,
         "root_group": root,
         "ablation": alt_name if ablation else None,
         "alt_root_group": alt,
-        "loo_unit": loo_unit,
-        "stride_reference": stride_reference,
+        "loo_unit": settings.loo_unit,
+        "stride_reference": settings.fig6_stride_reference,
     }
     return EvaluationResult(table=table, claims=claims, figure=figure)

@@ -14,13 +14,14 @@ from scipy.stats import spearmanr
 from ...claims import Claim, EvaluationResult, verdict_from_bool
 from ..examples import WalkCycles
 from ..representation import ClipSet
+from ..settings import Ma2010Settings
 from ..svi import StyleVariationModel
 from ..synthesis import RootSolver
 from .common import PAPER, PROTOCOL, predicted_strides
 
 
 def reliability_map(
-    model: StyleVariationModel, clips: ClipSet, solver: RootSolver, n_grid: int = 15, margin: float = 0.5
+    model: StyleVariationModel, clips: ClipSet, solver: RootSolver, n_grid: int, margin: float
 ) -> pd.DataFrame:
     """Fig. 7b: over a grid of the 2-D style space (the examples' range widened by
     ``margin`` times its extent on each side), the stride error of the synthesized clip
@@ -46,13 +47,13 @@ def reliability_map(
     )
 
 
-def fig7b_reliability(
-    walks: WalkCycles, model: StyleVariationModel, n_grid: int = 15, margin: float = 0.5
-) -> EvaluationResult:
+def fig7b_reliability(walks: WalkCycles, model: StyleVariationModel, settings: Ma2010Settings) -> EvaluationResult:
     """Fig. 7b for ``model`` fitted to ``walks``: the reliability map on an ``n_grid`` x
-    ``n_grid`` grid and the claim that the stride error grows with the distance to the
+    ``n_grid`` grid (``settings.reliability_grid``; the examples' range widened by
+    ``settings.reliability_margin``) and the claim that the stride error grows with the distance to the
     nearest example (Spearman rho > 0 at p < 0.05; failed syntheses rank last). Figure:
     ``n_grid``, ``example_style`` (N, 2), ``rho``, ``p``, ``failed`` (mask over the table)."""
+    n_grid, margin = settings.reliability_grid, settings.reliability_margin
     table = reliability_map(model, walks.clips, walks.solver, n_grid, margin)
     failed = table["stride_error_cm"].isna().to_numpy()
     ranked = np.where(failed, np.inf, table["stride_error_cm"].to_numpy())  # a failed synthesis ranks last

@@ -15,6 +15,7 @@ from ...core.kinematics import fk
 from ..baselines.mukai_kuriyama import StyleClipInterpolation, mk05_kriging, rose98_rbf
 from ..correspondence import retime
 from ..examples import WalkCycles
+from ..settings import Ma2010Settings
 from ..svi import ClipPrediction, StyleVariationModel
 from ..synthesis import RootSolver
 from ..variation import joint_variation
@@ -69,74 +70,60 @@ def interpolation_variants(interp: StyleClipInterpolation, style: np.ndarray, n:
     return interp.predict(np.tile(np.atleast_2d(style), (n, 1)))
 
 
-def fig8_fixed_style(
+def fixed_style_spreads(
     walks: WalkCycles,
-    model: StyleVariationModel,
-    n_variants: int = 5,
-    seed: int = 0,
-    variogram_model: str = "linear",
-    spread_ratio_bounds: tuple[float, float] = (0.33, 3.0),
-) -> EvaluationResult:
-    """Fig. 8a for ``model`` fitted to ``walks``: ``n_variants`` cycles at the median
-    stride (xi sampled, seeded by ``seed``), their xi, strides and stride errors, and the
-    spread per joint group of ours, of the ceiling (the same style from the nearest
-    examples' own xi, :func:`ceiling_variants`), of the nearest examples (one per subject;
-    also with each clip's mean posture removed), of RBF and of style-only Kriging
-    (``variogram_model``). Claims: the variants differ within
-    ``spread_ratio_bounds`` times the data's spread while keeping the stride; RBF and
-    Kriging do not vary. Figure: ``motions`` and ``key_frames`` of the variants in real
-    time, ``style``, ``errors``, ``spreads``, ``ceiling_errors``, ``data_name`` (the key of
-    the data's spread)."""
-    clips, groups, solver = walks.clips, walks.groups, walks.solver
-    n = n_variants
-    style = np.median(clips.style, axis=0)
-    pred, xi, strides = fixed_style_variants(model, style, n, solver, np.random.default_rng(seed))
-    errors = np.max(np.abs(strides - style), axis=1)
-    near = nearest_clips(clips, style, n, walks.subjects)
-    data_name = f"data ({len(near)} nearest examples)"
-    ceil_pred, ceil_xi, ceil_strides = ceiling_variants(model, clips.rotations[near], style, solver)
-    ceil_errors = np.max(np.abs(ceil_strides - style), axis=1)
-    spreads = {
+    pred: ClipPrediction,
+    ceil_pred: ClipPrediction,
+    near: np.ndarray,
+    style: np.ndarray,
+    settings: Ma2010Settings,
+) -> dict[str, dict[str, float]]:
+    """Spread per joint group (:func:`.common.group_spread`) of ours (``pred``), the ceiling
+    (``ceil_pred``), the nearest examples ``near`` (also with each clip's mean posture
+    removed), RBF and style-only Kriging (``settings`` variogram_model, variogram_scale) at
+    ``style``, as many clips as ours."""
+    clips, groups, solver, n = walks.clips, walks.groups, walks.solver, len(pred)
+    kriging = mk05_kriging(settings.variogram_model, settings.variogram_scale)
+    return {
         "ours": group_spread(pred.rotations, groups, solver),
         "ceiling (their own xi)": group_spread(ceil_pred.rotations, groups, solver),
-        data_name: group_spread(clips.rotations[near], groups, solver),
+        f"data ({len(near)} nearest examples)": group_spread(clips.rotations[near], groups, solver),
         "data, mean posture removed": posture_free_spread(clips.rotations[near], groups, solver),
         "RBF": group_spread(interpolation_variants(rose98_rbf().fit(clips), style, n).rotations, groups, solver),
-        "Kriging": group_spread(
-            interpolation_variants(mk05_kriging(variogram_model).fit(clips), style, n).rotations, groups, solver
-        ),
+        "Kriging": group_spread(interpolation_variants(kriging.fit(clips), style, n).rotations, groups, solver),
     }
-    rows = [
-        {
-            "kind": "variant",
-            "name": f"variant {k + 1}",
-            **{g: float(xi[g][k]) for g in GROUPS},
-            "left_cm": strides[k, 0],
-            "right_cm": strides[k, 1],
-            "stride_error_cm": errors[k],
-        }
-        for k in range(n)
-    ]
-    rows += [
-        {
-            "kind": "ceiling",
-            "name": f"own xi of {clips.clip_ids[i]}",
-            **{g: float(ceil_xi[g][k]) for g in GROUPS},
-            "left_cm": ceil_strides[k, 0],
-            "right_cm": ceil_strides[k, 1],
-            "stride_error_cm": ceil_errors[k],
-        }
-        for k, i in enumerate(near)
-    ]
-    rows += [{"kind": "spread_cm", "name": name, **s} for name, s in spreads.items()]
 
+
+def _stride_row(kind: str, name: str, xi: dict, k: int, strides: np.ndarray, errors: np.ndarray) -> dict:
+    return {
+        "kind": kind,
+        "name": name,
+        **{g: float(xi[g][k]) for g in GROUPS},
+        "left_cm": strides[k, 0],
+        "right_cm": strides[k, 1],
+        "stride_error_cm": errors[k],
+    }
+
+
+def variant_motions(
+    model: StyleVariationModel, pred: ClipPrediction, solver: RootSolver, fps: float
+) -> tuple[list, list]:
+    """The variants in real time (root by footskate cleanup) and their key frames, for the figure."""
     motions, keys = [], []
-    for k in range(n):  # loop over variants
-        rot, _ = retime(pred.rotations[k], model.reference_keys_, pred.key_times[k], clips.fps)
-        motions.append(solver.motion(rot, clips.fps))
-        keys.append(prediction_key_frames(pred.key_times[k], clips.fps, len(rot)))
+    for k in range(len(pred)):  # loop over variants
+        rot, _ = retime(pred.rotations[k], model.reference_keys_, pred.key_times[k], fps)
+        motions.append(solver.motion(rot, fps))
+        keys.append(prediction_key_frames(pred.key_times[k], fps, len(rot)))
+    return motions, keys
 
-    lo, hi = spread_ratio_bounds
+
+def variation_claim(
+    spreads: dict, data_name: str, errors: np.ndarray, ceil_errors: np.ndarray, n_near: int, bounds, root_group: str
+) -> Claim:
+    """Fig. 8a's claim: the variants spread in every group, within ``bounds`` times the
+    spread of the ``n_near`` nearest examples (``data_name``), and keep the stride."""
+    n = len(errors)
+    lo, hi = bounds
     ours, ref, ceil = spreads["ours"], spreads[data_name], spreads["ceiling (their own xi)"]
     static = spreads["data, mean posture removed"]
     ratios = {g: ours[g] / max(ref[g], 1e-12) for g in GROUPS}
@@ -145,7 +132,6 @@ def fig8_fixed_style(
         all(lo <= r <= hi for r in ratios.values()),
         float(errors.max()) <= PUBLISHED_MAX_STRIDE_ERROR_CM,
     ]
-    none_vary = max(max(spreads["RBF"].values()), max(spreads["Kriging"].values()))
 
     def share(g: str) -> str:  # the method's share of the gap ours -> data in group g, and the posture offsets' in it
         gap, method = ref[g] - ours[g], ref[g] - ceil[g]
@@ -157,61 +143,101 @@ def fig8_fixed_style(
             f"{100 * min(max(posture, 0.0), 1.0):.0f}% of it)"
         )
 
+    return Claim(
+        claim_id=f"{PAPER}.fig8.variants_differ_at_fixed_style",
+        paper=PAPER,
+        source="Fig. 8a, Sec. 7.3",
+        statement="Clips synthesized with the same style parameter differ visibly while their stride lengths "
+        "coincide with the requested one.",
+        published="differences easy to notice; strides coincide with the style parameter",
+        measured="spread ours / ceiling / data per group: "
+        + ", ".join(f"{g} {ours[g]:.2f}/{ceil[g]:.2f}/{ref[g]:.2f} cm" for g in GROUPS)
+        + f"; max stride error {errors.max():.2f} cm ({int(np.sum(errors > PUBLISHED_MAX_STRIDE_ERROR_CM))}"
+        f"/{n} over 1.2 cm; ceiling {ceil_errors.max():.2f} cm)",
+        verdict=verdict_from_fraction(sum(checks), len(checks), full=1.0, partial=0.6),
+        value=sum(checks) / len(checks),
+        bound=1.0,
+        unit="share",
+        direction=">=",
+        note=f"Three checks: spread > 0 in every group; spread within [{lo:g}, {hi:g}] x the spread of the "
+        f"{n_near} example cycles nearest the style (one per subject, as Fig. 1); every stride error <= "
+        f"{PUBLISHED_MAX_STRIDE_ERROR_CM} cm (Fig. 6's bound). Passed: {checks}. Ceiling: the same style "
+        "synthesized from those examples' own xi instead of sampled xi, the most variation the model can "
+        "give them. Eq. 7's xi sums frame-to-frame rotation changes, so a constant posture offset (torso "
+        "lean, head pitch, elbow flexion: much of the variation between subjects) cancels out of xi "
+        "exactly and cannot reach the synthesis. Of the gap in spread ours -> data, the part between ceiling "
+        "and data is the method's, the rest comes from sampling "
+        f"{n} xi (per group, in cm of SD; posture offsets = data minus the data with each clip's mean "
+        "posture removed): " + ", ".join(share(g) for g in GROUPS) + ". The examples with each clip's mean "
+        "posture removed spread "
+        + ", ".join(f"{g} {static[g]:.2f}" for g in GROUPS)
+        + " cm. Previous full-config run (root "
+        "rotation in group D): spread ours 0.03-1.42 cm vs data 0.35-2.39 cm; ceiling 0.43/1.60/1.64/0.03 "
+        "cm vs data 0.92/2.22/2.39/0.35 cm; 6/20 strides over 1.2 cm. Changed: "
+        + (
+            "the root rotation moved to the legs group A (config ma2010.root_group; a sampled xi_D no longer "
+            "tilts the pelvis and breaks the stride), and "
+            if root_group == "legs"
+            else ""
+        )
+        + f"the ceiling is reported. Root rotation in: {root_group}. {PROTOCOL}",
+    )
+
+
+def no_variation_claim(spreads: dict, n: int) -> Claim:
+    """Sec. 7.3-7.4's claim: RBF and style-only Kriging give one clip for one style."""
+    ours = spreads["ours"]
+    none_vary = max(max(spreads["RBF"].values()), max(spreads["Kriging"].values()))
+    return Claim(
+        claim_id=f"{PAPER}.sec7_4.rbf_kriging_give_no_variation",
+        paper=PAPER,
+        source="Sec. 7.3-7.4",
+        statement="RBFs and universal Kriging cannot produce variants with the same style parameters.",
+        published="constant output for a constant style",
+        measured=f"largest spread of {n} RBF / Kriging clips at one style: {none_vary:.2e} cm (ours: "
+        f"{min(ours.values()):.2f}-{max(ours.values()):.2f} cm)",
+        verdict=verdict_from_bool(none_vary < 1e-6),
+        value=none_vary,
+        bound=1e-6,
+        unit="cm",
+        direction="<",
+        note="Both interpolate over the style alone, so a repeated style gives the same clip.",
+    )
+
+
+def fig8_fixed_style(walks: WalkCycles, model: StyleVariationModel, settings: Ma2010Settings) -> EvaluationResult:
+    """Fig. 8a for ``model`` fitted to ``walks``: ``settings.fig8_variants`` cycles at the
+    median stride (xi sampled, seeded by ``settings.seed``), their xi, strides and stride
+    errors, and the spread per joint group of ours, of the ceiling (the same style from the
+    nearest examples' own xi, :func:`ceiling_variants`), of the nearest examples (one per
+    subject; also with each clip's mean posture removed), of RBF and of style-only Kriging
+    (:func:`fixed_style_spreads`). Claims: the variants differ within
+    ``settings.spread_ratio_bounds`` times the data's spread while keeping the stride; RBF
+    and Kriging do not vary. Figure: ``motions`` and ``key_frames`` of the variants in real
+    time, ``style``, ``errors``, ``spreads``, ``ceiling_errors``, ``data_name`` (the key of
+    the data's spread)."""
+    clips, solver = walks.clips, walks.solver
+    n = settings.fig8_variants
+    style = np.median(clips.style, axis=0)
+    pred, xi, strides = fixed_style_variants(model, style, n, solver, np.random.default_rng(settings.seed))
+    errors = np.max(np.abs(strides - style), axis=1)
+    near = nearest_clips(clips, style, n, walks.subjects)
+    data_name = f"data ({len(near)} nearest examples)"
+    ceil_pred, ceil_xi, ceil_strides = ceiling_variants(model, clips.rotations[near], style, solver)
+    ceil_errors = np.max(np.abs(ceil_strides - style), axis=1)
+    spreads = fixed_style_spreads(walks, pred, ceil_pred, near, style, settings)
+    rows = [_stride_row("variant", f"variant {k + 1}", xi, k, strides, errors) for k in range(n)]
+    rows += [
+        _stride_row("ceiling", f"own xi of {clips.clip_ids[i]}", ceil_xi, k, ceil_strides, ceil_errors)
+        for k, i in enumerate(near)
+    ]
+    rows += [{"kind": "spread_cm", "name": name, **s} for name, s in spreads.items()]
+    motions, keys = variant_motions(model, pred, solver, clips.fps)
     claims = [
-        Claim(
-            claim_id=f"{PAPER}.fig8.variants_differ_at_fixed_style",
-            paper=PAPER,
-            source="Fig. 8a, Sec. 7.3",
-            statement="Clips synthesized with the same style parameter differ visibly while their stride lengths "
-            "coincide with the requested one.",
-            published="differences easy to notice; strides coincide with the style parameter",
-            measured="spread ours / ceiling / data per group: "
-            + ", ".join(f"{g} {ours[g]:.2f}/{ceil[g]:.2f}/{ref[g]:.2f} cm" for g in GROUPS)
-            + f"; max stride error {errors.max():.2f} cm ({int(np.sum(errors > PUBLISHED_MAX_STRIDE_ERROR_CM))}"
-            f"/{n} over 1.2 cm; ceiling {ceil_errors.max():.2f} cm)",
-            verdict=verdict_from_fraction(sum(checks), len(checks), full=1.0, partial=0.6),
-            value=sum(checks) / len(checks),
-            bound=1.0,
-            unit="share",
-            direction=">=",
-            note=f"Three checks: spread > 0 in every group; spread within [{lo:g}, {hi:g}] x the spread of the "
-            f"{len(near)} example cycles nearest the style (one per subject, as Fig. 1); every stride error <= "
-            f"{PUBLISHED_MAX_STRIDE_ERROR_CM} cm (Fig. 6's bound). Passed: {checks}. Ceiling: the same style "
-            "synthesized from those examples' own xi instead of sampled xi, the most variation the model can "
-            "give them. Eq. 7's xi sums frame-to-frame rotation changes, so a constant posture offset (torso "
-            "lean, head pitch, elbow flexion: much of the variation between subjects) cancels out of xi "
-            "exactly and cannot reach the synthesis. Of the gap in spread ours -> data, the part between ceiling "
-            "and data is the method's, the rest comes from sampling "
-            f"{n} xi (per group, in cm of SD; posture offsets = data minus the data with each clip's mean "
-            "posture removed): " + ", ".join(share(g) for g in GROUPS) + ". The examples with each clip's mean "
-            "posture removed spread "
-            + ", ".join(f"{g} {static[g]:.2f}" for g in GROUPS)
-            + " cm. Previous full-config run (root "
-            "rotation in group D): spread ours 0.03-1.42 cm vs data 0.35-2.39 cm; ceiling 0.43/1.60/1.64/0.03 "
-            "cm vs data 0.92/2.22/2.39/0.35 cm; 6/20 strides over 1.2 cm. Changed: "
-            + (
-                "the root rotation moved to the legs group A (config ma2010.root_group; a sampled xi_D no longer "
-                "tilts the pelvis and breaks the stride), and "
-                if walks.root_group == "legs"
-                else ""
-            )
-            + f"the ceiling is reported. Root rotation in: {walks.root_group}. {PROTOCOL}",
+        variation_claim(
+            spreads, data_name, errors, ceil_errors, len(near), settings.spread_ratio_bounds, walks.root_group
         ),
-        Claim(
-            claim_id=f"{PAPER}.sec7_4.rbf_kriging_give_no_variation",
-            paper=PAPER,
-            source="Sec. 7.3-7.4",
-            statement="RBFs and universal Kriging cannot produce variants with the same style parameters.",
-            published="constant output for a constant style",
-            measured=f"largest spread of {n} RBF / Kriging clips at one style: {none_vary:.2e} cm (ours: "
-            f"{min(ours.values()):.2f}-{max(ours.values()):.2f} cm)",
-            verdict=verdict_from_bool(none_vary < 1e-6),
-            value=none_vary,
-            bound=1e-6,
-            unit="cm",
-            direction="<",
-            note="Both interpolate over the style alone, so a repeated style gives the same clip.",
-        ),
+        no_variation_claim(spreads, n),
     ]
     figure = {
         "motions": motions,

@@ -13,6 +13,7 @@ import numpy as np
 import pandas as pd
 
 from ...claims import Claim, EvaluationResult, NotApplicable, verdict_from_fraction
+from ...core.motion import Motion
 from ...core.threads import fixed_threads
 from ...metrics.jerk import mean_jerk, root_free_jerk
 from ..comparison import (
@@ -28,6 +29,7 @@ from ..comparison import (
     variation_between,
 )
 from ..examples import WalkCycles
+from ..settings import Ma2010Settings
 from .common import PAPER, PROTOCOL, nearest_clips
 
 log = logging.getLogger(__name__)
@@ -40,72 +42,16 @@ log = logging.getLogger(__name__)
 RIVAL_THREADS = 2
 
 
-def sec7_4_comparison(
-    walks: WalkCycles,
-    *,
-    n_examples: int = 5,
-    seconds: float = 30.0,
-    n_sequences: int = 3,
-    seed: int = 0,
-    structure: str = "auto",
-    variogram_model: str = "linear",
-    perlin_amplitude: float = 0.1,
-    perlin_frequency_hz: float = 1.0,
-    gplvm_latent_dim: int = 3,
-    gplvm_iterations: int = 200,
-    gplvm_frame_step: int = 4,
-    dbn_max_parents: int = 8,
-    contact_height_cm: float = 2.0,
-    discontinuity_factor: float = 1.5,
-    xi_per: str = "sequence",
-    landing_rule: str = "significant_maximum",
-    threads: int = RIVAL_THREADS,
-) -> EvaluationResult:
-    """Sec. 7.4 from the ``n_examples`` cycles nearest the median stride (one per subject):
-    every method's sequences (:func:`..comparison.method_sequences`, settings as there:
-    ours draws xi once per sequence or per cycle, ``xi_per``; transitions land by
-    ``landing_rule``), their naturalness (:func:`..comparison.naturalness`: foot skating
-    at detected contacts; the earlier height-threshold measure with ``contact_height_cm``
-    beside it; a discontinuity is an acceleration above ``discontinuity_factor`` x the
-    examples' peak) and variation, one table row per sequence plus the examples as
-    reference; a sequence that stops early (diverged) scores infinite. Claim: ours is the
-    most natural of the methods that vary. Figure: ``means`` (per-method means of the
-    table), ``n_examples``, ``seconds``, ``n_sequences``, ``sequences`` (method -> motions).
-    The sequences are made on ``threads`` torch and BLAS threads (:data:`RIVAL_THREADS`)."""
-    style = np.median(walks.clips.style, axis=0)
-    near = nearest_clips(walks.clips, style, n_examples, walks.subjects)
-    if len(near) < 2:
-        raise NotApplicable(
-            f"{walks.source}: {len(set(walks.subjects))} subject(s) among the {walks.clips.n_clips} walking cycles; "
-            "Sec. 7.4 takes its example cycles one per subject (as the five clips of Fig. 1), so it needs cycles of "
-            "at least 2 subjects"
-        )
-    five = walks.clips.subset(near)
-    with fixed_threads(threads):
-        out = method_sequences(
-            five,
-            walks.groups,
-            walks.solver,
-            seconds,
-            n_sequences,
-            seed,
-            structure=structure,
-            variogram_model=variogram_model,
-            perlin_amplitude=perlin_amplitude,
-            perlin_frequency_hz=perlin_frequency_hz,
-            gplvm_latent_dim=gplvm_latent_dim,
-            gplvm_iterations=gplvm_iterations,
-            gplvm_frame_step=gplvm_frame_step,
-            dbn_max_parents=dbn_max_parents,
-            xi_per=xi_per,
-            landing_rule=landing_rule,
-        )
-    examples = [walks.solver.motion(r, five.fps) for r in example_pose_sequences(five)]
-    ref = NaturalnessReference.from_examples(examples, walks.solver, contact_height_cm, discontinuity_factor)
+def sequence_rows(
+    out: dict[str, list[Motion]], examples: list[Motion], ref: NaturalnessReference, full: float
+) -> list[dict]:
+    """One table row per sequence (method, number, length, :func:`..comparison.naturalness`,
+    :func:`..comparison.naturalness_scores`, variation between the method's sequences), then
+    the examples as reference. A sequence shorter than ``full`` s stopped early (diverged):
+    its scores and its method's variation are infinite."""
     example_jerk = float(np.mean([mean_jerk(m.positions(), m.fps) for m in examples]))
     example_root_free_jerk = float(np.mean([root_free_jerk(m.positions(), m.fps) for m in examples]))
     rows = []
-    full = seconds - 1.0 / five.fps
     for method, motions in out.items():
         diverged = any(m.duration < full for m in motions)
         var = np.inf if diverged else variation_between(motions)
@@ -137,16 +83,20 @@ def sec7_4_comparison(
                 "variation_between_sequences_cm": np.nan,
             }
         )
-    table = pd.DataFrame(rows)
-    means = table.groupby("method", sort=False).mean(numeric_only=True)
+    return rows
+
+
+def natural_claim(means: pd.DataFrame, out: dict[str, list[Motion]], full: float, settings: Ma2010Settings) -> Claim:
+    """Sec. 7.4's claim from the per-method means of the table: ours is at least as natural
+    as every rival that varies, on every naturalness score (:data:`NATURALNESS_SCORES`)."""
     scores = {m: {k: float(means.loc[m, k]) for k in NATURALNESS_SCORES} for m in METHODS}
     variation = {m: float(means.loc[m, "variation_between_sequences_cm"]) for m in METHODS}
-
     best = best_with_variation(scores, variation, "ours")
     rivals = [LABELS[m] for m in METHODS if m != "ours" and variation[m] > 1e-6]
     ours_varies = variation["ours"] > 1e-6
     n_best = sum(best.values()) if ours_varies else 0
-    claim = Claim(
+    xi_per, landing_rule = settings.comparison_xi, settings.comparison_landing
+    return Claim(
         claim_id=f"{PAPER}.sec7_4.ours_most_natural_with_variation",
         paper=PAPER,
         source="Sec. 7.4",
@@ -184,7 +134,7 @@ def sec7_4_comparison(
         f"the paper does not say); transitions land on the {landing_rule.replace('_', ' ')} of the pose distance "
         "(Eq. 15). The GPLVM rival is a Bayesian GPLVM along a fitted helix, stronger than the MAP GPLVM of "
         "[Law03] that the paper drives 'roughly'. Perlin "
-        f"amplitude {perlin_amplitude:g} rad at {perlin_frequency_hz:g} Hz (set by hand, as in the "
+        f"amplitude {settings.perlin_amplitude_rad:g} rad at {settings.perlin_frequency_hz:g} Hz (set by hand, as in the "
         f"paper). Changed from the previous run (full config: ours best on 0/4, skating ours vs best rival "
         "not distinguishable): foot skating now counts only frames where the contact detection has a foot down "
         "and takes its contact point's speed (the generator's walks score ~0.1 cm/s; the earlier "
@@ -195,5 +145,44 @@ def sec7_4_comparison(
         "comparison_landing); the shared footskate cleanup keeps each support foot at least 0.1 s (was the "
         f"lower foot of every frame, which flickered in double support and jolted the root). {PROTOCOL}",
     )
-    figure = {"means": means, "n_examples": len(near), "seconds": seconds, "n_sequences": n_sequences, "sequences": out}
-    return EvaluationResult(table=table, claims=[claim], figure=figure)
+
+
+def sec7_4_comparison(walks: WalkCycles, settings: Ma2010Settings, threads: int = RIVAL_THREADS) -> EvaluationResult:
+    """Sec. 7.4 from the ``settings.comparison_examples`` cycles nearest the median stride
+    (one per subject): every method's sequences (:func:`..comparison.method_sequences`,
+    with ``settings``), their naturalness (:func:`..comparison.naturalness`: foot skating
+    at detected contacts; the height-threshold measure with ``settings.contact_height_cm``
+    beside it; a discontinuity is an acceleration above ``settings.discontinuity_factor`` x
+    the examples' peak) and variation, one table row per sequence plus the examples as
+    reference (:func:`sequence_rows`); a sequence that stops early (diverged) scores
+    infinite. Claim: ours is the most natural of the methods that vary. Figure: ``means``
+    (per-method means of the table), ``n_examples``, ``seconds``, ``n_sequences``,
+    ``sequences`` (method -> motions). The sequences are made on ``threads`` torch and BLAS
+    threads (:data:`RIVAL_THREADS`)."""
+    style = np.median(walks.clips.style, axis=0)
+    near = nearest_clips(walks.clips, style, settings.comparison_examples, walks.subjects)
+    if len(near) < 2:
+        raise NotApplicable(
+            f"{walks.source}: {len(set(walks.subjects))} subject(s) among the {walks.clips.n_clips} walking cycles; "
+            "Sec. 7.4 takes its example cycles one per subject (as the five clips of Fig. 1), so it needs cycles of "
+            "at least 2 subjects"
+        )
+    five = walks.clips.subset(near)
+    with fixed_threads(threads):
+        out = method_sequences(five, walks.groups, walks.solver, settings)
+    examples = [walks.solver.motion(r, five.fps) for r in example_pose_sequences(five)]
+    ref = NaturalnessReference.from_examples(
+        examples, walks.solver, settings.contact_height_cm, settings.discontinuity_factor
+    )
+    seconds = settings.comparison_seconds
+    full = seconds - 1.0 / five.fps
+    table = pd.DataFrame(sequence_rows(out, examples, ref, full))
+    means = table.groupby("method", sort=False).mean(numeric_only=True)
+    figure = {
+        "means": means,
+        "n_examples": len(near),
+        "seconds": seconds,
+        "n_sequences": settings.comparison_sequences,
+        "sequences": out,
+    }
+    return EvaluationResult(table=table, claims=[natural_claim(means, out, full, settings)], figure=figure)

@@ -29,7 +29,8 @@ from ..kriging import (
     pair_semivariances,
 )
 from ..representation import ClipCodec
-from ..svi import GROUP_ORDER, StyleVariationModel
+from ..settings import Ma2010Settings
+from ..svi import GROUP_ORDER
 
 STYLE_ONLY = "style only (MK05)"
 MAX_CLOUD = 20000  # pairs drawn per panel at most (a seeded subset beyond)
@@ -65,19 +66,16 @@ def _rows(
     return rows
 
 
-def variogram_fits(
-    walks: WalkCycles,
-    structure: str = "auto",
-    variogram_model: str = "auto",
-    variogram_scale: str = "sd",
-    seed: int = 0,
-) -> EvaluationResult:
+def variogram_fits(walks: WalkCycles, settings: Ma2010Settings) -> EvaluationResult:
     """The semivariograms and fitted variograms of the model fitted to all walking cycles
-    (one per joint group) and of MK05 Kriging on style alone (module docstring). Figure:
+    (one per joint group; ``settings`` structure, variogram_model, variogram_scale) and of
+    MK05 Kriging on style alone (module docstring); the cloud's subset is seeded by
+    ``settings.seed``. Figure:
     per interpolator the variogram cloud (pair distance, semivariance; same-walk pairs
     marked) for :func:`motionvar.ma2010.figures.draw_variogram`."""
     clips = walks.clips
-    model = StyleVariationModel(walks.groups, structure, variogram_model, variogram_scale=variogram_scale).fit(clips)
+    variogram_model, variogram_scale = settings.variogram_model, settings.variogram_scale
+    model = walks.fit_model(settings)
     krigs: dict[str, UniversalKriging] = {g: model.interpolators_[g][1] for g in GROUP_ORDER}
     # MK05's clip vectors (:mod:`..baselines.mukai_kuriyama`: every joint and the key times) over style alone
     codec = ClipCodec.fit(clips, np.arange(clips.skeleton.n_joints), timing=True)
@@ -86,7 +84,7 @@ def variogram_fits(
     source = getattr(walks, "source_clips", None)  # each cycle's walk (capture)
     iu = np.triu_indices(clips.n_clips, k=1)
     same_walk = None if source is None else (np.asarray(source)[:, None] == np.asarray(source)[None, :])[iu]
-    rng = np.random.default_rng(seed)
+    rng = np.random.default_rng(settings.seed)
     rows, clouds, fits = [], {}, {}
     for name, k in krigs.items():  # loop over the five interpolators
         fit = k.variogram_fit_

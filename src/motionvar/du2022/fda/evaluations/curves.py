@@ -17,13 +17,14 @@ from __future__ import annotations
 import logging
 import time
 from collections.abc import Mapping, Sequence
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 import numpy as np
 import pandas as pd
 
 if TYPE_CHECKING:
     from ..functions import FunctionalMotions
+    from ..settings import FdaSettings, GplvmSettings, SfpcaSettings
     from ..sfpca import SFPCA
 
 log = logging.getLogger(__name__)
@@ -40,15 +41,15 @@ def kmeans_labels(fd: FunctionalMotions, positions: np.ndarray, n_clusters: int,
     return KMeans(n_clusters=n_clusters, init="k-means++", n_init=10, random_state=seed).fit_predict(x)
 
 
-def fitted_sfpca(model: SFPCA, fd: FunctionalMotions, sfpca: Mapping[str, Any], source: str = "SFPCA model") -> SFPCA:
+def fitted_sfpca(model: SFPCA, fd: FunctionalMotions, sfpca: SfpcaSettings, source: str = "SFPCA model") -> SFPCA:
     """``model`` (an SFPCA fitted elsewhere, e.g. read from a file) checked to be the fit
-    that :func:`sfpca_for` with options ``sfpca`` would make on ``fd`` at its dimension:
+    that :func:`sfpca_for` with settings ``sfpca`` would make on ``fd`` at its dimension:
     same clips, same options. ValueError naming ``source`` otherwise."""
     from ..primitives import sfpca_for
     from ..sfpca import SFPCA
 
     model.check_fitted_on(fd, source)
-    wanted = sfpca_for(fd, int(model.n_components), **sfpca)
+    wanted = sfpca_for(fd, int(model.n_components), sfpca)
     differ = {
         n: (getattr(model, n), getattr(wanted, n))
         for n in SFPCA._SAVED_PARAMS
@@ -60,32 +61,46 @@ def fitted_sfpca(model: SFPCA, fd: FunctionalMotions, sfpca: Mapping[str, Any], 
     return model
 
 
+def fit_gplvm(fd: FunctionalMotions, d: int, gplvm: GplvmSettings, seed: int, labels: np.ndarray | None):
+    """The Bayesian GPLVM baseline of dimension ``d`` on ``fd`` (Sec. 3.3.5) with settings
+    ``gplvm``, initialised with ``seed``; ``labels``: those of the discriminative prior
+    (None: none)."""
+    from ..functional_gplvm import FunctionalGPLVM
+
+    return FunctionalGPLVM(
+        d,
+        n_inducing=gplvm.n_inducing,
+        max_iter=gplvm.max_iter,
+        noise_init=gplvm.noise_init,
+        discriminative_sigma2=gplvm.discriminative_sigma2,
+        random_state=seed,
+    ).fit(fd, labels)
+
+
 def method_curves(
     method: str,
     fd: FunctionalMotions,
     reference: np.ndarray,
     dims: Sequence[int],
     latent_dim: int,
-    seed: int,
-    sfpca: Mapping[str, Any],
-    gplvm: Mapping[str, Any],
+    settings: FdaSettings,
     fitted: Mapping[int, SFPCA] | None = None,
 ) -> tuple[list[tuple[float, float, float, str]], np.ndarray]:
     """([(feature error, observation error, fit seconds, note) per d in ``dims``], latent
     coordinates at ``latent_dim``) of one method. ``reference``: the clips' joint positions
-    (``fd.positions()``); ``sfpca``: options of :func:`sfpca_for`; ``gplvm``: ``n_inducing``,
-    ``max_iter``, ``noise_init``, ``discriminative_sigma2`` (None: no prior), ``n_clusters``.
-    ``fitted``: SFPCA fits already made with these options, by dimension (e.g. Table 3.1's
-    reference fit, :func:`.table3_1.fit_reference_sfpca`), used instead of fitting again;
-    their fit seconds are those of the original fit."""
+    (``fd.positions()``); ``settings``: ``seed``, ``sfpca`` (:func:`sfpca_for`) and ``gplvm``
+    (:func:`fit_gplvm`; ``discriminative_sigma2`` None: no prior). ``fitted``: SFPCA fits
+    already made with these settings, by dimension (e.g. Table 3.1's reference fit,
+    :func:`.table3_1.fit_reference_sfpca`), used instead of fitting again; their fit seconds
+    are those of the original fit."""
     # the fitting classes (scikit-learn, scipy.optimize) are imported here: Fig. 3.10's
     # rule needs only curves_table
     from ..fpca import FPCA, NormalizedFPCA
-    from ..functional_gplvm import FunctionalGPLVM
     from ..primitives import sfpca_for
     from .measures import feature_error, observation_error
 
     fitted = fitted or {}
+    seed, sfpca, gplvm = settings.seed, settings.sfpca, settings.gplvm
 
     def errors(coefs):
         return feature_error(fd, coefs), observation_error(fd, coefs, reference=reference)
@@ -101,8 +116,8 @@ def method_curves(
         return rows, model.transform(fd)[:, :latent_dim]
 
     labels_dp = None
-    if method == "gplvm" and gplvm["discriminative_sigma2"] is not None:
-        labels_dp = kmeans_labels(fd, reference, min(gplvm["n_clusters"], fd.n_clips - 1), seed)
+    if method == "gplvm" and gplvm.discriminative_sigma2 is not None:
+        labels_dp = kmeans_labels(fd, reference, min(gplvm.n_clusters, fd.n_clips - 1), seed)
     latent = None
     for d in sorted(set(dims) | {latent_dim}):
         start = time.perf_counter()
@@ -110,17 +125,10 @@ def method_curves(
             model = fitted_sfpca(fitted[d], fd, sfpca, f"SFPCA model at d = {d}")
             note = model.fit_summary()
         elif method == "sfpca":
-            model = sfpca_for(fd, d, **sfpca).fit(fd)
+            model = sfpca_for(fd, d, sfpca).fit(fd)
             note = model.fit_summary()
         else:
-            model = FunctionalGPLVM(
-                d,
-                n_inducing=gplvm["n_inducing"],
-                max_iter=gplvm["max_iter"],
-                noise_init=gplvm["noise_init"],
-                discriminative_sigma2=gplvm["discriminative_sigma2"],
-                random_state=seed,
-            ).fit(fd, labels_dp)
+            model = fit_gplvm(fd, d, gplvm, seed, labels_dp)
             note = f"{model.gplvm_.n_iter_} it, {model.gplvm_.message_[:40]}"
         fit_s = time.perf_counter() - start
         if method == "sfpca" and d in fitted:  # the time of the fit itself, made elsewhere
@@ -138,24 +146,21 @@ def reconstruction_curves(
     labels: Sequence[str],
     primitive: str,
     methods: Sequence[str],
-    dims: Sequence[int],
-    latent_dim: int,
-    seed: int,
-    sfpca: Mapping[str, Any],
-    gplvm: Mapping[str, Any],
+    settings: FdaSettings,
     sfpca_models: Sequence[SFPCA] = (),
 ) -> dict[str, np.ndarray]:
-    """The Fig. 3.10-3.11 measurements of one primitive (module docstring) for ``methods``.
-    ``dims`` above clips - 1 (the rank of the centred data) are dropped and ``latent_dim``
-    capped there; ``labels``: one per clip (Fig. 3.11 colours). ``sfpca_models``: SFPCA
-    fits of these clips with options ``sfpca`` made elsewhere (Table 3.1's reference fit),
-    used at their dimension instead of fitting again (:func:`method_curves`)."""
+    """The Fig. 3.10-3.11 measurements of one primitive (module docstring) for ``methods``,
+    at the dimensions ``settings.reconstruction.dims`` (those above clips - 1, the rank of
+    the centred data, dropped) and latent coordinates at ``settings.latent.n_components``
+    (capped there); ``labels``: one per clip (Fig. 3.11 colours). ``sfpca_models``: SFPCA
+    fits of these clips with settings ``settings.sfpca`` made elsewhere (Table 3.1's
+    reference fit), used at their dimension instead of fitting again (:func:`method_curves`)."""
     fitted = {int(m.n_components): m for m in sfpca_models}
     n_max = fd.n_clips - 1  # rank of the centred data
-    dims = sorted({d for d in dims if d <= n_max})
+    dims = sorted({d for d in settings.reconstruction.dims if d <= n_max})
     if not dims:
         raise ValueError(f"config fda.reconstruction.dims: none <= {n_max} (clips - 1 of {primitive})")
-    latent_dim = min(latent_dim, n_max)
+    latent_dim = min(settings.latent.n_components, n_max)
     reference = fd.positions()
     out = {
         "primitive": np.array(primitive),
@@ -168,7 +173,7 @@ def reconstruction_curves(
         "methods": np.array(methods, dtype=str),
     }
     for method in methods:
-        rows, latent = method_curves(method, fd, reference, dims, latent_dim, seed, sfpca, gplvm, fitted)
+        rows, latent = method_curves(method, fd, reference, dims, latent_dim, settings, fitted)
         feat, obs, seconds, notes = zip(*rows)
         out.update(
             {

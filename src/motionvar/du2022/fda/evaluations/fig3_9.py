@@ -8,11 +8,13 @@ import numpy as np
 import pandas as pd
 
 from ....claims import Claim, EvaluationResult, verdict_from_fraction
+from ..settings import FdaSettings
 
 
-def evaluate_fig3_9(rmse: pd.DataFrame, min_relative_drop: float) -> EvaluationResult:
+def evaluate_fig3_9(rmse: pd.DataFrame, settings: FdaSettings) -> EvaluationResult:
     """Fig. 3.9 from the RMSE table of :func:`motionvar.du2022.fda.choose_basis_sizes`
-    (columns primitive, behaviour, n_clips, canonical_frames, n_basis, rmse_cm, chosen).
+    (columns primitive, behaviour, n_clips, canonical_frames, n_basis, rmse_cm, chosen) made
+    with ``settings.basis``.
 
     Table: the per-primitive rows, then per behaviour the RMSE pooled over its primitives'
     clips and frames (primitive "(all)"). Figure: ``pooled`` (behaviour, n_basis,
@@ -56,5 +58,5 @@ def evaluate_fig3_9(rmse: pd.DataFrame, min_relative_drop: float) -> EvaluationR
         note="RMSE of FK joint positions between the B-spline functions evaluated at the canonical "
         "frames and the canonical (time-warped) frames themselves.",
     )
-    figure = {"pooled": pooled, "per_primitive": table, "min_relative_drop": min_relative_drop}
+    figure = {"pooled": pooled, "per_primitive": table, "min_relative_drop": settings.basis.min_relative_drop}
     return EvaluationResult(table=out, claims=[claim], figure=figure)

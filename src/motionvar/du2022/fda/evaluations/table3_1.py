@@ -7,7 +7,6 @@ from __future__ import annotations
 
 import logging
 from collections.abc import Callable, Mapping
-from typing import Any
 
 import numpy as np
 import pandas as pd
@@ -16,6 +15,7 @@ from ....claims import EvaluationResult
 from ..fpca import FPCA, WeightedFPCA
 from ..functions import FunctionalMotions
 from ..primitives import primitive_motions, sfpca_for
+from ..settings import FdaSettings, TableSettings
 from ..sfpca import SFPCA
 from .measures import observation_error
 
@@ -49,59 +49,54 @@ def smallest_dim(error_of: Callable[[int], float], d_max: int, threshold: float)
     return hi, seen
 
 
-def reference_dims(n_clips: int, reference_components: int, max_components: int) -> tuple[int, int]:
+def reference_dims(n_clips: int, table: TableSettings) -> tuple[int, int]:
     """(d_max, d_ref) of Table 3.1 for a primitive of ``n_clips`` clips: the largest
-    dimension searched and the one SFPCA's weights are optimised at, both capped at
-    clips - 1 (the rank of the centred data)."""
-    d_max = min(max_components, n_clips - 1)
-    return d_max, min(reference_components, d_max)
+    dimension searched (``table.max_components``) and the one SFPCA's weights are optimised
+    at (``table.reference_components``), both capped at clips - 1 (the rank of the centred
+    data)."""
+    d_max = min(table.max_components, n_clips - 1)
+    return d_max, min(table.reference_components, d_max)
 
 
-def fit_reference_sfpca(
-    fd: FunctionalMotions,
-    sfpca: Mapping[str, Any],
-    reference_components: int,
-    max_components: int,
-) -> SFPCA:
+def fit_reference_sfpca(fd: FunctionalMotions, settings: FdaSettings) -> SFPCA:
     """The SFPCA of Table 3.1 for one primitive: fitted at the reference dimension
-    (:func:`reference_dims`) with options ``sfpca`` of :func:`sfpca_for`. For the Fig. 3.10
-    primitives it is fitted once (rule du2022_fda_sfpca) and read by Table 3.1 and by their
-    curves, which fit SFPCA at the same dimension with the same options."""
-    _, d_ref = reference_dims(fd.n_clips, reference_components, max_components)
-    return sfpca_for(fd, d_ref, **sfpca).fit(fd)
+    (:func:`reference_dims` of ``settings.table``) with settings ``settings.sfpca``
+    (:func:`sfpca_for`). For the Fig. 3.10 primitives it is fitted once (rule
+    du2022_fda_sfpca) and read by Table 3.1 and by their curves, which fit SFPCA at the same
+    dimension with the same settings."""
+    _, d_ref = reference_dims(fd.n_clips, settings.table)
+    return sfpca_for(fd, d_ref, settings.sfpca).fit(fd)
 
 
 def evaluate_table3_1(
     dataset,
     chosen: pd.DataFrame,
-    sfpca: Mapping[str, Any],
-    reference_components: int,
-    max_components: int,
-    observation_error_cm: float,
+    settings: FdaSettings,
     sfpca_models: Mapping[str, SFPCA] | None = None,
 ) -> EvaluationResult:
     """Table 3.1 for the canonical primitives of ``dataset`` (``motionvar.io.MotionDataset``)
     with the basis sizes of ``chosen`` (the table of :func:`motionvar.du2022.fda.choose_basis_sizes`).
-    SFPCA (options ``sfpca`` of :func:`sfpca_for`) is fitted once per primitive at
-    ``reference_components`` (:func:`fit_reference_sfpca`) and its weights kept for every d
-    up to ``max_components`` (both capped at clips - 1); the latent dimension is the
-    smallest d whose mean joint error is at most ``observation_error_cm``. ``sfpca_models``:
-    such fits already made ({primitive: SFPCA}, e.g. read from the files of rule
-    du2022_fda_sfpca; checked to be of the primitive's clips and dimension); the SFPCA of a
-    primitive without one is fitted here.
+    SFPCA (settings ``settings.sfpca``, :func:`sfpca_for`) is fitted once per primitive at
+    ``settings.table.reference_components`` (:func:`fit_reference_sfpca`) and its weights
+    kept for every d up to ``table.max_components`` (both capped at clips - 1); the latent
+    dimension is the smallest d whose mean joint error is at most
+    ``table.observation_error_cm``. ``sfpca_models``: such fits already made ({primitive:
+    SFPCA}, e.g. read from the files of rule du2022_fda_sfpca; checked to be of the
+    primitive's clips and dimension); the SFPCA of a primitive without one is fitted here.
 
     Table: one row per primitive with the published numbers. Figure: ``curves``
     {(primitive, "sfpca" | "fpca"): [(d, error)]}, ``primitives``, ``threshold``. No claim:
     the table documents the models."""
+    observation_error_cm = settings.table.observation_error_cm
     rows, curves = [], {}
     for _, c in chosen.iterrows():
         motions, _ = primitive_motions(dataset, c["primitive"])
         fd = FunctionalMotions.from_motions(motions, int(c["n_basis"]))
-        d_max, d_ref = reference_dims(fd.n_clips, reference_components, max_components)
+        d_max, d_ref = reference_dims(fd.n_clips, settings.table)
         if sfpca_models and c["primitive"] in sfpca_models:
             weighted = _given_model(sfpca_models[c["primitive"]], c["primitive"], fd, d_ref)
         else:
-            weighted = fit_reference_sfpca(fd, sfpca, reference_components, max_components)
+            weighted = fit_reference_sfpca(fd, settings)
         log.info(
             "%s: SFPCA(%d) %.1f s, %s",
             c["primitive"],

@@ -9,8 +9,7 @@ the walk's hips are from the path.
 
 from __future__ import annotations
 
-from collections.abc import Mapping, Sequence
-from dataclasses import replace
+from collections.abc import Mapping
 
 import numpy as np
 import pandas as pd
@@ -19,8 +18,9 @@ from ....claims import Claim, EvaluationResult, verdict_from_fraction, verdict_t
 from ....core.joint_map import JointMap
 from ....io.dataset import MotionDataset
 from ..constraints import Constraint
-from ..morphable_graph import MorphableGraph, Path2D, WalkSettings, concatenate_steps, follow_path, synthesize_step
+from ..morphable_graph import MorphableGraph, Path2D, concatenate_steps, follow_path, synthesize_step
 from ..primitive import MotionPrimitive, primitive_clips
+from ..settings import GraphSettings, SynthesisSettings
 from ..trees import SpacePartitioningTree
 from .common import semantic_index
 
@@ -155,119 +155,110 @@ def _walk_summary(rows: list[dict], walk, floor_path: Path2D, hips: int) -> dict
     )
 
 
-def evaluate_fig4_10(
-    models: Mapping[str, MotionPrimitive],
-    dataset: MotionDataset,
-    joint_map: JointMap,
-    path: Sequence[Sequence[float]],
-    reach_primitive: str = "pick_reach",
-    reach_targets: int = 5,
-    reach_offset_cm: float = 5.0,
-    tree_samples: int = 10000,
-    beam: int = 2,
-    likelihood_weight: float = 1.0,
-    method: str = "lm",
-    max_nfev: int = 100,
-    max_steps: int = 30,
-    look_ahead: int = 2,
-    joint_steps: int | str = "all",
-    joint_method: str = "lm",
-    joint_max_nfev: int = 100,
-    compare_variants: bool = True,
-    seed: int = 0,
-    source: str = "dataset",
-) -> EvaluationResult:
-    """Fig. 4.10 with the fitted ``models`` (the walking primitives ``walk_*`` and
-    ``reach_primitive``; one k-means tree of ``tree_samples`` GMM samples each):
-
-    - left: a graph walk (edges from ``dataset``'s metadata) following the floor ``path``
-      (points (x, z), cm), at most ``max_steps`` steps;
-    - right: ``reach_targets`` targets, each a training clip's last right-hand position
-      (clips of ``reach_primitive`` in ``dataset``; ``source`` names its file in
-      errors) moved ``reach_offset_cm`` in a random direction, reached at the last frame.
-
-    Each step: tree search (beam ``beam``) then ``method`` on Eq. 4.9 (``likelihood_weight``,
-    ``max_nfev``); path following with ``look_ahead`` T and ``joint_steps`` (Algorithm 1
-    line 9: 0, N or "all"; ``joint_method``, ``joint_max_nfev``),
-    :class:`~..morphable_graph.WalkSettings`.
-    With ``compare_variants`` the walk is also made as :data:`VARIANTS` say (greedy: T = 1
-    without line 9, the earlier walk; line9: T = 1 with all steps optimised together),
-    where they differ from the configured one (table tasks ``path_<variant>``).
-    Table: one row per path step and per target with the constraint errors after the tree
-    search, after the step's own optimisation (path steps) and at the end, the distance of
-    the step's end hips from the path and the largest distance of its hips from the path
-    over its frames. The figure data hold the walk, its steps, the path, the variants'
-    walks and the reaching motions with their targets."""
-    rng = np.random.default_rng([seed, 410])
-    trees = {n: SpacePartitioningTree(m.sample(tree_samples, rng), "kmeans", seed=seed) for n, m in models.items()}
-    walk_names = [n for n in models if n.startswith("walk_")]
-    graph = MorphableGraph.from_metadata(dataset.metadata, {n: models[n] for n in walk_names})
-    floor_path = Path2D(np.asarray(path, dtype=float))
-    settings = WalkSettings(
-        max_steps=max_steps,
-        beam=beam,
-        likelihood_weight=likelihood_weight,
-        method=method,
-        max_nfev=max_nfev,
-        look_ahead=look_ahead,
-        joint_steps=joint_steps,
-        joint_method=joint_method,
-        joint_max_nfev=joint_max_nfev,
-    )
-    steps = follow_path(graph, trees, floor_path, joint_map, settings)
+def _path_walks(
+    graph: MorphableGraph, trees: Mapping[str, SpacePartitioningTree], joint_map: JointMap, st: SynthesisSettings
+) -> tuple[list, list[dict], dict, dict]:
+    """Fig. 4.10 left: the walk along ``st.path`` with ``st``, and with ``st.compare_variants``
+    the walks of :data:`VARIANTS` that differ from it. Returns (steps, table rows of every
+    walk, the walk's figure data and summary, the variants' summaries with their walks)."""
+    floor_path = Path2D(np.asarray(st.path, dtype=float))
+    steps = follow_path(graph, trees, floor_path, joint_map, st)
     hips = joint_map.index(steps[0].motion.skeleton, "hips")
     rows = _walk_rows(steps, floor_path, hips, "path")
     walk = concatenate_steps(steps)
     summary = _walk_summary(rows, walk, floor_path, hips)
     variants: dict[str, dict] = {}
     for name, (t, j) in VARIANTS.items():
-        if not compare_variants or (t, j) == (int(look_ahead), joint_steps):
+        if not st.compare_variants or (t, j) == (int(st.look_ahead), st.joint_steps):
             continue
-        v_steps = follow_path(graph, trees, floor_path, joint_map, replace(settings, look_ahead=t, joint_steps=j))
+        v_steps = follow_path(graph, trees, floor_path, joint_map, st.replace(look_ahead=t, joint_steps=j))
         v_rows = _walk_rows(v_steps, floor_path, hips, f"path_{name}")
         v_walk = concatenate_steps(v_steps)
         rows += v_rows
         variants[name] = dict(_walk_summary(v_rows, v_walk, floor_path, hips), walk=v_walk)
+    feet = {f: joint_map.index(walk.skeleton, f) for f in ("left_ankle", "right_ankle")}
+    figure = dict(walk=walk, steps=steps, path=floor_path.points, hips=hips, feet=feet)
+    return steps, rows, dict(figure, summary=summary), variants
 
-    reach = models[reach_primitive]
+
+def _reaches(
+    reach: MotionPrimitive,
+    tree: SpacePartitioningTree,
+    dataset: MotionDataset,
+    joint_map: JointMap,
+    st: SynthesisSettings,
+    rng: np.random.Generator,
+    source: str,
+) -> tuple[list[dict], list, list]:
+    """Fig. 4.10 right: ``st.reach_targets`` targets, each a training clip's last
+    :data:`REACH_JOINT` position moved ``st.reach_offset_cm`` in a random direction, reached
+    at the last frame by :func:`~..morphable_graph.synthesize_step`. Returns (table rows,
+    reaching motions, targets)."""
     hand = semantic_index(joint_map, reach.skeleton, REACH_JOINT, "graph.synthesis (reach joint)")
-    clips, _ = primitive_clips(dataset, reach_primitive, source)
-    picks = rng.choice(len(clips), size=min(reach_targets, len(clips)), replace=False)
-    reaches, targets = [], []
+    clips, _ = primitive_clips(dataset, st.reach_primitive, source)
+    picks = rng.choice(len(clips), size=min(st.reach_targets, len(clips)), replace=False)
+    rows, reaches, targets = [], [], []
     for k, c in enumerate(picks):
         direction = rng.normal(size=3)
-        target = clips[c].positions()[-1, hand] + reach_offset_cm * direction / np.linalg.norm(direction)
+        target = clips[c].positions()[-1, hand] + st.reach_offset_cm * direction / np.linalg.norm(direction)
         cons = [Constraint("position", reach.n_frames - 1, (hand,), target[None])]
-        fit, tree_err, evals = synthesize_step(
-            reach, trees[reach_primitive], cons, beam, likelihood_weight, method, max_nfev
-        )
+        fit, tree_err, evals = synthesize_step(reach, tree, cons, st)
         reaches.append(reach.to_motions(fit.latent[None])[0])
         targets.append(target)
         rows.append(
             dict(
                 task="reach",
                 item=k,
-                primitive=reach_primitive,
+                primitive=st.reach_primitive,
                 position_error_tree_cm=tree_err,
                 position_error_cm=fit.errors_after[0],
                 tree_evaluations=evals,
                 log_prob=fit.log_prob_after,
             )
         )
-    table = pd.DataFrame(rows)
-    feet = {f: joint_map.index(walk.skeleton, f) for f in ("left_ankle", "right_ankle")}
-    figure = dict(
-        walk=walk,
-        steps=steps,
-        path=floor_path.points,
-        hips=hips,
-        feet=feet,
-        reaches=reaches,
-        targets=targets,
-        reach_primitive=reach_primitive,
+    return rows, reaches, targets
+
+
+def evaluate_fig4_10(
+    models: Mapping[str, MotionPrimitive],
+    dataset: MotionDataset,
+    joint_map: JointMap,
+    settings: GraphSettings,
+    source: str = "dataset",
+) -> EvaluationResult:
+    """Fig. 4.10 with ``settings.synthesis`` (``st``) and ``settings.seed``, with the fitted
+    ``models`` (the walking primitives ``walk_*`` and ``st.reach_primitive``; one k-means
+    tree of ``st.tree_samples`` GMM samples each):
+
+    - left: a graph walk (edges from ``dataset``'s metadata) following the floor path
+      ``st.path`` (points (x, z), cm), at most ``st.max_steps`` steps (:func:`_path_walks`);
+    - right: ``st.reach_targets`` targets reached with ``st.reach_primitive`` (clips of it in
+      ``dataset``; ``source`` names its file in errors; :func:`_reaches`).
+
+    Each step: tree search (``st.beam``) then ``st.method`` on Eq. 4.9; path following with
+    the look-ahead T and Algorithm 1 line 9 (``st.look_ahead``, ``st.joint_steps``).
+    With ``st.compare_variants`` the walk is also made as :data:`VARIANTS` say (greedy:
+    T = 1 without line 9; line9: T = 1 with all steps optimised together), where they
+    differ from the configured one (table tasks ``path_<variant>``).
+    Table: one row per path step and per target with the constraint errors after the tree
+    search, after the step's own optimisation (path steps) and at the end, the distance of
+    the step's end hips from the path and the largest distance of its hips from the path
+    over its frames. The figure data hold the walk, its steps, the path, the variants'
+    walks and the reaching motions with their targets."""
+    st, seed = settings.synthesis, settings.seed
+    rng = np.random.default_rng([seed, 410])
+    trees = {n: SpacePartitioningTree(m.sample(st.tree_samples, rng), "kmeans", seed=seed) for n, m in models.items()}
+    walk_names = [n for n in models if n.startswith("walk_")]
+    graph = MorphableGraph.from_metadata(dataset.metadata, {n: models[n] for n in walk_names})
+    steps, rows, walk_figure, variants = _path_walks(graph, trees, joint_map, st)
+    summary = walk_figure.pop("summary")
+    reach_rows, reaches, targets = _reaches(
+        models[st.reach_primitive], trees[st.reach_primitive], dataset, joint_map, st, rng, source
     )
-    mode = _mode(int(look_ahead), joint_steps)
+    table = pd.DataFrame(rows + reach_rows)
+    figure = dict(walk_figure, reaches=reaches, targets=targets, reach_primitive=st.reach_primitive)
+    mode = _mode(int(st.look_ahead), st.joint_steps)
     claims = fig4_10_claims(
-        table, len(steps), summary["end_gap_cm"], reach_offset_cm, mode, summary["max_deviation_cm"], variants
+        table, len(steps), summary["end_gap_cm"], st.reach_offset_cm, mode, summary["max_deviation_cm"], variants
     )
     return EvaluationResult(table=table, claims=claims, figure=dict(figure, mode=mode, variants=variants))

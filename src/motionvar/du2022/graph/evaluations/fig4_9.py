@@ -16,6 +16,7 @@ from ....claims import Claim, EvaluationResult, verdict_threshold
 from ....core.joint_map import JointMap
 from ....io.dataset import MotionDataset
 from ..primitive import MotionPrimitive, primitive_clips
+from ..settings import GraphSettings
 from .common import semantic_index
 
 PAPER = "du2022"
@@ -25,7 +26,7 @@ SAMPLE_CHUNK = 10000  # latent vectors per key-frame pose evaluation (memory)
 
 
 def binned_kde(
-    points: np.ndarray, bounds: np.ndarray, n_grid: int = 128, bandwidth: np.ndarray | None = None
+    points: np.ndarray, bounds: np.ndarray, n_grid: int, bandwidth: np.ndarray | None = None
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """2-D kernel density on a grid (as R's MASS::kde2d, used for Fig. 4.9), by binning
     the points and smoothing with a Gaussian of Scott's bandwidth (per axis, in grid
@@ -55,7 +56,7 @@ def _lookup(dens: np.ndarray, xc: np.ndarray, yc: np.ndarray, pts: np.ndarray) -
 
 
 def coverage(
-    samples_2d: np.ndarray, training_2d: np.ndarray, level: float = 0.95, n_grid: int = 128, margin: float = 0.25
+    samples_2d: np.ndarray, training_2d: np.ndarray, level: float, n_grid: int, margin: float = 0.25
 ) -> tuple[float, float, dict]:
     """Share of training points inside the samples' ``level`` highest-density region
     (the region holding ``level`` of the samples, by the binned KDE). Returns
@@ -71,7 +72,7 @@ def coverage(
     return cov, threshold, dict(density=dens, x=xc, y=yc, bounds=bounds)
 
 
-def fig4_9_claim(table: pd.DataFrame, level: float, threshold: float = 0.9) -> Claim:
+def fig4_9_claim(table: pd.DataFrame, level: float, threshold: float) -> Claim:
     """Coverage of the training end-effector points by the samples' ``level`` density region."""
     worst = float(table["coverage"].min())
     return Claim(
@@ -97,19 +98,18 @@ def evaluate_fig4_9(
     models: Mapping[str, MotionPrimitive],
     dataset: MotionDataset,
     joint_map: JointMap,
-    n_samples: int,
-    level: float = 0.95,
-    grid: int = 128,
-    coverage_threshold: float = 0.9,
-    seed: int = 0,
+    settings: GraphSettings,
     source: str = "dataset",
 ) -> EvaluationResult:
-    """Fig. 4.9: for each case of :data:`CASES` (primitive, semantic joint), the joint's
-    last-frame position in ``n_samples`` motions sampled from ``models[primitive]``
-    against the training clips of that primitive in ``dataset`` (``source`` names its
-    file in errors), in each projection of :data:`VIEWS`: coverage of the training points
-    by the samples' ``level`` density region (binned KDE on a ``grid`` x ``grid`` grid).
-    The claim is reproduced when every coverage is >= ``coverage_threshold``."""
+    """Fig. 4.9 with ``settings.diversity`` (``d``) and ``settings.seed``: for each case of
+    :data:`CASES` (primitive, semantic joint), the joint's last-frame position in
+    ``d.n_samples`` motions sampled from ``models[primitive]`` against the training clips
+    of that primitive in ``dataset`` (``source`` names its file in errors), in each
+    projection of :data:`VIEWS`: coverage of the training points by the samples'
+    ``d.level`` density region (binned KDE on a ``d.grid`` x ``d.grid`` grid). The claim
+    is reproduced when every coverage is >= ``d.coverage_threshold``."""
+    d, seed = settings.diversity, settings.seed
+    n_samples, level, grid = d.n_samples, d.level, d.grid
     rows, panels = [], []
     for prim, sem in CASES:
         model = models[prim]
@@ -143,6 +143,6 @@ def evaluate_fig4_9(
     table = pd.DataFrame(rows)
     return EvaluationResult(
         table=table,
-        claims=[fig4_9_claim(table, level, coverage_threshold)],
+        claims=[fig4_9_claim(table, level, d.coverage_threshold)],
         figure=dict(panels=panels, n_samples=n_samples, level=level),
     )

@@ -1,6 +1,6 @@
 """The evaluations of Du 2022 ch. 5, one module per table or figure: each function takes
-the dataset, the feature joints, the trained feature space and the VAEs/CVAEs (plus plain
-options) and returns a :class:`motionvar.claims.EvaluationResult` (table, claims, the
+the data (the dataset, the feature joints, the trained feature space and the VAEs/CVAEs)
+and the section's :class:`~motionvar.du2022.style.settings.StyleSettings`, and returns a :class:`motionvar.claims.EvaluationResult` (table, claims, the
 numbers its figure draws; drawn by :mod:`motionvar.du2022.style.figures`).
 
 - :func:`evaluate_table5_1`: style distance D(m, s) (Eq. 5.12), Table 5.1.

@@ -16,6 +16,7 @@ from ..data import example_features, primitive_mask
 from ..diversity import diversity
 from ..features import FeatureLayout, features_to_positions
 from ..model import FeatureSpace, SavedVAE, sample_features
+from ..settings import StyleSettings
 
 EXAMPLE_OFFSET_CM = np.array([0.0, 0.0, -75.0])
 """Where a CVAE's style example stands: one character spacing left of the first sample."""
@@ -33,18 +34,17 @@ def evaluate_fig5_4(
     layout: FeatureLayout,
     space: FeatureSpace,
     models: Sequence[SavedVAE],
-    n_frames: int = 60,
-    n_samples: int = 6,
-    seed: int = 0,
+    settings: StyleSettings,
 ) -> EvaluationResult:
-    """``n_samples`` samples of each of ``models`` (neutral VAEs and CVAEs, by their
-    info's primitive and style; model k drawn with seed ``seed + k``). Table (rounded to
+    """``settings.figure_samples`` samples of each of ``models`` (neutral VAEs and CVAEs, by
+    their info's primitive and style; model k drawn with seed ``settings.seed + k``; clips
+    on ``settings.canonical_frames`` frames). Table (rounded to
     4 decimals): primitive, model, samples, step length mean and SD (cm) and the
     diversity measures of the samples. Figure: ``rows`` (label, samples' positions
     (n, T, J, 3), the style example's positions or None), the feature joints'
     ``parents`` and ``names``, and ``animations``: per group ("neutral", "styles") one
     (positions (T, J, 3), frame rate, label) per model. No claims."""
-    J = layout.n_joints
+    J, n_frames, n_samples, seed = layout.n_joints, settings.canonical_frames, settings.figure_samples, settings.seed
     fig_rows, table, animations = [], [], {"neutral": [], "styles": []}
     for k, (vae, shape, info) in enumerate(models):
         feats = sample_features(vae, shape, space, n_samples, seed + k)

@@ -18,6 +18,7 @@ from ..losses import style_distance
 from ..model import FeatureSpace, SavedVAE, sample_maps
 from ..networks import MotionVAE
 from ..published import table5_1
+from ..settings import StyleSettings
 
 log = logging.getLogger(__name__)
 
@@ -67,17 +68,16 @@ def evaluate_table5_1(
     space: FeatureSpace,
     neutral: SavedVAE,
     cvaes: Sequence[SavedVAE],
-    primitive: str,
-    n_frames: int = 60,
-    n_samples: int = 1000,
-    seed: int = 0,
+    settings: StyleSettings,
 ) -> EvaluationResult:
-    """Table 5.1 for ``primitive``: rows the neutral VAE and the ``cvaes`` (by their
-    info's style), columns their style examples; for neutral "we use the mean motion as
-    the style example" (the mean of the neutral clips on the ``n_frames`` timeline).
-    ``n_samples`` samples a model. Table: model, style_example_clip, D per example,
+    """Table 5.1 for ``settings.distance_primitive``: rows the neutral VAE and the ``cvaes``
+    (by their info's style), columns their style examples; for neutral "we use the mean
+    motion as the style example" (the mean of the neutral clips on the
+    ``settings.canonical_frames`` timeline). ``settings.distance_samples`` samples a model
+    (seed ``settings.seed``). Table: model, style_example_clip, D per example,
     row_minimum_at, published_row_minimum_at (rounded to 6 decimals). Figure: the
     measured and published tables. Claim: rows whose minimum is on the diagonal."""
+    primitive, n_frames, n_samples = settings.distance_primitive, settings.canonical_frames, settings.distance_samples
     models = {"neutral": (neutral[0], neutral[1])}
     _, neutral_feats = primitive_features(dataset, layout, primitive, "neutral", n_frames)
     examples = {"neutral": neutral_feats.mean(axis=0)}
@@ -86,7 +86,7 @@ def evaluate_table5_1(
         models[info["style"]] = (cvae, shape)
         examples[info["style"]] = example_features(dataset, layout, info["example"], n_frames)
         example_ids[info["style"]] = info["example"]
-    table = style_distance_matrix(models, examples, space, n_samples, seed)
+    table = style_distance_matrix(models, examples, space, n_samples, settings.seed)
     published = table5_1()
     on_diag = diagonal_minima(table)
     out = table.copy()

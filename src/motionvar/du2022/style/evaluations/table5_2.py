@@ -34,6 +34,7 @@ from ..features import FeatureLayout
 from ..model import FeatureSpace, SavedVAE, active_units, sample_features
 from ..networks import MotionVAE
 from ..published import diversity_tables
+from ..settings import StyleSettings
 
 log = logging.getLogger(__name__)
 
@@ -171,38 +172,69 @@ def evaluate_table5_2(
     layout: FeatureLayout,
     space: FeatureSpace,
     models: Sequence[SavedVAE],
-    primitives: Sequence[str],
-    n_frames: int = 60,
-    n_samples: int = 10000,
-    seed: int = 0,
-    pose_sd_tolerance: float = 0.05,
+    settings: StyleSettings,
 ) -> EvaluationResult:
-    """Diversity of each primitive's neutral clips (on the ``n_frames`` timeline), of the
-    same clips through the autoencoder and of ``n_samples`` samples of each of its
-    ``models`` (neutral VAE first, then the CVAEs, by their info's primitive and style),
-    with the latent dimensions each model uses on the training clips
+    """Diversity of each primitive of ``settings.style_primitives``: its neutral clips (on
+    the ``settings.canonical_frames`` timeline), the same clips through the autoencoder and
+    ``settings.diversity_samples`` samples of each of its ``models`` (neutral VAE first, then
+    the CVAEs, by their info's primitive and style; seeds from ``settings.seed``), with the
+    latent dimensions each model uses on the training clips
     (:func:`~..model.active_units`), its own training data's measures and its decoder's at
     the posterior means (:func:`diversity_rows`). Table (rounded to 5 decimals): primitive,
     model, n, pose_sd, v_sd, step_sd, step_mean (mean step length, cm), active_latents,
     training_n, training_* (the same measures), posterior_mean_*, example_step (a CVAE's
     style example's step length) and the published values. Figure: the unrounded table. Claims: the
-    neutral VAE's pose_SD within ``pose_sd_tolerance`` of the training data's (half credit
-    when only of the training data through the autoencoder); its step_SD below the training
-    data's; every style's pose_SD, relative to its own training data's, below the neutral
-    VAE's relative to the neutral training data's."""
+    neutral VAE's pose_SD within ``settings.pose_sd_tolerance`` of the training data's (half
+    credit when only of the training data through the autoencoder); its step_SD below the
+    training data's; every style's pose_SD, relative to its own training data's, below the
+    neutral VAE's relative to the neutral training data's."""
+    table = diversity_table(dataset, layout, space, models, settings)
+    t = table.set_index(["primitive", "model"])
+    prims = list(settings.style_primitives)
+    styles = [m for m in t.index.get_level_values("model").unique() if m not in (TRAINING, ROUND_TRIP, "neutral")]
+    note = _common_note(t, models, prims, styles, settings.diversity_samples)
+    claims = [
+        _neutral_pose_claim(t, prims, settings.pose_sd_tolerance, note),
+        _neutral_step_claim(t, prims, note),
+        _style_pose_claim(t, prims, styles, note),
+    ]
+    return EvaluationResult(table=table.round(5), claims=claims, figure={"table": table})
+
+
+def diversity_table(
+    dataset: MotionDataset,
+    layout: FeatureLayout,
+    space: FeatureSpace,
+    models: Sequence[SavedVAE],
+    settings: StyleSettings,
+) -> pd.DataFrame:
+    """The rows of :func:`diversity_rows` for every primitive of ``settings.style_primitives``
+    (primitive k's seeds from ``settings.seed + 1000 k``) with the thesis' values
+    (columns published_pose_sd, published_v_sd, published_step_sd)."""
     rows = []
-    for k, primitive in enumerate(primitives):
-        rows += diversity_rows(dataset, layout, space, models, primitive, n_frames, n_samples, seed + 1000 * k)
+    for k, primitive in enumerate(settings.style_primitives):
+        rows += diversity_rows(
+            dataset,
+            layout,
+            space,
+            models,
+            primitive,
+            settings.canonical_frames,
+            settings.diversity_samples,
+            settings.seed + 1000 * k,
+        )
     table = pd.DataFrame(rows)
     pub = diversity_tables().rename(columns={c: f"published_{c}" for c in MEASURES})
     table = table.merge(pub, on=["primitive", "model"], how="left")
     log.info("diversity:\n%s", table.round(3).to_string())
+    return table
 
-    t = table.set_index(["primitive", "model"])
-    prims = list(primitives)
-    tol = pose_sd_tolerance
-    pose = t["pose_sd"]
-    styles = [m for m in t.index.get_level_values("model").unique() if m not in (TRAINING, ROUND_TRIP, "neutral")]
+
+def _common_note(
+    t: pd.DataFrame, models: Sequence[SavedVAE], prims: Sequence[str], styles: Sequence[str], n_samples: int
+) -> str:
+    """The note every claim carries: samples, data, the models' training regimes and the
+    latent dimensions each uses."""
     regimes = "; ".join(
         dict.fromkeys(
             f"{'CVAE' if info['style'] != 'neutral' else 'VAE'}: {info['regime']}"
@@ -211,12 +243,16 @@ def evaluate_table5_2(
         )
     )
     active = ", ".join(f"{p} {m} {int(t.loc[(p, m), 'active_latents'])}" for p in prims for m in ["neutral", *styles])
-    note = (
+    return (
         f"{n_samples} samples a model; synthetic data, CMU 21-joint subset, reduced training budgets "
         f"({regimes or 'see the caption'}); latent dimensions in use (of {models[0][0].latent}): {active}."
     )
 
-    # claim 1: the neutral VAE against the training data and against its round trip
+
+def _neutral_pose_claim(t: pd.DataFrame, prims: Sequence[str], tol: float, note: str) -> Claim:
+    """Claim 1: the neutral VAE's pose_SD against the training data's and against its
+    autoencoder round trip's (half credit)."""
+    pose = t["pose_sd"]
     credit, parts = 0.0, []
     for p in prims:
         vae, train, ae = pose[(p, "neutral")], pose[(p, TRAINING)], pose[(p, ROUND_TRIP)]
@@ -235,15 +271,79 @@ def evaluate_table5_2(
         "trains a fraction of the thesis' 300 epochs). Changed from the previous run: the round-trip "
         "baseline is new (before: the training data only). " + note
     )
+    return Claim(
+        claim_id="du2022.table5_2.neutral_pose_sd_close_to_training",
+        paper="du2022",
+        source="Tables 5.2-5.3",
+        statement=f"The neutral VAE's pose_SD is close to the training data's (within {tol:.0%}).",
+        published="52.68 vs 52.86 (left), 52.88 vs 53.04 (right): within 0.4%",
+        measured="; ".join(parts),
+        verdict=verdict_from_fraction(credit, len(prims)),
+        note=claim1_note,
+        value=credit / len(prims) if prims else float("nan"),
+        bound=1.0,
+        unit="share",
+        direction=">=",
+    )
 
-    # claim 2: step_SD below the training data's
+
+def _neutral_step_claim(t: pd.DataFrame, prims: Sequence[str], note: str) -> Claim:
+    """Claim 2: the neutral VAE's step_SD below the training data's."""
     step = {p: (t.loc[(p, "neutral"), "step_sd"], t.loc[(p, TRAINING), "step_sd"]) for p in prims}
+    return Claim(
+        claim_id="du2022.table5_2.neutral_step_sd_lower_than_training",
+        paper="du2022",
+        source="Tables 5.2-5.3",
+        statement="The neutral VAE's step-length SD is lower than the training data's.",
+        published="7.66 < 10.12 (left), 7.51 < 9.98 (right)",
+        measured="; ".join(
+            f"{p}: {a:.2f} vs {b:.2f} (through the autoencoder {t.loc[(p, ROUND_TRIP), 'step_sd']:.2f}; the "
+            f"VAE's decoder at the posterior means {t.loc[(p, 'neutral'), 'posterior_mean_step_sd']:.2f})"
+            for p, (a, b) in step.items()
+        ),
+        verdict=verdict_from_fraction(sum(a < b for a, b in step.values()), len(prims)),
+        note=note,
+        value=sum(a < b for a, b in step.values()) / len(prims) if prims else float("nan"),
+        bound=1.0,
+        unit="share",
+        direction=">=",
+    )
 
-    # claim 3: each style against its own training data
+
+def _style_pose_claim(t: pd.DataFrame, prims: Sequence[str], styles: Sequence[str], note: str) -> Claim:
+    """Claim 3: each style's pose_SD relative to its own training data's below the neutral
+    VAE's relative to the neutral data's (the thesis' raw comparison reported beside it)."""
+    pose = t["pose_sd"]
     ratio = {(p, m): pose[(p, m)] / t.loc[(p, m), "training_pose_sd"] for p in prims for m in ["neutral", *styles]}
     lower_own = [(p, s) for p in prims for s in styles if ratio[(p, s)] < ratio[(p, "neutral")]]
     lower_raw = [(p, s) for p in prims for s in styles if pose[(p, s)] < pose[(p, "neutral")]]
     below_data = [(p, s) for p in prims for s in styles if pose[(p, s)] < t.loc[(p, s), "training_pose_sd"]]
+    n_style = len(prims) * len(styles)
+    ratios = "; ".join(f"{p}: " + ", ".join(f"{m} {ratio[(p, m)]:.3f}" for m in ["neutral", *styles]) for p in prims)
+    return Claim(
+        claim_id="du2022.table5_2.style_pose_sd_lower_than_neutral",
+        paper="du2022",
+        source="Tables 5.2-5.3",
+        statement="Every stylistic model's pose_SD is lower than the neutral VAE's (each relative to its own "
+        "training data's).",
+        published="12 of 12 (6 styles x 2 primitives)",
+        measured=(
+            f"{len(lower_own)} of {n_style} relative to their own training data (pose_SD / training "
+            f"data's: {ratios}); as printed, against the neutral VAE's pose_SD: {len(lower_raw)} of "
+            f"{n_style}; CVAE below its style's own clips: {len(below_data)} of {n_style}"
+        ),
+        verdict=verdict_from_fraction(len(lower_own), n_style),
+        note=_style_pose_note(t, prims, styles, note),
+        value=len(lower_own) / n_style if n_style else float("nan"),
+        bound=1.0,
+        unit="share",
+        direction=">=",
+    )
+
+
+def _style_pose_note(t: pd.DataFrame, prims: Sequence[str], styles: Sequence[str], note: str) -> str:
+    """Claim 3's note: which styles' own clips vary more than the neutral ones, the verdict
+    rule, where the step-length variance goes (:func:`_step_note`) and the common note."""
     data_above = [
         f"{p} " + ", ".join(f"{s} {t.loc[(p, s), 'training_pose_sd']:.1f}" for s in above)
         for p in prims
@@ -253,9 +353,7 @@ def evaluate_table5_2(
             ]
         )
     ]
-    n_style = len(prims) * len(styles)
-    ratios = "; ".join(f"{p}: " + ", ".join(f"{m} {ratio[(p, m)]:.3f}" for m in ["neutral", *styles]) for p in prims)
-    claim3_note = (
+    return (
         "Eq. 5.13 pools every frame, so pose_SD is dominated by the within-clip gait motion and tracks the size of a "
         "style's movement: "
         + (
@@ -268,57 +366,3 @@ def evaluate_table5_2(
         "keeps of the neutral data's (pose_SD / own training data's). Changed from the previous run: the verdict "
         "counted the raw comparison with the neutral VAE. " + _step_note(t, prims, styles) + " " + note
     )
-    claims = [
-        Claim(
-            claim_id="du2022.table5_2.neutral_pose_sd_close_to_training",
-            paper="du2022",
-            source="Tables 5.2-5.3",
-            statement=f"The neutral VAE's pose_SD is close to the training data's (within {tol:.0%}).",
-            published="52.68 vs 52.86 (left), 52.88 vs 53.04 (right): within 0.4%",
-            measured="; ".join(parts),
-            verdict=verdict_from_fraction(credit, len(prims)),
-            note=claim1_note,
-            value=credit / len(prims) if prims else float("nan"),
-            bound=1.0,
-            unit="share",
-            direction=">=",
-        ),
-        Claim(
-            claim_id="du2022.table5_2.neutral_step_sd_lower_than_training",
-            paper="du2022",
-            source="Tables 5.2-5.3",
-            statement="The neutral VAE's step-length SD is lower than the training data's.",
-            published="7.66 < 10.12 (left), 7.51 < 9.98 (right)",
-            measured="; ".join(
-                f"{p}: {a:.2f} vs {b:.2f} (through the autoencoder {t.loc[(p, ROUND_TRIP), 'step_sd']:.2f}; the "
-                f"VAE's decoder at the posterior means {t.loc[(p, 'neutral'), 'posterior_mean_step_sd']:.2f})"
-                for p, (a, b) in step.items()
-            ),
-            verdict=verdict_from_fraction(sum(a < b for a, b in step.values()), len(prims)),
-            note=note,
-            value=sum(a < b for a, b in step.values()) / len(prims) if prims else float("nan"),
-            bound=1.0,
-            unit="share",
-            direction=">=",
-        ),
-        Claim(
-            claim_id="du2022.table5_2.style_pose_sd_lower_than_neutral",
-            paper="du2022",
-            source="Tables 5.2-5.3",
-            statement="Every stylistic model's pose_SD is lower than the neutral VAE's (each relative to its own "
-            "training data's).",
-            published="12 of 12 (6 styles x 2 primitives)",
-            measured=(
-                f"{len(lower_own)} of {n_style} relative to their own training data (pose_SD / training "
-                f"data's: {ratios}); as printed, against the neutral VAE's pose_SD: {len(lower_raw)} of "
-                f"{n_style}; CVAE below its style's own clips: {len(below_data)} of {n_style}"
-            ),
-            verdict=verdict_from_fraction(len(lower_own), n_style),
-            note=claim3_note,
-            value=len(lower_own) / n_style if n_style else float("nan"),
-            bound=1.0,
-            unit="share",
-            direction=">=",
-        ),
-    ]
-    return EvaluationResult(table=table.round(5), claims=claims, figure={"table": table})

@@ -1,4 +1,4 @@
-"""Rule style_training_curves (Du 2022 Sec. 5.4.1): the training loss per epoch of the
+"""Rule du2022_style_training_curves (Du 2022 Sec. 5.4.1): the training loss per epoch of the
 autoencoder, the neutral VAEs and the CVAEs."""
 
 

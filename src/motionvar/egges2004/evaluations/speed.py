@@ -6,7 +6,6 @@ timed per stage.
 from __future__ import annotations
 
 import time
-from dataclasses import dataclass
 
 import numpy as np
 import pandas as pd
@@ -16,12 +15,11 @@ from ..balance import synthesize_balance
 from ..database import IdleDatabase
 from ..pca import PosturePCA
 from ..pipeline import IdleModel
+from ..settings import Egges2004Settings
 from .common import PAPER
 
 
-def generation_seconds(
-    db: IdleDatabase, pca: PosturePCA, n_frames: int, seed: int, repeats: int = 3
-) -> dict[str, float]:
+def generation_seconds(db: IdleDatabase, pca: PosturePCA, n_frames: int, seed: int, repeats: int) -> dict[str, float]:
     """Best-of-``repeats`` wall time (s) to generate ``n_frames`` frames of idle motion,
     per stage: balance shifting (Sec. 5.4), small variations (Sec. 6), PC values ->
     joint rotations and root translation (Sec. 3.2, the per-frame exponential maps), and
@@ -43,17 +41,11 @@ def generation_seconds(
     return best
 
 
-@dataclass(frozen=True)
-class SpeedParams:
-    sequence_s: float = 300.0
-    repeats: int = 3
-    subjects: int = 3
-
-
-def speed(model: IdleModel, params: SpeedParams, seed: int) -> EvaluationResult:
+def speed(model: IdleModel, settings: Egges2004Settings) -> EvaluationResult:
     """Frames generated per second (balance + variations + PC -> rotations) against the
-    playback rate, per subject. Returns the table, the claim and, for the figure,
-    ``sequence_s``."""
+    playback rate, per subject (``settings.speed``, ``settings.seed``). Returns the table,
+    the claim and, for the figure, ``sequence_s``."""
+    params, seed = settings.speed, settings.seed
     rows = []
     for s in list(model.databases)[: params.subjects or None]:
         db = model.databases[s]

@@ -1,13 +1,13 @@
-"""Rule style_rig (Du 2022 ch. 5): what decoding the style models into joint rotations on the
-dataset's rig needs and the models do not hold: the rig's mean skeleton, its feature layout
-(Sec. 5.2) and each primitive's real-time frame rate (motionvar.du2022.style.generate),
-for the `motionvar du2022 style` command."""
+"""Rule du2022_style_rig (Du 2022 ch. 5): what decoding the style models into joint
+rotations on the dataset's rig needs and the models do not hold: the rig's mean skeleton,
+its feature layout (Sec. 5.2) and each primitive's real-time frame rate
+(motionvar.du2022.style.generate), for the `motionvar du2022 style` command."""
 
 
 def main(snakemake) -> None:
     import logging
 
-    from _style import load_inputs
+    from _style import load_inputs, load_settings
 
     from motionvar.core import cmu_joint_map
     from motionvar.du2022.style.generate import fit_rig, save_rig
@@ -15,9 +15,8 @@ def main(snakemake) -> None:
 
     dataset, _, _ = load_inputs(snakemake)
     path = snakemake.params.joint_map
-    rig = fit_rig(
-        dataset, load_joint_map(path) if path else cmu_joint_map(), snakemake.params.options["canonical_frames"]
-    )
+    joint_map = load_joint_map(path) if path else cmu_joint_map()
+    rig = fit_rig(dataset, joint_map, load_settings(snakemake).canonical_frames)
     save_rig(snakemake.output.model, rig)
     logging.info(
         "%d joints, %d feature joints; fps per primitive %s", rig.skeleton.n_joints, rig.layout.n_joints, rig.fps

@@ -7,8 +7,6 @@ are defined here.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 import numpy as np
 import pandas as pd
 from scipy.signal import welch
@@ -24,6 +22,7 @@ from ..categories import support_ratio
 from ..database import Recording
 from ..engine import generate_idle_pcs
 from ..pipeline import IdleModel
+from ..settings import Egges2004Settings
 from .common import PAPER, perlin_sds, perlin_sequence, subject_rng
 
 FEATURE_SETS = ("all", "dynamics")
@@ -42,8 +41,8 @@ def window_features(
     fps: float,
     window_s: float,
     n_pcs: int,
+    margin: float,
     feature_set: str = "all",
-    margin: float = 0.1,
     n_spectral_pcs: int = 3,
 ) -> np.ndarray:
     """(n_windows, F) features of non-overlapping windows of an idle sequence.
@@ -77,7 +76,7 @@ def window_features(
     return np.concatenate([w.mean(axis=1), lam.mean(axis=1, keepdims=True), shares, *dynamics], axis=1)
 
 
-def make_identifier(seed: int = 0) -> Pipeline:
+def make_identifier(seed: int) -> Pipeline:
     """Standardised multinomial logistic regression naming the subject of a window."""
     return make_pipeline(StandardScaler(), LogisticRegression(max_iter=5000, random_state=seed))
 
@@ -86,52 +85,28 @@ REC, GEN, PERLIN = "recorded (held out)", "generated (Egges 2004)", "Perlin nois
 IDENTIFICATION_SOURCES = (REC, GEN, PERLIN)
 
 
-@dataclass(frozen=True)
-class IdentificationParams:
-    window_s: float = 20.0
-    feature_pcs: int = 8
-    generated_s: float = 120.0
-    perlin_frequency_hz: float = 0.5
-    alpha: float = 0.01
-
-
 def identification(
     model: IdleModel,
     recordings: dict[str, list[Recording]],
     held_out: dict[str, list[Recording]],
     joint_map: JointMap,
-    params: IdentificationParams,
-    margin: float,
-    seed: int,
+    settings: Egges2004Settings,
 ) -> EvaluationResult:
     """Train a classifier on windows of each subject's training recordings; name the
     subject of windows of held-out recordings, of generated idle motion and of the
-    Perlin baseline. Returns the accuracy table, the claim and, for the figure,
-    ``labels`` and ``confusion`` (the confusion matrix of the generated windows, all
-    features) and ``window_s``."""
+    Perlin baseline (``settings.identification``, ``settings.perlin_frequency_hz``,
+    ``settings.analysis.support_margin``, ``settings.seed``). Returns the accuracy table,
+    the claim and, for the figure, ``labels`` and ``confusion`` (the confusion matrix of
+    the generated windows, all features) and ``window_s``."""
+    params = settings.identification
     subjects = list(model.databases)
     fps = model.databases[subjects[0]].fps
-    n_gen = int(round(params.generated_s * fps)) + 1
-    sds = perlin_sds(model, recordings)
-    sequences: dict[str, list[tuple[str, np.ndarray, np.ndarray]]] = {k: [] for k in IDENTIFICATION_SOURCES}
-    for s in subjects:
-        db, pca, sk = model.databases[s], model.pca, model.skeletons[s]
-        sequences[REC] += [(s, r.pcs, r.support) for r in held_out[s]]
-        gen, _ = generate_idle_pcs(db, n_gen, subject_rng(seed, s, "identification"))
-        per = perlin_sequence(
-            model,
-            recordings[s],
-            sds,
-            params.perlin_frequency_hz,
-            n_gen,
-            int(subject_rng(seed, s, "perlin").integers(2**31)),
-        )
-        for name, pcs in ((GEN, gen), (PERLIN, per)):
-            sequences[name].append((s, pcs, support_ratio(pca.reconstruct(pcs, sk, fps), joint_map)))
+    sequences = _test_sequences(model, recordings, held_out, joint_map, settings)
 
     def features(items, fs):
         blocks = [
-            (window_features(p, lam, fps, params.window_s, params.feature_pcs, fs, margin), s) for s, p, lam in items
+            (window_features(p, lam, fps, params.window_s, params.feature_pcs, settings.analysis.support_margin, fs), s)
+            for s, p, lam in items
         ]
         return np.concatenate([b for b, _ in blocks]), np.concatenate([[s] * len(b) for b, s in blocks])
 
@@ -139,7 +114,7 @@ def identification(
     chance = 1.0 / len(subjects)
     for fs in FEATURE_SETS:
         X, y = features([(s, r.pcs, r.support) for s in subjects for r in recordings[s]], fs)
-        clf = make_identifier(seed).fit(X, y)
+        clf = make_identifier(settings.seed).fit(X, y)
         for source, items in sequences.items():
             Xs, ys = features(items, fs)
             pred = clf.predict(Xs)
@@ -158,6 +133,47 @@ def identification(
             if fs == "all" and source == GEN:
                 confusion = {"labels": subjects, "confusion": confusion_matrix(ys, pred, labels=subjects)}
     table = pd.DataFrame(rows)
+    return EvaluationResult(table, [_claim(table, settings)], {**confusion, "window_s": params.window_s})
+
+
+def _test_sequences(
+    model: IdleModel,
+    recordings: dict[str, list[Recording]],
+    held_out: dict[str, list[Recording]],
+    joint_map: JointMap,
+    settings: Egges2004Settings,
+) -> dict[str, list[tuple[str, np.ndarray, np.ndarray]]]:
+    """Per source (IDENTIFICATION_SOURCES), the (subject, PC values, support ratio) of every
+    sequence to identify: the held-out recordings, ``generated_s`` of generated idle motion
+    and of the Perlin baseline per subject."""
+    subjects = list(model.databases)
+    fps = model.databases[subjects[0]].fps
+    n_gen = int(round(settings.identification.generated_s * fps)) + 1
+    sds = perlin_sds(model, recordings)
+    sequences: dict[str, list[tuple[str, np.ndarray, np.ndarray]]] = {k: [] for k in IDENTIFICATION_SOURCES}
+    for s in subjects:
+        db, pca, sk = model.databases[s], model.pca, model.skeletons[s]
+        sequences[REC] += [(s, r.pcs, r.support) for r in held_out[s]]
+        gen, _ = generate_idle_pcs(db, n_gen, subject_rng(settings.seed, s, "identification"))
+        per = perlin_sequence(
+            model,
+            recordings[s],
+            sds,
+            settings.perlin_frequency_hz,
+            n_gen,
+            int(subject_rng(settings.seed, s, "perlin").integers(2**31)),
+        )
+        for name, pcs in ((GEN, gen), (PERLIN, per)):
+            sequences[name].append((s, pcs, support_ratio(pca.reconstruct(pcs, sk, fps), joint_map)))
+    return sequences
+
+
+def _claim(table: pd.DataFrame, settings: Egges2004Settings) -> Claim:
+    """Sec. 8's claim from the accuracy table: generated windows named above chance and at
+    least as well as the Perlin baseline's."""
+    params = settings.identification
+    subjects = int(table["subjects"].iloc[0])
+    chance = 1.0 / subjects
 
     def get(source, fs, col="accuracy"):
         return float(table.loc[(table.source == source) & (table.features == fs), col].iloc[0])
@@ -176,7 +192,7 @@ def identification(
     )
     if verdict == "partial":
         note += " Generated motion is recognised above chance but not better than the Perlin baseline."
-    claim = Claim(
+    return Claim(
         claim_id=f"{PAPER}.sec8.generated_idle_identifies_person",
         paper=PAPER,
         source="Sec. 5.6, 8",
@@ -184,7 +200,7 @@ def identification(
         published="informal viewing test: 'in general, test subjects could recognise the person' (no number)",
         measured=(
             f"accuracy {gen:.2f} on generated windows (chance {chance:.2f}, p = {p_gen:.1e}, "
-            f"{len(subjects)} subjects); Perlin baseline {per:.2f}; held-out recordings {rec:.2f}"
+            f"{subjects} subjects); Perlin baseline {per:.2f}; held-out recordings {rec:.2f}"
         ),
         verdict=verdict,
         note=note,
@@ -195,4 +211,3 @@ def identification(
         unit="share",
         direction=">=",
     )
-    return EvaluationResult(table, [claim], {**confusion, "window_s": params.window_s})

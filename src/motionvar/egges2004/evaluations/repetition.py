@@ -5,8 +5,6 @@ windows of generated, recorded, looped and Perlin sequences.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 import numpy as np
 import pandas as pd
 
@@ -15,6 +13,7 @@ from ..baselines import loop_frames
 from ..database import Recording
 from ..engine import generate_idle_pcs
 from ..pipeline import IdleModel
+from ..settings import Egges2004Settings, RepetitionSettings
 from .common import PAPER, perlin_sds, perlin_sequence, subject_rng
 
 
@@ -51,18 +50,6 @@ def window_best_match(x: np.ndarray, window: int, stride: int, chunk: int = 512)
     return best
 
 
-@dataclass(frozen=True)
-class RepetitionParams:
-    sequence_s: float = 300.0
-    window_s: float = 10.0
-    stride_s: float = 0.1
-    fps: float = 20.0
-    loop_clip_s: float = 30.0
-    perlin_frequency_hz: float = 0.5
-    tolerance: float = 0.1
-    subjects: int = 0
-
-
 GEN_VAR, GEN_VAR_CUT, REC_VAR, LOOP_VAR = (
     "generated variations (Sec. 6)",
     "generated variations, cut to the recorded length",
@@ -79,36 +66,24 @@ REPETITION_SOURCES = (GEN_VAR, GEN_VAR_CUT, REC_VAR, LOOP_VAR, GEN_IDLE, REC_IDL
 
 
 def repetition(
-    model: IdleModel, recordings: dict[str, list[Recording]], params: RepetitionParams, seed: int
+    model: IdleModel, recordings: dict[str, list[Recording]], settings: Egges2004Settings
 ) -> EvaluationResult:
     """Best-match normalised cross-correlation of non-overlapping windows (the varied PCs)
-    for generated and recorded sequences and loops. Generated, looped and Perlin
+    for generated and recorded sequences and loops (``settings.repetition``,
+    ``settings.perlin_frequency_hz``, ``settings.seed``). Generated, looped and Perlin
     sequences last ``sequence_s``; recorded ones as long as the training recordings allow,
     and the generated variations are also measured cut to that length (a longer sequence
     offers more candidates, hence higher best matches). Returns the per-subject table,
     the claim and, for the figure, ``pooled`` (the best-match values per source, over all
     subjects), ``sequence_s``, ``window_s`` and ``n_pcs`` (the varied PCs compared)."""
+    params = settings.repetition
     subjects = list(model.databases)[: params.subjects or None]
     sds = perlin_sds(model, recordings)
     rows, pooled = [], {k: [] for k in REPETITION_SOURCES}
     for s in subjects:
-        db, recs = model.databases[s], recordings[s]
+        db = model.databases[s]
         fps, P = db.fps, db.variations.pcs.size
-        n = int(round(params.sequence_s * fps)) + 1
-        rng = subject_rng(seed, s, "repetition")
-        rests = [r.pcs[a:b, :P] - r.pcs[a:b, :P].mean(axis=0) for r in recs for a, b in db.segments[r.name][0]]
-        recorded_rests = np.concatenate(rests)[:n]
-        generated = db.variations.generate(n, fps, rng)
-        seqs = {
-            GEN_VAR: generated,
-            GEN_VAR_CUT: generated[: len(recorded_rests)],
-            REC_VAR: recorded_rests,
-            LOOP_VAR: loop_frames(max(rests, key=len), n),
-            GEN_IDLE: generate_idle_pcs(db, n, rng)[0],
-            REC_IDLE: np.concatenate([r.pcs for r in recs])[:n],
-            LOOP_IDLE: loop_frames(recs[0].pcs[: int(round(params.loop_clip_s * fps))], n),
-            PERLIN_IDLE: perlin_sequence(model, recs, sds, params.perlin_frequency_hz, n, int(rng.integers(2**31))),
-        }
+        seqs = _sequences(model, s, recordings[s], sds, settings)
         step = max(1, int(round(fps / params.fps)))
         window = int(round(params.window_s * fps / step))
         stride = max(1, int(round(params.stride_s * fps / step)))
@@ -129,6 +104,39 @@ def repetition(
             )
     table = pd.DataFrame(rows)
     pooled = {k: np.concatenate(v) for k, v in pooled.items()}
+    n_pcs = next(iter(model.databases.values())).variations.pcs.size
+    figure = {"pooled": pooled, "sequence_s": params.sequence_s, "window_s": params.window_s, "n_pcs": n_pcs}
+    return EvaluationResult(table, [_claim(table, pooled, params, len(subjects))], figure)
+
+
+def _sequences(
+    model: IdleModel, s: str, recs: list[Recording], sds: np.ndarray, settings: Egges2004Settings
+) -> dict[str, np.ndarray]:
+    """Subject ``s``'s sequences of every source (REPETITION_SOURCES), PC values over frames:
+    generated, looped and Perlin ones of ``sequence_s``, recorded ones cut to it."""
+    params = settings.repetition
+    db = model.databases[s]
+    fps, P = db.fps, db.variations.pcs.size
+    n = int(round(params.sequence_s * fps)) + 1
+    rng = subject_rng(settings.seed, s, "repetition")
+    rests = [r.pcs[a:b, :P] - r.pcs[a:b, :P].mean(axis=0) for r in recs for a, b in db.segments[r.name][0]]
+    recorded_rests = np.concatenate(rests)[:n]
+    generated = db.variations.generate(n, fps, rng)
+    return {
+        GEN_VAR: generated,
+        GEN_VAR_CUT: generated[: len(recorded_rests)],
+        REC_VAR: recorded_rests,
+        LOOP_VAR: loop_frames(max(rests, key=len), n),
+        GEN_IDLE: generate_idle_pcs(db, n, rng)[0],
+        REC_IDLE: np.concatenate([r.pcs for r in recs])[:n],
+        LOOP_IDLE: loop_frames(recs[0].pcs[: int(round(params.loop_clip_s * fps))], n),
+        PERLIN_IDLE: perlin_sequence(model, recs, sds, settings.perlin_frequency_hz, n, int(rng.integers(2**31))),
+    }
+
+
+def _claim(table: pd.DataFrame, pooled: dict[str, np.ndarray], params: RepetitionSettings, n_subjects: int) -> Claim:
+    """Sec. 6.2's claim from the pooled best matches: generated variations repeat less than
+    a loop and, at the recorded length, no more than the recorded rest variations."""
     med = {k: float(np.median(v)) if len(v) else np.nan for k, v in pooled.items()}
     gen, cut, rec, loop = med[GEN_VAR], med[GEN_VAR_CUT], med[REC_VAR], med[LOOP_VAR]
     measured_rec = table[(table.source == REC_VAR) & (table.windows > 0)]
@@ -139,7 +147,7 @@ def repetition(
     else:
         verdict = verdict_threshold(cut, rec, "<=", params.tolerance)
     rec_s = measured_rec["seconds"].mean()
-    claim = Claim(
+    return Claim(
         claim_id=f"{PAPER}.sec6.variations_show_little_repetition",
         paper=PAPER,
         source="Sec. 6.2",
@@ -164,10 +172,7 @@ def repetition(
             "non-overlapping window of the same sequence (1 = an exact repeat). Reproduced = generated variations "
             "repeat less than a loop and, at the same length, no more than the recorded resting variations "
             f"(partial: within {params.tolerance:.0%}, or no recorded rest long enough to compare). "
-            f"{len(subjects)} subjects, {len(measured_rec)} of them with recorded resting segments of at least two "
+            f"{n_subjects} subjects, {len(measured_rec)} of them with recorded resting segments of at least two "
             f"{params.window_s:g}-s windows (the others are left out of the recorded comparison)."
         ),
     )
-    n_pcs = next(iter(model.databases.values())).variations.pcs.size
-    figure = {"pooled": pooled, "sequence_s": params.sequence_s, "window_s": params.window_s, "n_pcs": n_pcs}
-    return EvaluationResult(table, [claim], figure)

@@ -1,0 +1,111 @@
+"""Ma2010Settings: config section ``ma2010``, every option of the Ma et al. 2010 rules (the
+walking cycles, the model of Sec. 5-6 and the evaluations Fig. 3, 6, 7b, 8, Sec. 7.4 and
+Sec. 8). The one place their defaults are written: the paper's value where it gives one
+(cited per field), else the project's choice; ``config/schema.yaml`` repeats them."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from ..core.settings import Settings
+
+STRUCTURES = ("auto", "lower_first", "upper_first")
+VARIOGRAM_MODELS = ("linear", "power", "exponential", "gaussian", "spherical", "auto")
+VARIOGRAM_SCALES = ("sd", "none")
+ROOT_GROUPS = ("legs", "upper_body")
+LOO_UNITS = ("walk", "cycle")
+STRIDE_REFERENCES = ("validation", "style")
+XI_DRAWS = ("sequence", "clip")
+LANDING_RULES = ("significant_maximum", "first_maximum")
+
+
+@dataclass(frozen=True)
+class Ma2010Settings(Settings):
+    """Options of the Ma 2010 rules (config section ``ma2010``; meanings in config/schema.yaml).
+
+    Walking cycles (rule ma2010_clips, Sec. 4):
+        walk_styles, walk_variants: metadata values of the walks used as examples (empty: all).
+        n_frames: frames of the common timeline (Sec. 4.2; the paper gives none).
+        keyframe_prominence, keyframe_min_separation_s: key frames (extrema of S_M(t), Eq. 4).
+    Model (Sec. 5-6; every rule that fits one):
+        structure: "auto" is Fig. 5's rule (lower-first when D_l >= D_u, Eq. 3).
+        variogram_model: "auto" picks the variogram by Akaike's criterion per joint group
+            (Sec. 6.1 inherits the variogram from MK05 and does not say which).
+        variogram_scale: "sd" weighs each output dimension by 1/its variance in the
+            semivariance (the paper gives no units; "none": raw squares).
+        root_group: joint group of the root rotation (Fig. 4 does not place it; "legs",
+            with "upper_body" as Fig. 6's ablation).
+    Evaluations:
+        seed: every random draw (xi, fold subsets, baselines).
+        fig3_phase_sd, fig3_max_clips: Fig. 3 claim bound (ours; the paper gives none) and clips.
+        loo_max_clips: Fig. 6 held-out cycles; 0 = every one (Sec. 7.1: "repeated until each
+            example motion clip ... has been used once as the test data").
+        loo_unit: Fig. 6 fold: the held-out cycle's whole walk ("cycle": it alone).
+        fig6_stride_reference: Fig. 6 compares with the validation clip through the same
+            measure (Fig. 6 caption: "the stride length of the validation walking clips").
+        reliability_grid, reliability_margin: Fig. 7b grid.
+        fig8_variants: Fig. 8a shows five clips at one style.
+        spread_ratio_bounds: Fig. 8 claim, "of the same order" (ours; the paper gives none).
+        comparison_examples: Sec. 7.4 uses the five example clips of Fig. 1.
+        comparison_sequences: Sec. 7.4 compares three long sequences.
+        comparison_seconds, perlin_amplitude_rad, perlin_frequency_hz, gplvm_latent_dim,
+        gplvm_iterations, gplvm_frame_step, dbn_max_parents, contact_height_cm,
+        comparison_xi, comparison_landing, discontinuity_factor, animation_seconds:
+            Sec. 7.4 (the paper gives no number; Perlin's parameters are "manually tuned").
+        timing_seconds, timing_repeats: Sec. 8 timing (the paper: 0.15 s per s, on average).
+    """
+
+    SECTION = "ma2010"
+    #: the keys of the walking cycles (rule ma2010_clips), saved with them
+    CLIP_KEYS = ("walk_styles", "walk_variants", "n_frames", "keyframe_prominence", "keyframe_min_separation_s")
+
+    seed: int = 0
+    walk_styles: tuple[str, ...] = ("neutral",)
+    walk_variants: tuple[str, ...] = ("forward",)
+    n_frames: int = 64
+    keyframe_prominence: float = 0.1
+    keyframe_min_separation_s: float = 0.1
+    structure: str = "auto"
+    variogram_model: str = "auto"
+    variogram_scale: str = "sd"
+    root_group: str = "legs"
+    fig3_phase_sd: float = 0.05
+    fig3_max_clips: int = 0
+    loo_max_clips: int = 0
+    loo_unit: str = "walk"
+    fig6_stride_reference: str = "validation"
+    reliability_grid: int = 15
+    reliability_margin: float = 0.5
+    fig8_variants: int = 5
+    spread_ratio_bounds: tuple[float, float] = (0.33, 3.0)
+    comparison_examples: int = 5
+    comparison_seconds: float = 30.0
+    comparison_sequences: int = 3
+    perlin_amplitude_rad: float = 0.1
+    perlin_frequency_hz: float = 1.0
+    gplvm_latent_dim: int = 3
+    gplvm_iterations: int = 200
+    gplvm_frame_step: int = 4
+    dbn_max_parents: int = 8
+    contact_height_cm: float = 2.0
+    comparison_xi: str = "sequence"
+    comparison_landing: str = "significant_maximum"
+    discontinuity_factor: float = 1.5
+    animation_seconds: float = 3.0
+    timing_seconds: float = 60.0
+    timing_repeats: int = 3
+
+    def __post_init__(self) -> None:
+        choices = {
+            "structure": STRUCTURES,
+            "variogram_model": VARIOGRAM_MODELS,
+            "variogram_scale": VARIOGRAM_SCALES,
+            "root_group": ROOT_GROUPS,
+            "loo_unit": LOO_UNITS,
+            "fig6_stride_reference": STRIDE_REFERENCES,
+            "comparison_xi": XI_DRAWS,
+            "comparison_landing": LANDING_RULES,
+        }
+        for key, allowed in choices.items():
+            if getattr(self, key) not in allowed:
+                raise ValueError(f"{key} must be one of {list(allowed)}; got {getattr(self, key)!r}")

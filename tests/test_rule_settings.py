@@ -1,0 +1,62 @@
+"""What each rule passes is its config section whole: every rule with a ``settings`` param gets
+exactly one merged, validated config section, which its settings class rebuilds without
+dropping or renaming a key; every evaluation rule is one registered EvaluationSpec, listed
+by name in EVALUATION_NAMES, and passes its spec's section."""
+
+import tempfile
+from pathlib import Path
+
+import pytest
+
+from motionvar.config_sections import SECTIONS, settings_class
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+@pytest.fixture(scope="module", params=["config.yaml", "ci.yaml"])
+def workflow(request):
+    """The parsed workflow (rules, config, globals) of a shipped config, without running it."""
+    from snakemake.api import SnakemakeApi
+    from snakemake.settings.types import ConfigSettings, OutputSettings, ResourceSettings
+
+    configfiles = [] if request.param == "config.yaml" else [ROOT / "config" / request.param]
+    with SnakemakeApi(OutputSettings(quiet={"all"})) as api:
+        wf = api.workflow(
+            resource_settings=ResourceSettings(cores=1),
+            config_settings=ConfigSettings(configfiles=configfiles),
+            snakefile=ROOT / "Snakefile",
+            workdir=Path(tempfile.mkdtemp()),
+        )
+        yield wf._workflow
+
+
+def param_names(rule):
+    return list(getattr(rule.params, "_names", {}))
+
+
+def test_every_settings_param_is_a_whole_section(workflow):
+    config = workflow.config
+    checked = []
+    for rule in workflow.rules:
+        for name in param_names(rule):
+            value = getattr(rule.params, name)
+            if name != "settings" and not (isinstance(value, dict) and name in SECTIONS):
+                continue
+            sections = [s for s in SECTIONS if s in config and config[s] == value]
+            assert sections, f"rule {rule.name}: params.{name} is not one whole config section"
+            built = settings_class(sections[0]).from_dict(value)
+            assert built.to_dict() == value, f"rule {rule.name}: {sections[0]} does not round-trip"
+            checked.append(rule.name)
+    assert "dataset_overview" in checked
+
+
+def test_every_evaluation_rule_is_one_listed_spec(workflow):
+    g = workflow.globals
+    listed = [n for names in g["EVALUATION_NAMES"].values() for n in names]
+    assert sorted(listed) == sorted(g["EVALUATIONS"]), "EVALUATION_NAMES and the registered specs differ"
+    rules = {r.name: r for r in workflow.rules}
+    for name, spec in g["EVALUATIONS"].items():
+        assert name.startswith(spec.paper + "_"), f"evaluation {name}: rule names are <paper>_<evaluation>"
+        rule = rules[name]
+        assert rule.params.settings == workflow.config[spec.section], f"rule {name} must pass config.{spec.section}"
+        assert "options" not in param_names(rule), f"rule {name} copies config keys by hand (params.options)"
