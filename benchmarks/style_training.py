@@ -133,8 +133,9 @@ def main() -> None:
     )
 
     from motionvar.du2022.style import MotionVAE
+    from motionvar.du2022.style.networks import VAE_HIDDEN
 
-    vae = MotionVAE(256 * (T // 2)).eval()
+    vae = MotionVAE(256 * (T // 2), VAE_HIDDEN, VaeSettings().latent).eval()
     n = args.samples
     t_feat = timed(lambda: sample_features(vae, (256, T // 2), space, n, seed=0), args.repeats)
     feats = sample_features(vae, (256, T // 2), space, n, seed=0)

@@ -12,9 +12,14 @@ from rule_scripts import FakeSnakemake, Named, run
 
 from motionvar.applicability import Need, applicability_table, unmet
 from motionvar.claims import Claim, NotApplicable, evaluation_source, not_applicable_result
+from motionvar.du2022.fda.settings import FdaSettings
+from motionvar.du2022.graph.settings import GraphSettings
 from motionvar.du2022.requirements import fda_requirements, graph_requirements, style_requirements
+from motionvar.du2022.style.settings import StyleSettings
 from motionvar.egges2004.requirements import requirements as egges2004_requirements
+from motionvar.egges2004.settings import Egges2004Settings
 from motionvar.ma2010.requirements import requirements as ma2010_requirements
+from motionvar.ma2010.settings import Ma2010Settings
 from motionvar.report.summary import claims_html
 
 
@@ -57,11 +62,23 @@ def test_unmet_names_what_is_missing_and_why():
 
 def test_every_paper_declares_its_evaluations_and_decides_from_the_data():
     reqs = [
-        *ma2010_requirements(["neutral"], ["forward"]),
-        *fda_requirements(["walk"], 1, ["walk_leftStance"], "pick_reach"),
-        *graph_requirements(["walk_leftStance"], ["walk_leftStance"], ["walk_leftStance"], "pick_reach", 1),
-        *style_requirements(["proud"], ["walk_leftStance"], ["walk_leftStance"], "walk_leftStance", 1),
-        *egges2004_requirements(1),
+        *ma2010_requirements(Ma2010Settings(walk_styles=("neutral",), walk_variants=("forward",))),
+        *fda_requirements(
+            FdaSettings.from_dict(
+                {"behaviours": ["walk"], "min_clips": 1, "reconstruction": {"primitives": ["walk_leftStance"]}}
+            )
+        ),
+        *graph_requirements(
+            GraphSettings.from_dict({"primitives": ["walk_leftStance"], "search": {"primitives": ["walk_leftStance"]}}),
+            1,
+        ),
+        *style_requirements(
+            StyleSettings.from_dict(
+                {"styles": ["proud"], "vae_primitives": ["walk_leftStance"], "style_primitives": ["walk_leftStance"]}
+            ),
+            1,
+        ),
+        *egges2004_requirements(Egges2004Settings(held_out_clips=1)),
     ]
     table = applicability_table(reqs, {"data": DATA, "prep": PREP}).set_index("evaluation")
     assert table.loc["ma2010_fig6", "applicable"] and table.loc["du2022_fig3_10", "applicable"]

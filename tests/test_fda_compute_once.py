@@ -22,7 +22,7 @@ from motionvar.du2022.fda import SFPCA, canonical_primitives, choose_basis_sizes
 from motionvar.du2022.fda.evaluations import evaluate_table3_1, reconstruction_curves
 from motionvar.du2022.fda.evaluations.curves import fitted_sfpca
 from motionvar.du2022.fda.evaluations.table3_1 import fit_reference_sfpca, reference_dims
-from motionvar.du2022.fda.settings import BasisSettings, FdaSettings, TableSettings
+from motionvar.du2022.fda.settings import BasisSettings, FdaSettings, SfpcaSettings, TableSettings
 from motionvar.du2022.fda.sfpca import fk_joint_major
 from motionvar.io import save_dataset
 
@@ -92,7 +92,7 @@ def test_saved_sfpca_keeps_its_options_and_fit_facts(canonical, tmp_path):
         settings.pop(name)
     (tmp_path / "m.json").write_text(json.dumps(settings))
     old = SFPCA.load(tmp_path / "m.npz")
-    assert old.max_iter == 100 and not hasattr(old, "fit_time_s_")
+    assert old.max_iter == SfpcaSettings.max_iter and not hasattr(old, "fit_time_s_")
     assert np.array_equal(old.components_, model.components_)
 
 

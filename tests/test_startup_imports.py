@@ -26,6 +26,11 @@ CASES = {
         "motionvar.egges2004.requirements, motionvar.ma2010.requirements",
         ["sklearn", "scipy.signal", "scipy.stats", "scipy.spatial", "matplotlib", "torch"],
     ),
+    # every rule script builds its section's settings object
+    "settings": (
+        "from motionvar.config_sections import SECTIONS, settings_class; [settings_class(s) for s in SECTIONS]",
+        ["sklearn", "matplotlib", "torch"],
+    ),
     # rules gif_page_*: an HTML page around a GIF
     "gif page": ("from motionvar.plots import gif_page", ["matplotlib", "pandas", "scipy", "torch"]),
     # the Egges 2004 evaluations of a fitted model (fitting it needs scikit-learn; they do not)

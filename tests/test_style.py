@@ -214,7 +214,8 @@ def test_scaler_pools_positions_and_inverts(layout):
 
 def test_conv_autoencoder_shapes_and_eq_5_2_depooling():
     torch.manual_seed(0)
-    ae = ConvAutoencoder(66)
+    thesis = AutoencoderSettings()  # the defaults: Sec. 5.3.1's 256 kernels of 15 frames
+    ae = ConvAutoencoder(66, thesis.kernels, thesis.kernel_width, thesis.decoder_order)
     assert ae.conv.weight.shape == ae.deconv.weight.shape == (256, 66, 15)  # W' has W's shape
     x = torch.randn(3, 66, 60)
     y = ae.encode(x)
@@ -222,16 +223,18 @@ def test_conv_autoencoder_shapes_and_eq_5_2_depooling():
     out = ae.decode(y)
     assert out.shape == x.shape
     assert torch.equal(out[..., 0::2], out[..., 1::2])  # Eq. 5.2 depools after the convolution
-    smooth = ConvAutoencoder(66, decoder_order="depool_conv")
+    smooth = ConvAutoencoder(66, 256, 15, decoder_order="depool_conv")
     assert not torch.equal(smooth(x)[..., 0::2], smooth(x)[..., 1::2])
     with pytest.raises(ValueError, match="multiple of the pooling"):
         ae.encode(torch.randn(1, 66, 59))
     with pytest.raises(ValueError, match="decoder_order"):
-        ConvAutoencoder(66, decoder_order="max")
+        ConvAutoencoder(66, 256, 15, decoder_order="max")
 
 
 def test_vae_architecture_of_fig_5_3():
-    vae = MotionVAE(7680)
+    from motionvar.du2022.style.networks import VAE_HIDDEN
+
+    vae = MotionVAE(7680, VAE_HIDDEN, VaeSettings().latent)  # the default latent size: the thesis' 32
     lin = [m for m in vae.encoder if isinstance(m, torch.nn.Linear)]
     assert [m.out_features for m in lin] == [512, 256, 128]
     assert vae.mu.out_features == vae.logvar.out_features == 32
@@ -281,8 +284,8 @@ def test_gram_sum_and_mean_differ_by_the_frame_count_in_the_style_terms():
         torch.rand(16, 30, generator=gen, dtype=torch.float64),
     )
     assert torch.allclose(gram_distance_maps(a, b, "sum"), 900 * gram_distance_maps(a, b, "mean"), rtol=1e-9)
-    fro_sum = float(style_loss(a, b, 200.0, gram_reduce="sum"))
-    fro_mean = float(style_loss(a, b, 200.0, gram_reduce="mean"))
+    fro_sum = float(style_loss(a, b, 200.0, "frobenius", gram_reduce="sum"))
+    fro_mean = float(style_loss(a, b, 200.0, "frobenius", gram_reduce="mean"))
     assert fro_sum == pytest.approx(30 * fro_mean, rel=1e-6)
     ms_sum = float(style_loss(a, b, 200.0, norm="mean_squared", gram_reduce="sum"))
     assert ms_sum == pytest.approx(
@@ -292,7 +295,7 @@ def test_gram_sum_and_mean_differ_by_the_frame_count_in_the_style_terms():
     assert float(style_distance(a[0], b)) == pytest.approx(float(gram_distance_maps(a[0], b, "mean").mean()))
     assert float(style_distance(a[0], b, "sum")) == pytest.approx(900 * float(style_distance(a[0], b)))
     with pytest.raises(ValueError, match="reduce must be one of"):
-        style_loss(a, b, 1.0, gram_reduce="median")
+        style_loss(a, b, 1.0, "frobenius", gram_reduce="median")
 
 
 def test_gram_distance_from_maps_equals_the_explicit_one():
@@ -308,12 +311,14 @@ def test_gram_distance_from_maps_equals_the_explicit_one():
         assert float(style_distance(a[0], b, reduce)) == pytest.approx(float(ref[0].mean()))
         # Eq. 5.10 as printed: the Frobenius norm of the Gram difference
         fro = torch.linalg.matrix_norm(gram(a, reduce) - gram(b, reduce)).mean()
-        assert float(style_loss(a, b, 2.0, gram_reduce=reduce)) == pytest.approx(2.0 * float(fro), rel=1e-6)
+        assert float(style_loss(a, b, 2.0, "frobenius", gram_reduce=reduce)) == pytest.approx(
+            2.0 * float(fro), rel=1e-6
+        )
         assert float(style_loss(a, b, 2.0, norm="mean_squared", gram_reduce=reduce)) == pytest.approx(
             2.0 * float(ref.mean())
         )
     with pytest.raises(ValueError, match="norm must be"):
-        style_loss(a, b, 2.0, norm="l1")
+        style_loss(a, b, 2.0, norm="l1", gram_reduce="sum")
 
 
 # ---------------------------------------------------------------- training
@@ -439,7 +444,7 @@ def test_vae_and_cvae_training(tiny):
     with pytest.raises(ValueError, match="style_maps must be"):
         train_cvae(maps, example[:3], vae_settings, cvae_settings, 0, None, hidden)
     with pytest.raises(ValueError, match="init VAE has"):
-        train_cvae(maps, example, vae_settings, cvae_settings, 0, MotionVAE(10), hidden)
+        train_cvae(maps, example, vae_settings, cvae_settings, 0, MotionVAE(10, hidden, 4), hidden)
     with pytest.raises(ValueError, match="TrainConfig"):
         TrainConfig(epochs=0, lr=1e-3, batch_size=4, seed=0, optimizer="adam")
 

@@ -13,13 +13,7 @@ checkpoint applicability:
         APPLICABILITY,
     params:
         evaluations=list(EVALUATIONS),
-        ma2010=config_params("ma2010", ["walk_styles", "walk_variants"]),
-        fda=config_params("fda", ["behaviours", "min_clips", "reconstruction.primitives",
-                                  "reconstruction.pick_primitive"]),
-        graph=config_params("graph", ["primitives", "synthesis.reach_primitive"]),
-        graph_search=config_params("graph", ["search.primitives"]),
-        style=config_params("style", ["styles", "vae_primitives", "style_primitives", "distance_primitive"]),
-        egges2004=config_params("egges2004", ["held_out_clips"]),
+        **{section: config[section] for section in ("ma2010", "fda", "graph", "style", "egges2004")},
     log:
         ev_log("applicability"),
     benchmark:

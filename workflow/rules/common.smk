@@ -53,7 +53,7 @@ PRIORITY = {
     "du2022_graph_primitive": 20,
 }
 
-# Every published evaluation, one rule each, named <paper>_<evaluation>: this table lists
+# Every published evaluation, one rule each, named <paper>_<evaluation>; this table lists
 # them all (in report order); each paper's rule file declares an EvaluationSpec per name
 # (register_evaluation) and workflow/rules/evaluations.smk makes one rule of each.
 EVALUATION_NAMES = {
@@ -70,8 +70,6 @@ EVALUATION_NAMES = {
         "egges2004_identification", "egges2004_repetition", "egges2004_fitting", "egges2004_speed",
     ],
 }
-
-PAPER_SECTIONS = {"ma2010": ["ma2010"], "egges2004": ["egges2004"], "du2022": ["fda", "graph", "style"]}  # TRANSITION
 
 # name -> EvaluationSpec, filled by the paper rule files
 EVALUATIONS = {}
@@ -128,23 +126,6 @@ def validate_config(schema_path):
 def stability_datasets():
     """The datasets of a claims-stability run (config key stability.datasets; [] for none)."""
     return list(config.get("stability", {}).get("datasets", []))
-
-
-def config_params(section, keys):
-    """The keys of ``config[section]`` that a job reads, as its params (so that editing
-    another key of the section does not rerun it). A dotted key ("search.beam") reaches
-    into a subsection and is returned under its last part."""
-    part = config[section]
-    out = {}
-    for key in keys:
-        value = part
-        for k in key.split("."):
-            value = value[k]
-        name = key.split(".")[-1]
-        if name in out:
-            raise WorkflowError(f"config_params({section!r}): keys {keys} give {name!r} twice; use two params")
-        out[name] = value
-    return out
 
 
 def run_datasets():
@@ -267,7 +248,7 @@ class EvaluationSpec:
     settings object from it). inputs: name -> path pattern or input function. outputs:
     further outputs of the rule, name -> path (already given to ``in_report`` where the report
     shows them). params: further params. extra: further files that join the default target
-    with the evaluation (built by other rules). mem_mb, threads, priority: as the rule's."""
+    with the evaluation (built by other rules). mem_mb, threads and priority are the rule's."""
 
     name: str
     paper: str
@@ -282,15 +263,9 @@ class EvaluationSpec:
     priority: int = 0
 
 
-LEGACY_EVALUATIONS = set()  # TRANSITION: names registered the old way (their file makes the rule)
-
-
-def register_evaluation(spec, paper=None, extra=()):
+def register_evaluation(spec):
     """Add an evaluation to the default target, the claims merge and the report (one rule,
     made by evaluations.smk)."""
-    if isinstance(spec, str):  # TRANSITION: old-style call, register_evaluation(name, paper=..., extra=[...])
-        LEGACY_EVALUATIONS.add(spec)
-        spec = EvaluationSpec(spec, paper, "", next(iter(PAPER_SECTIONS[paper])), {}, extra=tuple(extra))
     if spec.name in EVALUATIONS:
         raise ValueError(f"evaluation {spec.name} registered twice")
     if spec.paper not in PAPER_CATEGORY:

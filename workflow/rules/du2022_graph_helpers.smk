@@ -11,14 +11,6 @@ GRAPH_EDGES = [f"{GRAPH}/graph/edges.npz", f"{GRAPH}/graph/edges.json"]
 DATASET_MODELS.extend(GRAPH_EDGES)
 
 
-def graph_settings(*keys):
-    """The keys (top-level keys or whole subsections) of config.graph that a job reads, as its
-    ``params.settings`` (so that editing another key does not rerun it): its script builds
-    GraphSettings (motionvar.du2022.graph.settings) from them, the others at their defaults
-    and not read."""
-    return {k: GRAPH_CFG[k] for k in keys}
-
-
 def graph_dense_entry(wildcards):
     """What the dense picks read of the dataset's entry: its source, subjects and seed."""
     entry = dataset_config(wildcards.dataset)

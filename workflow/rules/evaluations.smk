@@ -5,12 +5,11 @@
 # The script path comes from params.evaluation: Snakemake resolves a script: line again when
 # the job runs, when a loop variable holds the last name the loop gave it.
 
-_unregistered = [  # TRANSITION: legacy ones skipped below
-   n for names in EVALUATION_NAMES.values() for n in names if n not in EVALUATIONS]
+_unregistered = [n for names in EVALUATION_NAMES.values() for n in names if n not in EVALUATIONS]
 if _unregistered:
     raise WorkflowError(f"EVALUATION_NAMES lists {_unregistered}, but no rule file registers them")
 
-for _ev_spec in [s for s in EVALUATIONS.values() if s.name not in LEGACY_EVALUATIONS]:
+for _ev_spec in EVALUATIONS.values():
     _ev_caption = f"../report/{_ev_spec.name}.rst"
 
     rule:

@@ -8,19 +8,20 @@ def main(snakemake) -> None:
     import pandas as pd
 
     from motionvar.applicability import applicability_table
+    from motionvar.config_sections import section_settings
     from motionvar.du2022.requirements import fda_requirements, graph_requirements, style_requirements
-    from motionvar.egges2004.requirements import requirements as egges2004_requirements
+    from motionvar.egges2004.requirements import requirements as egges2004
     from motionvar.ma2010.requirements import requirements as ma2010
 
-    p, g = snakemake.params, snakemake.params.graph
-    walks = [q for q in g["primitives"] if q.startswith("walk_")]  # Fig. 4.10's walking primitives
-    reqs = [
-        *ma2010(**p.ma2010),
-        *fda_requirements(**p.fda),
-        *style_requirements(**p.style),
-        *egges2004_requirements(**p.egges2004),
-        *graph_requirements(g["primitives"], p.graph_search["primitives"], walks, g["reach_primitive"]),
-    ]
+    p = snakemake.params
+    papers = {  # config section -> its requirements, in the order of the table's rows
+        "ma2010": ma2010,
+        "fda": fda_requirements,
+        "style": style_requirements,
+        "egges2004": egges2004,
+        "graph": graph_requirements,
+    }
+    reqs = [r for section, of in papers.items() for r in of(section_settings(section, getattr(p, section)))]
     meta = {stage: pd.read_csv(snakemake.input[stage], dtype=str, keep_default_na=False) for stage in ("data", "prep")}
     table = applicability_table([r for r in reqs if r.evaluation in p.evaluations], meta)
     missing = sorted(set(p.evaluations) - set(table["evaluation"]))

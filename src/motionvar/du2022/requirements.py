@@ -5,8 +5,14 @@ primitives, ch. 5 neutral and stylised primitives)."""
 from __future__ import annotations
 
 from collections.abc import Sequence
+from typing import TYPE_CHECKING
 
 from ..applicability import Need, Requirement
+
+if TYPE_CHECKING:
+    from .fda.settings import FdaSettings
+    from .graph.settings import GraphSettings
+    from .style.settings import StyleSettings
 
 PAPER = "du2022"
 
@@ -18,12 +24,12 @@ def _primitives(primitives: Sequence[str], min_count: int, why: str, **where) ->
     )
 
 
-def fda_requirements(
-    behaviours: Sequence[str], min_clips: int, primitives: Sequence[str], pick_primitive: str
-) -> list[Requirement]:
+def fda_requirements(settings: FdaSettings) -> list[Requirement]:
     """Ch. 3 (config fda): the primitives of ``behaviours`` for the basis and Table 3.1;
-    the ``primitives`` of Fig. 3.10; ``pick_primitive`` with two or more variants for
-    Fig. 3.11's separation."""
+    the ``reconstruction.primitives`` of Fig. 3.10; ``reconstruction.pick_primitive`` with two
+    or more variants for Fig. 3.11's separation (each at least ``min_clips`` clips)."""
+    behaviours, min_clips = settings.behaviours, settings.min_clips
+    primitives, pick_primitive = settings.reconstruction.primitives, settings.reconstruction.pick_primitive
     why = "Du 2022 ch. 3 fits functional models to the segmented primitives (at least fda.min_clips of each)"
     canonical = Need(
         what=f"{'/'.join(behaviours)} primitives",
@@ -75,16 +81,19 @@ def fda_requirements(
     ]
 
 
-def graph_requirements(
-    primitives: Sequence[str],
-    search_primitives: Sequence[str],
-    walk_primitives: Sequence[str],
-    reach_primitive: str,
-    min_clips: int = 3,
-) -> list[Requirement]:
+# clips a Morphable Graph primitive (ch. 4) and a VAE/CVAE (ch. 5) need at the least
+GRAPH_MIN_CLIPS = 3
+STYLE_MIN_CLIPS = 2
+
+
+def graph_requirements(settings: GraphSettings, min_clips: int = GRAPH_MIN_CLIPS) -> list[Requirement]:
     """Ch. 4 (config graph): the graph's ``primitives`` (Sec. 4.6.1 compactness), the
-    ``search_primitives`` (Fig. 4.12), walk leftStance and pick reach (Fig. 4.9), and
-    the walking and reaching primitives of Fig. 4.10's path-and-reach synthesis."""
+    ``search.primitives`` (Fig. 4.12), walk leftStance and pick reach (Fig. 4.9), and the
+    graph's walking primitives and ``synthesis.reach_primitive`` for Fig. 4.10's
+    path-and-reach synthesis."""
+    primitives, search_primitives = settings.primitives, settings.search.primitives
+    walk_primitives = [q for q in primitives if q.startswith("walk_")]
+    reach_primitive = settings.synthesis.reach_primitive
     why = "Du 2022 ch. 4 fits a motion primitive (SFPCA + GMM) to the clips of each primitive"
     return [
         Requirement(
@@ -122,15 +131,11 @@ def graph_requirements(
     ]
 
 
-def style_requirements(
-    styles: Sequence[str],
-    vae_primitives: Sequence[str],
-    style_primitives: Sequence[str],
-    distance_primitive: str,
-    min_clips: int = 2,
-) -> list[Requirement]:
+def style_requirements(settings: StyleSettings, min_clips: int = STYLE_MIN_CLIPS) -> list[Requirement]:
     """Ch. 5 (config style): neutral clips of every VAE primitive and clips of every
     style for the stylised primitives (CVAE)."""
+    styles, vae_primitives = settings.styles, settings.vae_primitives
+    style_primitives, distance_primitive = settings.style_primitives, settings.distance_primitive
     why_vae = "Du 2022 ch. 5 trains a VAE per primitive on its neutral clips"
     why_cvae = (
         "Du 2022 ch. 5 trains a CVAE per style on that style's clips; set style.styles to styles your "

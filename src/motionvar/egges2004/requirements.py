@@ -3,16 +3,22 @@
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 from ..applicability import Need, Requirement
+
+if TYPE_CHECKING:
+    from .settings import Egges2004Settings
 
 PAPER = "egges2004"
 
 WHY = "Egges 2004 builds its model from recordings of a person standing idle (balance shifts, Sec. 5)"
 
 
-def requirements(held_out_clips: int) -> list[Requirement]:
-    """Idle clips (``behaviour`` idle): more than ``held_out_clips`` per subject for the
-    database and its held-out test recordings; two subjects or more to identify people."""
+def requirements(settings: Egges2004Settings) -> list[Requirement]:
+    """Idle clips (``behaviour`` idle): more than the settings' ``held_out_clips`` per subject
+    for the database and its held-out test recordings; two subjects or more to identify people."""
+    held_out_clips = settings.held_out_clips
     idle = Need(
         what="idle recordings", stage="data", where={"behaviour": ("idle",)}, min_count=held_out_clips + 1, why=WHY
     )

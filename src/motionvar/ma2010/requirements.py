@@ -3,9 +3,12 @@ walking clips of the modelled styles and variants, long enough to hold gait cycl
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from typing import TYPE_CHECKING
 
 from ..applicability import Need, Requirement
+
+if TYPE_CHECKING:
+    from .settings import Ma2010Settings
 
 PAPER = "ma2010"
 
@@ -48,9 +51,10 @@ EVALUATIONS = {
 }
 
 
-def requirements(walk_styles: Sequence[str], walk_variants: Sequence[str]) -> list[Requirement]:
-    """One requirement per evaluation: walking clips (``behaviour`` walk) of
-    ``walk_styles`` and ``walk_variants`` (config ma2010; an empty list accepts any)."""
+def requirements(settings: Ma2010Settings) -> list[Requirement]:
+    """One requirement per evaluation: walking clips (``behaviour`` walk) of the settings'
+    ``walk_styles`` and ``walk_variants`` (an empty list accepts any)."""
+    walk_styles, walk_variants = settings.walk_styles, settings.walk_variants
     styles = "/".join(walk_styles) if walk_styles else "any-style"
     where = {"behaviour": ("walk",), "style": tuple(walk_styles), "variant": tuple(walk_variants)}
     out = []

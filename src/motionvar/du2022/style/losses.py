@@ -90,12 +90,13 @@ def style_loss(
     recon_maps: torch.Tensor,
     style_maps: torch.Tensor,
     alpha: float,
-    norm: str = "frobenius",
-    gram_reduce: str = "sum",
+    norm: str,
+    gram_reduce: str,
 ) -> torch.Tensor:
     """Eq. 5.10: alpha ||Gram(decoder(z)) - Gram(y_s)||, averaged over samples;
     recon_maps (..., K, T) decoded feature maps, style_maps (K, S) the encoded style example,
-    ``gram_reduce`` the reduction of Eq. 5.9 (:func:`gram`)."""
+    ``norm`` frobenius (as printed) or mean_squared, ``gram_reduce`` the reduction of Eq.
+    5.9 (:func:`gram`; config style.cvae.style_norm and style.cvae.gram)."""
     msd = gram_distance_maps(recon_maps, style_maps, gram_reduce)
     if norm == "frobenius":
         K = recon_maps.shape[-2]

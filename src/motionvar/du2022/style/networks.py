@@ -15,6 +15,7 @@ from torch import nn
 from torch.nn import functional as F
 
 DECODER_ORDERS = ("conv_depool", "depool_conv")
+VAE_HIDDEN = (512, 256, 128)  # the VAE encoder's hidden layers (Fig. 5.3; the decoder mirrors them)
 
 
 def average_pool(h: torch.Tensor, pool: int) -> torch.Tensor:
@@ -30,8 +31,9 @@ def average_pool(h: torch.Tensor, pool: int) -> torch.Tensor:
 class ConvAutoencoder(nn.Module):
     """Single-layer convolutional autoencoder (Sec. 5.3.1).
 
-    Encoder, Eq. 5.1: Y = Phi(X) = Psi(ReLU(X * W + b)), 256 kernels of width 15 along time
-    (a quarter of the 60-frame canonical timeline), Psi average pooling by ``pool``.
+    Encoder, Eq. 5.1: Y = Phi(X) = Psi(ReLU(X * W + b)), ``n_kernels`` kernels of
+    ``kernel_width`` frames along time (the thesis: 256 of width 15, a quarter of the
+    60-frame canonical timeline: config style.autoencoder), Psi average pooling by ``pool``.
     Decoder, Eq. 5.2: X = Phi'(Y) = Psi'(Y * W' + b'), W' of W's shape (a transposed
     convolution, whose weight tensor is (256, C, 15) like W), Psi' average depooling
     (each feature frame repeated ``pool`` times). ``decoder_order="depool_conv"`` depools
@@ -42,10 +44,10 @@ class ConvAutoencoder(nn.Module):
     def __init__(
         self,
         n_channels: int,
-        n_kernels: int = 256,
-        kernel_width: int = 15,
+        n_kernels: int,
+        kernel_width: int,
+        decoder_order: str,
         pool: int = 2,
-        decoder_order: str = "conv_depool",
     ) -> None:
         super().__init__()
         if decoder_order not in DECODER_ORDERS:
@@ -82,12 +84,14 @@ class ConvAutoencoder(nn.Module):
 
 
 class MotionVAE(nn.Module):
-    """The VAE of one motion primitive (Fig. 5.3): encoder 512-256-128 hidden units and a
-    32-dimensional latent space (two linear branches for the mean and the log of the
-    diagonal covariance), decoder 32-128-256-512, tanh on every layer but the outputs.
+    """The VAE of one motion primitive (Fig. 5.3): encoder with ``hidden`` units (the
+    thesis: 512-256-128, :data:`VAE_HIDDEN`) and a ``latent``-dimensional latent space (the
+    thesis: 32, config style.vae.latent; two linear branches for the mean and the log of
+    the diagonal covariance), decoder mirrored (32-128-256-512), tanh on every layer but
+    the outputs.
     Works on flattened feature maps y (B, D), D = 256 * 30."""
 
-    def __init__(self, in_dim: int, hidden: tuple[int, ...] = (512, 256, 128), latent: int = 32) -> None:
+    def __init__(self, in_dim: int, hidden: tuple[int, ...], latent: int) -> None:
         super().__init__()
         self.hparams = dict(in_dim=in_dim, hidden=list(hidden), latent=latent)
         enc, d = [], in_dim

@@ -52,7 +52,7 @@ from .data import example_features, primitive_features, select_style_example, tr
 from .features import FeatureLayout, FeatureScaler
 from .losses import GRAM_REDUCTIONS, STYLE_NORMS, content_loss, kl_loss, style_loss
 from .model import FeatureSpace, active_units
-from .networks import ConvAutoencoder, MotionVAE
+from .networks import VAE_HIDDEN, ConvAutoencoder, MotionVAE
 from .settings import AutoencoderSettings, CvaeSettings, StyleSettings, VaeSettings
 
 log = logging.getLogger(__name__)
@@ -66,7 +66,6 @@ AUTOENCODER_THREADS = 2
 OPTIMIZERS = ("adam", "sgd")
 AUTOENCODER_KEEP = ("best", "last")  # which epoch's weights train_autoencoder returns
 AUTOENCODER_OPTIMIZER = "adam"  # the autoencoder's optimiser (the VAE's and CVAE's are configured)
-VAE_HIDDEN = (512, 256, 128)  # the VAE's hidden layers (Fig. 5.3)
 
 
 @dataclass(frozen=True)

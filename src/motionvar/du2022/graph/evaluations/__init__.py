@@ -18,7 +18,6 @@ _EXPORTS = {
     ".fig4_12": [
         "CONSTRAINT_KINDS",
         "METHODS",
-        "SearchSettings",
         "evaluate_fig4_12",
         "search_comparison",
         "search_primitive",
@@ -31,7 +30,6 @@ __getattr__, __dir__ = lazy_exports(__name__, _EXPORTS)
 __all__ = [
     "CONSTRAINT_KINDS",
     "METHODS",
-    "SearchSettings",
     "binned_kde",
     "coverage",
     "evaluate_fig4_10",

@@ -157,10 +157,10 @@ def _walk_summary(rows: list[dict], walk, floor_path: Path2D, hips: int) -> dict
 
 def _path_walks(
     graph: MorphableGraph, trees: Mapping[str, SpacePartitioningTree], joint_map: JointMap, st: SynthesisSettings
-) -> tuple[list, list[dict], dict, dict]:
+) -> tuple[list, list[dict], dict, dict, dict]:
     """Fig. 4.10 left: the walk along ``st.path`` with ``st``, and with ``st.compare_variants``
     the walks of :data:`VARIANTS` that differ from it. Returns (steps, table rows of every
-    walk, the walk's figure data and summary, the variants' summaries with their walks)."""
+    walk, the walk's figure data, its summary, the variants' summaries with their walks)."""
     floor_path = Path2D(np.asarray(st.path, dtype=float))
     steps = follow_path(graph, trees, floor_path, joint_map, st)
     hips = joint_map.index(steps[0].motion.skeleton, "hips")
@@ -178,7 +178,7 @@ def _path_walks(
         variants[name] = dict(_walk_summary(v_rows, v_walk, floor_path, hips), walk=v_walk)
     feet = {f: joint_map.index(walk.skeleton, f) for f in ("left_ankle", "right_ankle")}
     figure = dict(walk=walk, steps=steps, path=floor_path.points, hips=hips, feet=feet)
-    return steps, rows, dict(figure, summary=summary), variants
+    return steps, rows, figure, summary, variants
 
 
 def _reaches(
@@ -250,8 +250,7 @@ def evaluate_fig4_10(
     trees = {n: SpacePartitioningTree(m.sample(st.tree_samples, rng), "kmeans", seed=seed) for n, m in models.items()}
     walk_names = [n for n in models if n.startswith("walk_")]
     graph = MorphableGraph.from_metadata(dataset.metadata, {n: models[n] for n in walk_names})
-    steps, rows, walk_figure, variants = _path_walks(graph, trees, joint_map, st)
-    summary = walk_figure.pop("summary")
+    steps, rows, walk_figure, summary, variants = _path_walks(graph, trees, joint_map, st)
     reach_rows, reaches, targets = _reaches(
         models[st.reach_primitive], trees[st.reach_primitive], dataset, joint_map, st, rng, source
     )

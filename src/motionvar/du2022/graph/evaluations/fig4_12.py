@@ -2,7 +2,7 @@
 space-partitioning trees against random sampling and brute force.
 
 Two steps: :func:`search_primitive` runs the random queries on one primitive (one table
-row per query, method and beam; rule ``graph_search``), :func:`evaluate_fig4_12`
+row per query, method and beam; rule ``du2022_graph_search``), :func:`evaluate_fig4_12`
 summarises the queries of all primitives and checks the claims of Sec. 4.6.2. Where the
 thesis says "close", "most" or "much smaller" without a number, the threshold used is
 written in the claim's note.
