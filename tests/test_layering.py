@@ -29,6 +29,7 @@ LEVELS = {
     "du2022": 3,
     "egges2004": 3,
     "cli": 4,  # the `motionvar` command: glue over the papers and shared parts; nothing imports it
+    "config_sections": 4,  # config section -> settings class of each paper (rule scripts, tests)
 }
 PAPERS = {"ma2010", "du2022", "egges2004"}
 
@@ -111,7 +112,7 @@ def test_no_backend_chosen_at_import(module, path):
 
 
 SCRIPTS = SRC.parents[1] / "workflow" / "scripts"
-MAX_SCRIPT_LINES = 40
+MAX_SCRIPT_LINES = 50  # lines as ruff format writes them (one argument a line where a call wraps)
 
 
 @pytest.mark.parametrize("path", sorted(p for p in SCRIPTS.glob("*.py") if p.name != "_rule.py"), ids=lambda p: p.name)
