@@ -1,6 +1,6 @@
 # motionvar: replication of Ma et al. 2010, Du 2022 and Egges et al. 2004.
-# `snakemake --cores 2` builds every registered evaluation and the report
-# (reports/replication.html, through the default profile). See README.md and
+# `snakemake --cores 2` builds every registered evaluation and one report per dataset
+# (reports/<dataset>.html, rule dataset_report). See README.md and
 # workflow/README.md for the conventions every rule file follows.
 
 import os

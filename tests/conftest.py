@@ -1,7 +1,8 @@
 """Shared fixtures. ``ci_run``: the whole workflow on config/ci.yaml in a temporary working
-directory, run once per test session through the default profile (so it ends with the
-report); used by tests/test_pipeline_e2e.py and, as the local reference run, by
-tests/test_cluster_generic.py (so CI runs the CI pipeline locally once)."""
+directory, run once per test session through the default profile (its default target ends
+with the dataset's report, reports/synthetic.html); used by tests/test_pipeline_e2e.py and,
+as the local reference run, by tests/test_cluster_generic.py (so CI runs the CI pipeline
+locally once)."""
 
 import resource
 import subprocess
@@ -33,7 +34,6 @@ def ci_run(tmp_path_factory):
     """(working directory, wall s, CPU s of the process tree, CompletedProcess) of one local
     run of config/ci.yaml on 2 cores."""
     work = tmp_path_factory.mktemp("ci_run")
-    (work / "reports").mkdir()  # the default profile writes reports/replication.html
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
     start = time.perf_counter()
     result = run_snakemake("-d", str(work), "--configfile", CI_CONFIG, "--cores", "2", cwd=work)

@@ -139,7 +139,7 @@ def run(results, *argv):
             str(results),
             "--dataset",
             DS,
-            "--quiet",
+            *([] if argv[0] == "models" else ["--quiet"]),
             *argv[(2 if argv[0] == "du2022" else 1) :],
         ]
     )
@@ -613,3 +613,102 @@ def test_du2022_walk_without_transitions_is_refused(results, tmp_path, capsys):
         == 2
     )
     assert "has no transitions between its walking primitives" in capsys.readouterr().err and not out.exists()
+
+
+# ---------------------------------------------------------------- request sizes, --version, help
+
+
+@pytest.mark.parametrize(
+    "argv, message",
+    [
+        (
+            ["ma2010", "--style", "133", "--seconds", "1e9", "--out", "{tmp}/walks"],
+            "--seconds x --variants = 1e+09: at most 600 s of walks per command",
+        ),
+        (
+            ["ma2010", "--style", "133", "--seconds", "100", "--variants", "7", "--out", "{tmp}/walks"],
+            "--seconds x --variants = 700: at most 600 s of walks per command",
+        ),
+        (
+            ["egges2004", "--seconds", "1e12", "--out", "{tmp}/idle.bvh"],
+            "--seconds 1e+12: at most 600 s of idle motion per command",
+        ),
+        (
+            ["du2022", "style", "--style", "old", "--n", "100000", "--out", "{tmp}/styles"],
+            "--n 100000: at most 200 samples per command (run again with another --seed for more)",
+        ),
+        (
+            ["du2022", "walk", "--path", "0,0 1e9,0", "--out", "{tmp}/walk.bvh"],
+            "--path of length 1e+09: at most 10000 cm per walk",
+        ),
+        (
+            ["du2022", "walk", "--path", "0,0 300,0", "--max-steps", "5000", "--out", "{tmp}/walk.bvh"],
+            "--max-steps 5000: at most 400 steps per walk",
+        ),
+    ],
+    ids=["ma2010-seconds", "ma2010-variants", "egges2004-seconds", "style-n", "walk-path", "walk-steps"],
+)
+def test_an_oversized_request_is_refused_at_once(results, tmp_path, capsys, argv, message):
+    """Exit status 2 within seconds, one line stating the limit, nothing written."""
+    import time
+
+    start = time.perf_counter()
+    assert run(results, *[a.format(tmp=tmp_path) for a in argv]) == 2
+    assert time.perf_counter() - start < 5.0
+    err = capsys.readouterr().err
+    command = " ".join(argv[:2] if argv[0] == "du2022" else argv[:1]).split()[0]
+    assert err == f"motionvar {command}: error: {message}\n"
+    assert not any(tmp_path.iterdir())
+
+
+def test_version_and_top_level_help_with_examples():
+    import subprocess
+    import sys
+    from importlib.metadata import version
+
+    r = subprocess.run(
+        [sys.executable, "-m", "motionvar.cli.main", "--version"], capture_output=True, text=True, timeout=120
+    )
+    assert r.returncode == 0 and r.stdout == f"motionvar {version('motionvar')}\n" and not r.stderr
+    from motionvar.cli.main import build_parser
+
+    text = build_parser().format_help()
+    examples = [line.strip() for line in text.split("examples:", 1)[1].splitlines() if line.startswith("  motionvar")]
+    assert examples == ["motionvar models", "motionvar ma2010 --style 135 --seconds 20 --variants 3 --out walks/"]
+    for example in examples:  # each parses as written
+        build_parser().parse_args(example.split()[1:])
+
+
+@pytest.mark.parametrize("option", [["--seed", "3"], ["--unit-cm", "100"], ["--quiet"]])
+def test_models_takes_only_the_options_it_uses(results, capsys, option):
+    with pytest.raises(SystemExit) as stop:
+        main(["models", "--results", str(results), *option])
+    assert stop.value.code == 2 and f"unrecognized arguments: {option[0]}" in capsys.readouterr().err
+
+
+def test_each_command_takes_only_its_options():
+    """The options of each subcommand are those its run function reads."""
+    from motionvar.cli.main import build_parser
+
+    parser = build_parser()
+    sub = next(a for a in parser._actions if a.dest == "command").choices
+    kinds = next(a for a in sub["du2022"]._actions if a.dest == "kind").choices
+
+    def options(p):
+        return {o for a in p._actions for o in a.option_strings if o.startswith("--") and o != "--help"}
+
+    shared = {"--dataset", "--results", "--seed", "--unit-cm", "--quiet"}
+    assert options(sub["models"]) == {"--dataset", "--results"}
+    assert options(sub["ma2010"]) == shared | {"--style", "--xi", "--seconds", "--variants", "--cleanup", "--out"}
+    assert options(sub["egges2004"]) == shared | {"--subject", "--seconds", "--no-variations", "--out"}
+    assert options(kinds["walk"]) == shared | {"--path", "--max-steps", "--out"}
+    assert options(kinds["style"]) == shared | {"--style", "--primitive", "--n", "--out"}
+
+
+def test_a_walk_shows_its_steps_as_progress_lines(results, tmp_path, capsys):
+    """Without --quiet the library's progress lines (each graph-walk step, at the interval)
+    come on stderr with the progress bar."""
+    argv = ["du2022", "walk", "--results", str(results), "--dataset", DS, "--path", "0,0 150,0"]
+    assert main([*argv, "--out", str(tmp_path / "walk.bvh")]) == 0
+    err = capsys.readouterr().err
+    assert re.search(r"^motionvar: graph walk \(150 cm path\) step 1/\d+, elapsed [\d.]+ s", err, flags=re.M), err

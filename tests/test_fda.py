@@ -204,20 +204,6 @@ def test_fpca_matches_dense_quadrature_reference(data):
     assert np.allclose(model.explained_variance_ratio_, reference_explained_variance_ratio(fd, 10), atol=1e-6)
 
 
-def test_fpca_matches_scikit_fda_when_installed(data):
-    """scikit-fda is not a dependency (it needs multimethod<2); checked where it is installed."""
-    pytest.importorskip("skfda")
-    from skfda.preprocessing.dim_reduction import FPCA as SkFPCA
-    from skfda.representation.basis import BSplineBasis as SkBSpline
-    from skfda.representation.basis import FDataBasis, VectorValuedBasis
-
-    fd, _, _ = data
-    K, D = fd.coefs.shape[1:]
-    basis = VectorValuedBasis([SkBSpline(domain_range=(0, 1), n_basis=K, order=4)] * D)
-    sk = SkFPCA(n_components=8).fit(FDataBasis(basis, fd.coefs.transpose(0, 2, 1).reshape(fd.n_clips, -1)))
-    assert np.allclose(FPCA(8).fit(fd).explained_variance_ratio_, sk.explained_variance_ratio_, atol=1e-6)
-
-
 def test_fpca_eigenfunctions_orthonormal_and_full_rank_round_trip(data):
     fd, _, _ = data
     model = FPCA(6).fit(fd)

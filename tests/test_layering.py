@@ -1,4 +1,4 @@
-"""The package layout (README "Code map"): shared parts below the paper packages, imports
+"""The package layout (docs/development.md, "Code map"): shared parts below the paper packages, imports
 only downward, no paper package reaching into another, no Snakemake in the library, no
 pickle and no matplotlib backend chosen at import time."""
 

@@ -1,8 +1,11 @@
 """End to end: the whole workflow on config/ci.yaml in a temporary working directory,
-through the default profile (so it ends with the report), within the CI time budget;
-and `snakemake --lint` is clean."""
+through the default profile (so it ends with the dataset's report), within the CI time
+budget; one report per dataset, which a dry run or a run on another dataset leaves as it
+is; and `snakemake --lint` is clean."""
 
+import os
 import re
+import shutil
 import subprocess
 import sys
 from pathlib import Path
@@ -50,8 +53,8 @@ def test_ci_pipeline_fits_the_budget(ci_run):
 @pytest.mark.e2e
 def test_report_holds_the_data_figures_and_the_claims(ci_run):
     work, _, _, _ = ci_run
-    report = work / "reports" / "replication.html"
-    assert report.is_file()
+    report = work / "reports" / "synthetic.html"
+    assert report.is_file() and sorted(p.name for p in (work / "reports").iterdir()) == ["synthetic.html"]
     html = report.read_text(encoding="utf-8", errors="replace")
     for name in ("dataset_overview.png", "dataset_animation.gif.html", "claims_summary.html", "claims.csv"):
         assert name in html, f"{name} missing from the report"
@@ -60,6 +63,59 @@ def test_report_holds_the_data_figures_and_the_claims(ci_run):
     claims = pd.read_csv(work / "results" / "synthetic" / "claims.csv")
     assert list(claims.columns) == list(CLAIM_COLUMNS)
     assert (work / "results" / "synthetic" / "figures" / "dataset_animation.gif").stat().st_size < 3_000_000
+
+
+@pytest.mark.e2e
+def test_dry_run_through_the_default_profile_writes_no_report(ci_run):
+    work = ci_run[0]
+    report = work / "reports" / "synthetic.html"
+    before = report.stat().st_mtime_ns
+    result = snakemake("-d", str(work), "--configfile", CI_CONFIG, "-n", cwd=work, timeout=300)
+    assert result.returncode == 0, result.stdout[-2000:] + result.stderr[-4000:]
+    assert report.stat().st_mtime_ns == before and len(list((work / "reports").iterdir())) == 1
+
+
+@pytest.mark.e2e
+def test_a_single_target_or_another_dataset_leaves_the_first_report(ci_run, tmp_path):
+    """In a copy of the CI run: building one target (rule claims, forced) writes no report;
+    a second config (as config/real/xia.yaml: another dataset in run_datasets) writes
+    reports/<its dataset>.html, with its own outputs only; reports/synthetic.html stays as
+    it was. The second dataset's results are the CI run's files (hard links; a job's
+    outputs, log and benchmark are written anew, never through a link), so the run has
+    only its report to build."""
+    work = ci_run[0]
+    second = tmp_path / "work"
+    for name in ("synthetic", "synthetic_b"):
+        shutil.copytree(work / "results" / "synthetic", second / "results" / name, copy_function=os.link)
+    for stale in ("logs/claims.log", "benchmarks/claims.tsv", "claims.csv"):
+        (second / "results" / "synthetic" / stale).unlink()
+    shutil.copy2(work / "results" / "synthetic" / "claims.csv", second / "results" / "synthetic" / "claims.csv")
+    for stale in ("logs/dataset_report.log", "benchmarks/dataset_report.tsv"):
+        (second / "results" / "synthetic_b" / stale).unlink()
+    (second / "reports").mkdir()
+    first = second / "reports" / "synthetic.html"
+    shutil.copy2(work / "reports" / "synthetic.html", first)
+    before = first.stat().st_mtime_ns
+
+    def ran(*args):
+        result = snakemake("-d", str(second), "--rerun-triggers", "mtime", "--cores", "1", *args, cwd=second)
+        assert result.returncode == 0, result.stdout[-2000:] + result.stderr[-4000:]
+        return set(re.findall(r"^(?:local)?rule (\w+):", result.stdout + result.stderr, flags=re.M))
+
+    assert ran("--configfile", CI_CONFIG, "--forcerun", "claims", "--", "results/synthetic/claims.csv") == {"claims"}
+    assert first.stat().st_mtime_ns == before
+    config = tmp_path / "second.yaml"
+    config.write_text(
+        "datasets:\n  synthetic_b: {source: synthetic, subjects: 4, seed: 1, idle_clips: 3, idle_duration_s: 40.0}\n"
+        "run_datasets: [synthetic_b]\n"
+    )
+    assert ran("--configfile", CI_CONFIG, str(config)) == {"dataset_report", "all"}
+    assert (
+        first.stat().st_mtime_ns == before and first.read_bytes() == (work / "reports" / "synthetic.html").read_bytes()
+    )
+    assert sorted(p.name for p in (second / "reports").iterdir()) == ["synthetic.html", "synthetic_b.html"]
+    html = (second / "reports" / "synthetic_b.html").read_text(encoding="utf-8", errors="replace")
+    assert "results/synthetic_b/claims_summary.html" in html and "results/synthetic/" not in html
 
 
 @pytest.mark.e2e
@@ -89,7 +145,8 @@ def test_motionvar_command_generates_from_the_ci_models(ci_run, tmp_path):
 
     def cli(*args):
         r = subprocess.run(
-            [sys.executable, "-m", "motionvar.cli.main", *args, "--dataset", "synthetic", "--quiet"],
+            [sys.executable, "-m", "motionvar.cli.main", *args, "--dataset", "synthetic"]
+            + ([] if args[0] == "models" else ["--quiet"]),
             cwd=work,
             capture_output=True,
             text=True,

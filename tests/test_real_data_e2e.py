@@ -45,7 +45,7 @@ def real_run(tmp_path_factory):
 def test_real_set_gets_claims_summary_and_report(real_run):
     results = real_run / "results" / DATASET
     claims = pd.read_csv(results / "claims.csv", keep_default_na=False)
-    assert (results / "claims_summary.html").is_file() and (real_run / "reports" / "replication.html").is_file()
+    assert (results / "claims_summary.html").is_file() and (real_run / "reports" / f"{DATASET}.html").is_file()
     checked = claims[claims["verdict"].isin(CHECKED_VERDICTS)]
     na = claims[claims["verdict"] == "not applicable"]
     assert len(checked) >= 3, claims[["claim_id", "verdict"]]

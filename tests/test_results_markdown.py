@@ -1,4 +1,4 @@
-"""README "Results" from merged claims tables (tools/readme_results.py)."""
+"""docs/results.md from merged claims tables (tools/readme_results.py)."""
 
 import pandas as pd
 

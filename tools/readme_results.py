@@ -1,10 +1,11 @@
-"""Rewrite the "Results" section of README.md from the merged claims of finished runs.
+"""Rewrite docs/results.md (every claim of the last runs) from the merged claims of finished runs.
 
     python tools/readme_results.py [--main synthetic] [--others xia bandai_ds1 dfki_markerless]
         [--note "config/config.yaml, 25 subjects"]
 
 Reads results/<dataset>/claims.csv (the `claims` rule's output) and replaces the text
-between the markers <!-- results:start --> and <!-- results:end --> of README.md.
+between the markers <!-- results:start --> and <!-- results:end --> of docs/results.md
+(the README's "Results" section gives the counts and links there).
 A dataset whose claims file is missing is left out with a warning.
 """
 
@@ -40,7 +41,7 @@ def main() -> None:
     if main_claims is None:
         sys.exit(f"error: no claims for {args.main}")
     others = {name: t for name in args.others if (t := read(name)) is not None}
-    readme = ROOT / "README.md"
+    readme = ROOT / "docs" / "results.md"
     text = readme.read_text(encoding="utf-8")
     if START not in text or END not in text:
         sys.exit(f"error: {readme} has no {START} ... {END} markers")

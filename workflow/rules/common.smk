@@ -27,6 +27,7 @@ SUMMARY_CATEGORY = "Summary"
 STABILITY = "results/stability"
 STABILITY_CSV = f"{STABILITY}/claims_stability.csv"
 STABILITY_OUTPUTS = [STABILITY_CSV, f"{STABILITY}/claims_stability.png", f"{STABILITY}/claims_stability.html"]
+STABILITY_REPORT = "reports/stability.html"
 
 # Scheduling (`priority:` of the rules on the run's long chains; every other rule has 0). On a
 # few cores the wall time is set by when the long chains start: left to input sizes, the
@@ -354,8 +355,17 @@ def default_outputs(dataset):
     ]
 
 
+def report_files():
+    """The reports of a run (rules dataset_report and stability_report, report.smk): one per
+    dataset of run_datasets, reports/<dataset>.html, each showing that dataset's outputs
+    only, and reports/stability.html when stability.datasets names some."""
+    stability = [STABILITY_REPORT] if stability_datasets() else []
+    return [f"reports/{dataset}.html" for dataset in run_datasets()] + stability
+
+
 def all_outputs(wildcards):
     """Input function of the default target: the default outputs of every dataset in
-    run_datasets, and the claims-stability outputs when stability.datasets names some."""
+    run_datasets, the claims-stability outputs when stability.datasets names some, and
+    the reports (report_files)."""
     stability = STABILITY_OUTPUTS if stability_datasets() else []
-    return [path for dataset in run_datasets() for path in default_outputs(dataset)] + stability
+    return [path for dataset in run_datasets() for path in default_outputs(dataset)] + stability + report_files()

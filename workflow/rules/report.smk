@@ -105,6 +105,53 @@ rule claims_summary:
         "../scripts/claims_summary.py"
 
 
+# The report of one dataset, reports/{dataset}.html: Snakemake's report (`snakemake --report`)
+# of the dataset's default outputs only, so a run on another dataset or a single target
+# leaves it as it is. In the default target (report_files, common.smk); a local job, since
+# it reads the run's metadata in .snakemake/.
+rule dataset_report:
+    input:
+        lambda wc: default_outputs(wc.dataset),
+    output:
+        "reports/{dataset}.html",
+    params:
+        snakefile=workflow.main_snakefile,
+    log:
+        ev_log("dataset_report"),
+    benchmark:
+        ev_benchmark("dataset_report")
+    localrule: True
+    threads: 1
+    resources:
+        mem_mb=1000,
+    conda:
+        ENV
+    script:
+        "../scripts/report.py"
+
+
+# The report of a claims-stability run (config/seeds.yaml): rule claims_stability's outputs.
+rule stability_report:
+    input:
+        STABILITY_OUTPUTS,
+    output:
+        STABILITY_REPORT,
+    params:
+        snakefile=workflow.main_snakefile,
+    log:
+        f"{STABILITY}/logs/stability_report.log",
+    benchmark:
+        f"{STABILITY}/benchmarks/stability_report.tsv"
+    localrule: True
+    threads: 1
+    resources:
+        mem_mb=1000,
+    conda:
+        ENV
+    script:
+        "../scripts/report.py"
+
+
 # One page per GIF given to in_report (common.smk): the GIF inlined in a small HTML page,
 # which the report shows (it cannot show a GIF file itself). Defined last, after every
 # rule file has registered its GIFs.

@@ -181,6 +181,14 @@ def parse_numbers(text: str, what: str) -> list[float]:
     return values
 
 
+def at_most(value: float, limit: float, what: str, unit_scope: str) -> None:
+    """CLIError ``<what> <value>: at most <limit> <unit_scope>`` (e.g. "--n 100000: at most
+    200 samples per command") when ``value`` exceeds ``limit``: a request too large for
+    memory or a sitting is refused before anything is loaded."""
+    if value > limit:
+        raise CLIError(f"{what} {value:g}: at most {limit:g} {unit_scope}")
+
+
 def positive(value: float, what: str) -> float:
     if not (np.isfinite(value) and value > 0):
         raise CLIError(f"{what} must be > 0; got {value:g}")

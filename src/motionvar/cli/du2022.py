@@ -5,12 +5,14 @@ decoded to motion (Du 2022 ch. 5)."""
 from __future__ import annotations
 
 import argparse
+import math
 import re
 from pathlib import Path
 
 from .common import (
     CLIError,
     ResultsDir,
+    at_most,
     dataset_rig,
     load_or_fail,
     note,
@@ -32,6 +34,12 @@ RIG = (f"{STYLE}/rig.npz", f"{STYLE}/rig.json")
 NEUTRAL = "neutral"
 WALK_EVALUATIONS = ("du2022_fig4_10", "du2022_sec4_6_1", "du2022_fig4_12", "du2022_fig4_9")  # build walk primitives
 STYLE_EVALUATIONS = ("du2022_table5_1", "du2022_table5_2", "du2022_fig5_4")  # build the style models
+# Largest requests: a walk's path (each step is a Levenberg-Marquardt fit, ~2 s: 20 m took
+# 35 steps, 76 s on the CI models) and its steps, and the samples of one style command
+# (decoded and written together: 50 took ~20 s and 0.36 GB).
+MAX_PATH_CM = 10_000.0
+MAX_STEPS = 400
+MAX_SAMPLES = 200
 
 
 def add_parser(sub: argparse._SubParsersAction, common) -> None:
@@ -50,9 +58,17 @@ def add_parser(sub: argparse._SubParsersAction, common) -> None:
         "optimised by Levenberg-Marquardt on Eq. 4.9 (settings: config graph.synthesis of the run).",
     )
     w.add_argument(
-        "--path", required=True, help='floor points x,z in cm, separated by spaces or ";", e.g. "0,0 300,0 400,100"'
+        "--path",
+        required=True,
+        help='floor points x,z in cm, separated by spaces or ";", e.g. "0,0 300,0 400,100" '
+        f"(at most {MAX_PATH_CM:g} cm long)",
     )
-    w.add_argument("--max-steps", type=int, default=None, help="at most this many steps (default: enough for the path)")
+    w.add_argument(
+        "--max-steps",
+        type=int,
+        default=None,
+        help=f"at most this many steps (default: enough for the path; at most {MAX_STEPS})",
+    )
     w.add_argument("--out", required=True, help="output BVH file")
     w.set_defaults(run=run_walk)
     s = kinds.add_parser(
@@ -64,7 +80,7 @@ def add_parser(sub: argparse._SubParsersAction, common) -> None:
     )
     s.add_argument("--style", required=True, help="style name (`motionvar models` lists them), or neutral")
     s.add_argument("--primitive", default=None, help="motion primitive (default: the first with a model of the style)")
-    s.add_argument("--n", type=int, default=1, help="number of samples (default 1)")
+    s.add_argument("--n", type=int, default=1, help=f"number of samples (default 1; at most {MAX_SAMPLES})")
     s.add_argument("--out", required=True, help="output folder (<style>_<primitive>_<k>.bvh)")
     s.set_defaults(run=run_style)
 
@@ -83,6 +99,11 @@ def parse_path(text: str) -> list[list[float]]:
     return out
 
 
+def path_length(points: list[list[float]]) -> float:
+    """Length (cm) of the polyline through ``points``."""
+    return float(sum(math.dist(a, b) for a, b in zip(points, points[1:])))
+
+
 def has_steps(graph, names: list[str]) -> bool:
     """Whether the graph has a transition from one of the walking primitives ``names``."""
     return any(graph.edges.get(n) for n in names)
@@ -99,13 +120,15 @@ def graph_primitives(rd: ResultsDir, names: list[str]) -> dict:
 
 
 def run_walk(args: argparse.Namespace) -> int:
-    from ..du2022.graph.generate import check_path, steps_for_path, walk_along_path, walk_settings
-    from ..du2022.graph.storage import load_graph
-
     rd = ResultsDir(Path(args.results), args.dataset)
     points = parse_path(args.path)
     if args.max_steps is not None and args.max_steps < 1:
         raise CLIError(f"--max-steps must be >= 1; got {args.max_steps}")
+    at_most(args.max_steps or 0, MAX_STEPS, "--max-steps", "steps per walk")
+    at_most(path_length(points), MAX_PATH_CM, "--path of length", "cm per walk")
+    from ..du2022.graph.generate import check_path, steps_for_path, walk_along_path, walk_settings  # after the checks
+    from ..du2022.graph.storage import load_graph
+
     out = out_file(args.out)
     try:
         path = check_path(points)
@@ -159,14 +182,15 @@ def _style_models(rd: ResultsDir) -> dict[tuple[str, str], Path]:
 
 
 def run_style(args: argparse.Namespace) -> int:
-    import torch
+    rd = ResultsDir(Path(args.results), args.dataset)
+    if args.n < 1:
+        raise CLIError(f"--n must be >= 1; got {args.n}")
+    at_most(args.n, MAX_SAMPLES, "--n", "samples per command (run again with another --seed for more)")
+    import torch  # after the checks: a refused request ends at once
 
     from ..du2022.style import FeatureSpace, load_vae
     from ..du2022.style.generate import load_rig, sample_motions
 
-    rd = ResultsDir(Path(args.results), args.dataset)
-    if args.n < 1:
-        raise CLIError(f"--n must be >= 1; got {args.n}")
     folder = out_dir(args.out)
     ae, _ = rd.require("the Du 2022 motion autoencoder", *AUTOENCODER, evaluations=STYLE_EVALUATIONS)
     rig_path, _ = rd.require("the Du 2022 style rig (skeleton, feature layout, frame rates)", *RIG)

@@ -9,6 +9,7 @@ from pathlib import Path
 from .common import (
     CLIError,
     ResultsDir,
+    at_most,
     dataset_rig,
     load_or_fail,
     note,
@@ -24,6 +25,9 @@ MODEL = "egges2004/idle_model.npz"
 MODEL_SETTINGS = "egges2004/idle_model.json"
 WHAT = "the Egges 2004 idle model"
 EVALUATIONS = ("egges2004_speed", "egges2004_identification", "egges2004_repetition", "egges2004_fitting")
+# Most seconds of idle motion one command writes: the motion is generated and written whole
+# (600 s at 120 fps: ~0.7 GB peak memory and ~45 s on the CI models).
+MAX_SECONDS = 600.0
 
 
 def add_parser(sub: argparse._SubParsersAction, common) -> None:
@@ -37,18 +41,19 @@ def add_parser(sub: argparse._SubParsersAction, common) -> None:
     p.add_argument(
         "--subject", default=None, help="whose idle motion (default: the first; `motionvar models` lists them)"
     )
-    p.add_argument("--seconds", type=float, default=60.0, help="length (s; default 60)")
+    p.add_argument("--seconds", type=float, default=60.0, help=f"length (s; default 60; at most {MAX_SECONDS:g})")
     p.add_argument("--no-variations", action="store_true", help="balance shifts only (leave out Sec. 6)")
     p.add_argument("--out", required=True, help="output BVH file")
     p.set_defaults(run=run)
 
 
 def run(args: argparse.Namespace) -> int:
-    from ..egges2004.generate import check_subject, idle_motion
-    from ..egges2004.storage import load_idle_model
-
     rd = ResultsDir(Path(args.results), args.dataset)
     seconds = positive(args.seconds, "--seconds")
+    at_most(seconds, MAX_SECONDS, "--seconds", "s of idle motion per command")
+    from ..egges2004.generate import check_subject, idle_motion  # after the checks
+    from ..egges2004.storage import load_idle_model
+
     out = out_file(args.out)
     path, _ = rd.require(WHAT, MODEL, MODEL_SETTINGS, evaluations=EVALUATIONS)
     model = load_or_fail(WHAT, load_idle_model, path)

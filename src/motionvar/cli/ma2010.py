@@ -9,6 +9,7 @@ from pathlib import Path
 from .common import (
     CLIError,
     ResultsDir,
+    at_most,
     dataset_rig,
     load_or_fail,
     note,
@@ -27,6 +28,9 @@ MODEL = "ma2010/style_variation.npz"
 MODEL_SETTINGS = "ma2010/style_variation.json"
 WHAT = "the Ma 2010 style-and-variation model"
 EVALUATIONS = ("ma2010_fig6",)  # the model is built where these are supported
+# Most seconds of walking (--seconds times --variants) one command writes: every walk is
+# predicted and written whole (60 s at 120 fps: ~15 s and ~0.25 GB on the CI models).
+MAX_SECONDS = 600.0
 
 
 def add_parser(sub: argparse._SubParsersAction, common) -> None:
@@ -52,7 +56,12 @@ def add_parser(sub: argparse._SubParsersAction, common) -> None:
         help="fix the latent variation of joint groups: A=..,B=..,C=..,D=.. (A legs, B left arm, C right "
         "arm, D upper body; any subset) or 4 numbers A,B,C,D; the others are drawn from Eq. 10",
     )
-    p.add_argument("--seconds", type=float, default=10.0, help="length of each walk (s; default 10)")
+    p.add_argument(
+        "--seconds",
+        type=float,
+        default=10.0,
+        help=f"length of each walk (s; default 10; at most {MAX_SECONDS:g} s over all variants)",
+    )
     p.add_argument("--variants", type=int, default=1, help="number of walks, each with its own xi (default 1)")
     p.add_argument(
         "--cleanup",
@@ -85,14 +94,15 @@ def parse_xi(text: str | None) -> dict[str, float]:
 
 
 def run(args: argparse.Namespace) -> int:
-    from ..ma2010.examples import root_solver
-    from ..ma2010.generate import STRIDE_TOLERANCE, check_style, check_xi, generate_walks
-    from ..ma2010.storage import load_style_variation_model
-
     rd = ResultsDir(Path(args.results), args.dataset)
     seconds = positive(args.seconds, "--seconds")
     if args.variants < 1:
         raise CLIError(f"--variants must be >= 1; got {args.variants}")
+    at_most(seconds * args.variants, MAX_SECONDS, "--seconds x --variants =", "s of walks per command")
+    from ..ma2010.examples import root_solver  # after the checks: a refused request ends at once
+    from ..ma2010.generate import STRIDE_TOLERANCE, check_style, check_xi, generate_walks
+    from ..ma2010.storage import load_style_variation_model
+
     style_in = parse_numbers(args.style, "--style")
     xi_in = parse_xi(args.xi)
     folder = out_dir(args.out)

@@ -9,24 +9,61 @@
 
 Every subcommand reads the model files of ``--results`` (default ``results``) and never
 fits anything. Errors a user can fix (a model not built yet, an argument outside what the
-model covers) are one line on stderr and exit status 2; no output file is left behind.
+model covers, a request above the command's size limit: its module's ``MAX_*``, checked
+before anything is loaded) are one line on stderr and exit status 2; no output file is
+left behind. Without ``--quiet`` a progress bar and the library's progress lines (e.g. each
+step of a graph walk) come on stderr. ``motionvar --version`` names the installed version.
 """
 
 from __future__ import annotations
 
 import argparse
+import contextlib
+import logging
 import sys
 from collections.abc import Sequence
 
 from . import du2022, egges2004, ma2010, models
 from .common import CLIError
 
+EXAMPLES = """examples:
+  motionvar models
+  motionvar ma2010 --style 135 --seconds 20 --variants 3 --out walks/
+
+`motionvar <command> --help` lists a command's options."""
+
+
+def version() -> str:
+    """The installed package's version (importlib.metadata), or "unknown" when motionvar
+    runs from a source tree that is not installed."""
+    from importlib.metadata import PackageNotFoundError
+    from importlib.metadata import version as installed
+
+    try:
+        return installed("motionvar")
+    except PackageNotFoundError:
+        return "unknown (not installed)"
+
+
+def _location(every_dataset: bool = False) -> argparse.ArgumentParser:
+    """--dataset and --results: where a run's models lie (every subcommand)."""
+    c = argparse.ArgumentParser(add_help=False)
+    g = c.add_argument_group("where the models lie")
+    g.add_argument(
+        "--dataset",
+        default=None if every_dataset else "synthetic",
+        help="dataset name under --results (default "
+        + ("every dataset there with models)" if every_dataset else "synthetic)"),
+    )
+    g.add_argument("--results", default="results", help="results folder of a pipeline run (default results)")
+    return c
+
 
 def _common() -> argparse.ArgumentParser:
-    c = argparse.ArgumentParser(add_help=False)
-    g = c.add_argument_group("common options")
-    g.add_argument("--dataset", default="synthetic", help="dataset name under --results (default synthetic)")
-    g.add_argument("--results", default="results", help="results folder of a pipeline run (default results)")
+    """The options of the commands that write BVH files: --dataset, --results, --seed,
+    --unit-cm, --quiet."""
+    c = argparse.ArgumentParser(add_help=False, parents=[_location()])
+    g = c.add_argument_group("output options")
     g.add_argument("--seed", type=int, default=0, help="random seed: the same seed gives the same output (default 0)")
     g.add_argument(
         "--unit-cm",
@@ -43,11 +80,41 @@ def build_parser() -> argparse.ArgumentParser:
         prog="motionvar",
         description="Generate BVH motion with the models a motionvar pipeline run saved under "
         "results/<dataset>/models/ (Ma et al. 2010, Egges et al. 2004, Du 2022).",
+        epilog=EXAMPLES,
+        formatter_class=argparse.RawDescriptionHelpFormatter,
     )
+    p.add_argument("--version", action="version", version=f"motionvar {version()}")
     sub = p.add_subparsers(dest="command", metavar="{models,ma2010,egges2004,du2022}", required=True)
-    for part in (models, ma2010, egges2004, du2022):  # each its own copy of the common options (set_defaults
+    models.add_parser(sub, lambda: _location(every_dataset=True))
+    for part in (ma2010, egges2004, du2022):  # each its own copy of the common options (set_defaults
         part.add_parser(sub, _common)  # on a subparser changes the default of a shared action)
     return p
+
+
+@contextlib.contextmanager
+def progress_lines(enabled: bool):
+    """While the command runs, the progress lines of the library's long loops
+    (motionvar.core.progress, e.g. each step of a graph walk) on stderr as ``motionvar:
+    <line>``; nothing with ``enabled`` False (--quiet)."""
+    if not enabled:
+        yield
+        return
+
+    class StderrHandler(logging.StreamHandler):
+        """Writes to the sys.stderr of the moment (which tests and callers may swap)."""
+
+        stream = property(lambda self: sys.stderr, lambda self, value: None)
+
+    logger = logging.getLogger("motionvar.progress")
+    handler, level = StderrHandler(), logger.level
+    handler.setFormatter(logging.Formatter("motionvar: %(message)s"))
+    logger.addHandler(handler)
+    logger.setLevel(logging.INFO)
+    try:
+        yield
+    finally:
+        logger.removeHandler(handler)
+        logger.setLevel(level)
 
 
 def main(argv: Sequence[str] | None = None) -> int:
@@ -55,9 +122,10 @@ def main(argv: Sequence[str] | None = None) -> int:
     (argparse's own usage errors exit with 2 through SystemExit)."""
     args = build_parser().parse_args(argv)
     try:
-        if not (args.unit_cm > 0):
+        if not (getattr(args, "unit_cm", 1.0) > 0):
             raise CLIError(f"--unit-cm must be > 0; got {args.unit_cm:g}")
-        return int(args.run(args) or 0)
+        with progress_lines(not getattr(args, "quiet", True)):
+            return int(args.run(args) or 0)
     except CLIError as exc:
         print(f"motionvar {args.command}: error: {exc}", file=sys.stderr)
         return 2

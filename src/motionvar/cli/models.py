@@ -18,7 +18,7 @@ def add_parser(sub: argparse._SubParsersAction, common) -> None:
         description="Which model files a pipeline run left for the dataset, which are missing (with "
         "the Snakemake target that builds them), and what each command accepts.",
     )
-    p.set_defaults(run=run, dataset=None)
+    p.set_defaults(run=run)
 
 
 def _files(rd: ResultsDir, relative: list[str], evaluations: tuple[str, ...] = ()) -> tuple[bool, list[str]]:

@@ -45,6 +45,8 @@ import numpy as np
 from scipy.optimize import Bounds, minimize
 from sklearn.decomposition import PCA
 
+from ..core.progress import ProgressLog
+
 # box constraints of the log-parameters (GPy constrains them positive); mu and Z are free
 _LOG_BOUNDS: dict[str, tuple[float, float]] = {
     "log_S": (-12.0, 5.0),
@@ -276,7 +278,16 @@ class BayesianGPLVM:
         # keep variances, lengthscales and noise in a sane range (GPy constrains them positive)
         lims = [_LOG_BOUNDS.get(k, (-np.inf, np.inf)) for k in names]
         bounds = Bounds(np.repeat([lo for lo, _ in lims], sizes), np.repeat([hi for _, hi in lims], sizes))
-        res = minimize(fun, theta0, jac=True, method="L-BFGS-B", bounds=bounds, options={"maxiter": int(self.max_iter)})
+        progress = ProgressLog(f"Bayesian GPLVM ({N} points) L-BFGS-B iteration", int(self.max_iter), at_most=True)
+        res = minimize(
+            fun,
+            theta0,
+            jac=True,
+            method="L-BFGS-B",
+            bounds=bounds,
+            callback=progress.scipy_callback(),
+            options={"maxiter": int(self.max_iter)},
+        )
         p = unpack(torch.as_tensor(res.x, dtype=torch.float64))
         with torch.no_grad():
             bound, (L, LB, c) = self._bound(p, Yt, YY, onehot)

@@ -1,4 +1,4 @@
-"""The README's "Results" section from merged claims tables: per paper, the verdict
+"""docs/results.md (linked from the README's "Results") from merged claims tables: per paper, the verdict
 counts and one line per claim (source, verdict, measured value); per further dataset,
 one line of counts. Regenerate with ``python tools/readme_results.py``."""
 

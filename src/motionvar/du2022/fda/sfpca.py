@@ -27,6 +27,7 @@ import time
 import numpy as np
 from scipy.optimize import minimize
 
+from ...core.progress import ProgressLog
 from .fpca import FPCA, functional_std, register_saved, zscore_weights
 from .functions import FunctionalMotions
 from .settings import SfpcaSettings
@@ -367,13 +368,20 @@ class SFPCA(FPCA):
 
             jac = True
         stall = StallTest(int(self.stop_window), float(self.stop_rtol))
+        progress = ProgressLog(f"SFPCA ({len(free)} weights) L-BFGS-B iteration", int(self.max_iter), at_most=True)
+
+        def callback(intermediate_result) -> None:
+            progress(loss=float(intermediate_result.fun))
+            if stall.window:
+                stall(intermediate_result)
+
         result = minimize(
             fun,
             np.ones(len(free)),
             jac=jac,
             method="L-BFGS-B",
             bounds=[self.bounds] * len(free),
-            callback=stall if stall.window else None,
+            callback=callback,
             options={"maxiter": int(self.max_iter), "ftol": float(self.tol)},
         )
         w = weights(result.x)

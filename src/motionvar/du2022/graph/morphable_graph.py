@@ -38,6 +38,7 @@ import pandas as pd
 
 from ...core.joint_map import JointMap
 from ...core.motion import Motion
+from ...core.progress import ProgressLog
 from ...core.quaternions import qmul, qrot, quat_about_axis
 from .constraints import Constraint, Objective
 from .primitive import MotionPrimitive
@@ -294,6 +295,7 @@ def follow_path(
     progress, current = 0.0, None
     starts: list[tuple[np.ndarray, np.ndarray]] = []  # placement of each step's start
     steps: list[StepResult] = []
+    step_log = ProgressLog(f"graph walk ({path.length:.0f} cm path) step", st.max_steps, at_most=True)
     while len(steps) < st.max_steps:
         if not w.options(current, path.length - progress):
             break
@@ -317,6 +319,7 @@ def follow_path(
             )
         )
         starts.append((pos, heading))
+        step_log(len(steps))
         pos, heading = _step_end(prim, fit.latent, pos, heading, w.joints)
         progress = max(progress, path.project(pos))
         current = name

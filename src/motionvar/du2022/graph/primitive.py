@@ -42,6 +42,7 @@ import pandas as pd
 from threadpoolctl import threadpool_limits
 
 from ...core.motion import Motion
+from ...core.progress import ProgressLog
 from ...core.quaternions import qnormalize
 from ...core.skeleton import Skeleton
 from ...io.atomic import atomic_write
@@ -127,10 +128,12 @@ def select_gmm(
     if lo > hi:
         raise ValueError(f"GMM: {len(X)} latent points cannot fit {k_range[0]} components")
     best, scores = None, {}
+    progress = ProgressLog(f"GMM ({len(X)} points, K = {lo}..{hi}) fit", hi - lo + 1)
     with threadpool_limits(1):  # small EM problems: BLAS threads only add overhead on a loaded machine
         for k in range(lo, hi + 1):
             gmm = GaussianMixture(k, covariance_type="full", reg_covar=reg_covar, random_state=seed, n_init=1).fit(X)
             scores[k] = float(gmm.bic(X) if criterion == "bic" else gmm.aic(X))
+            progress(k - lo + 1, scores[k])
             if best is None or scores[k] < scores[best.n_components]:
                 best = gmm
     return best, scores

@@ -46,6 +46,7 @@ import pandas as pd
 import torch
 from torch.optim.adam import adam as adam_update
 
+from ...core.progress import ProgressLog
 from ...core.threads import fixed_threads
 from ...io.dataset import MotionDataset
 from .data import example_features, primitive_features, select_style_example, training_windows, window_counts
@@ -212,6 +213,7 @@ def train_autoencoder(
     opt = cfg.make_optimizer(model.parameters())
     rows, t0 = [], time.perf_counter()
     best_loss, best_state, kept = np.inf, None, cfg.epochs
+    progress = ProgressLog("autoencoder epoch", cfg.epochs)
     for epoch in range(1, cfg.epochs + 1):
         total = 0.0
         for idx in _batches(len(x), cfg.batch_size, gen):
@@ -228,6 +230,7 @@ def train_autoencoder(
         if keep == "best" and end_loss < best_loss:
             best_loss, best_state, kept = end_loss, copy.deepcopy(model.state_dict()), epoch
         rows.append({"epoch": epoch, "loss": total / len(x), "end_loss": end_loss, "seconds": time.perf_counter() - t0})
+        progress(epoch, total / len(x))
     if keep == "best":
         model.load_state_dict(best_state)
     model.eval()
@@ -305,6 +308,7 @@ def _train_vae(
             raise ValueError(f"train_vae: style_maps must be ({K}, T_s); got {tuple(style_maps.shape)}")
     opt = cfg.make_optimizer(model.parameters())
     rows, t0 = [], time.perf_counter()
+    progress = ProgressLog(f"{'CVAE' if style_term is not None else 'VAE'} epoch", cfg.epochs)
     for epoch in range(1, cfg.epochs + 1):
         sums = np.zeros(4)
         for idx in _batches(N, cfg.batch_size, gen):
@@ -336,6 +340,7 @@ def _train_vae(
                 "active": active_units(model, y),
             }
         )
+        progress(epoch, float(sums[0]))
     model.eval()
     return model, pd.DataFrame(rows)
 

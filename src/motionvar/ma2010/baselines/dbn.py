@@ -22,6 +22,8 @@ import numpy as np
 from sklearn.exceptions import ConvergenceWarning
 from sklearn.linear_model import LassoLarsIC
 
+from ...core.progress import ProgressLog
+
 
 @dataclass(frozen=True)
 class LinearGaussianNode:
@@ -43,7 +45,9 @@ def _fit_nodes(inputs: np.ndarray, targets: np.ndarray, max_parents: int) -> lis
     noise = np.maximum((resid**2).sum(axis=0) / max(len(z) - full.shape[1], 1), 1e-12)
     gram = (z - z.mean(axis=0)).T @ (z - z.mean(axis=0))  # shared by every target's LARS path
     nodes = []
+    progress = ProgressLog(f"DBN ({len(z)} samples) node", targets.shape[1])
     for d in range(targets.shape[1]):  # loop over DOFs
+        progress(d)  # d nodes done
         y = targets[:, d]
         if np.std(y) < 1e-12:
             nodes.append(LinearGaussianNode(np.zeros(0, np.int64), np.zeros(0), float(y.mean()), 0.0))
@@ -59,6 +63,7 @@ def _fit_nodes(inputs: np.ndarray, targets: np.ndarray, max_parents: int) -> lis
         resid = y - design @ coef
         sigma = float(np.sqrt(resid @ resid / max(len(y) - design.shape[1], 1)))
         nodes.append(LinearGaussianNode(parents, coef[:-1], float(coef[-1]), sigma))
+    progress(len(nodes))
     return nodes
 
 
