@@ -9,6 +9,7 @@ from pathlib import Path
 import pytest
 import yaml
 from snakemake.utils import validate
+from test_config import load, merged
 
 from motionvar.config_sections import SECTIONS, settings_class
 from motionvar.core.settings import Settings
@@ -16,18 +17,6 @@ from motionvar.core.settings import Settings
 ROOT = Path(__file__).resolve().parents[1]
 SCHEMA_PATH = ROOT / "config" / "schema.yaml"
 SCHEMA = yaml.safe_load(SCHEMA_PATH.read_text())
-
-
-def load(name):
-    return yaml.safe_load((ROOT / "config" / name).read_text())
-
-
-def merged(base, over):
-    """Snakemake's merge of a --configfile over the workflow's configfile."""
-    out = copy.deepcopy(base)
-    for k, v in over.items():
-        out[k] = merged(out[k], v) if isinstance(v, dict) and isinstance(out.get(k), dict) else v
-    return out
 
 
 def validated(cfg):

@@ -45,15 +45,10 @@ class AutoencoderSettings(Settings):
 
 
 @dataclass(frozen=True)
-class VaeSettings(Settings):
-    """The neutral VAE of each primitive (Fig. 5.3, loss Eq. 5.6) and its training, Sec. 5.3.2, 5.4.1."""
+class NetworkTraining(Settings):
+    """The training of a VAE or a CVAE: Sec. 5.4.1 gives one setting for both ("For VAE and
+    CVAE model training, we set epochs to 1000 with a training rate of 0.00001")."""
 
-    SECTION = "style.vae"
-
-    latent: int = 32
-    """Latent dimensions (Sec. 5.3.2: 32)."""
-    samples_per_input: int = 10
-    """L, draws of z per input in Eq. 5.7 (Sec. 5.3.2: L = 10)."""
     epochs: int = 1000
     """Training epochs (Sec. 5.4.1: 1000)."""
     lr: float = 1.0e-5
@@ -66,7 +61,19 @@ class VaeSettings(Settings):
 
 
 @dataclass(frozen=True)
-class CvaeSettings(Settings):
+class VaeSettings(NetworkTraining):
+    """The neutral VAE of each primitive (Fig. 5.3, loss Eq. 5.6) and its training, Sec. 5.3.2, 5.4.1."""
+
+    SECTION = "style.vae"
+
+    latent: int = 32
+    """Latent dimensions (Sec. 5.3.2: 32)."""
+    samples_per_input: int = 10
+    """L, draws of z per input in Eq. 5.7 (Sec. 5.3.2: L = 10)."""
+
+
+@dataclass(frozen=True)
+class CvaeSettings(NetworkTraining):
     """The CVAE of each primitive and style (Eq. 5.9-5.11) and its training, Sec. 5.3.3, 5.4.1."""
 
     SECTION = "style.cvae"
@@ -81,15 +88,6 @@ class CvaeSettings(Settings):
     init_from_neutral: bool = True
     """Start from the neutral VAE's weights (the stylistic primitives are "deformed from" the
     neutral ones, Fig. 5.5)."""
-    epochs: int = 1000
-    """Training epochs (Sec. 5.4.1: 1000)."""
-    lr: float = 1.0e-5
-    """Learning rate (Sec. 5.4.1: 0.00001)."""
-    batch_size: int = 32
-    """Clips per minibatch (not given in the thesis)."""
-    optimizer: str = "sgd"
-    """adam, or sgd: plain minibatch gradient descent, the thesis' "stochastic gradient
-    descent" (Sec. 5.3.2)."""
 
 
 @dataclass(frozen=True)
