@@ -105,8 +105,9 @@ def test_autoencoder_rule_log_shows_epochs_at_the_interval(tmp_path, monkeypatch
     history = pd.read_csv(out / "autoencoder_history.csv")
     assert loop[-1]["step"] == epochs and loop[-1]["remaining"] == "0"
     assert_steady(loop, every)
-    expected = len(loop) - 1 <= history["seconds"].iloc[-1] / every + 1  # no more lines than the interval allows
-    assert expected and len(loop) >= 3, text
+    took = history["seconds"].iloc[-1]
+    assert len(loop) - 1 <= took / every + 1, text  # no more lines than the interval allows
+    assert len(loop) >= min(3, 1 + int(took / every)), text  # first, last, one per interval (a fast machine: fewer)
     for line in loop:
         assert float(line["loss"]) == pytest.approx(history["loss"].iloc[line["step"] - 1], rel=1e-5)
 
