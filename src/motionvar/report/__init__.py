@@ -1,0 +1,2 @@
+"""The claims summary, the per-seed stability table, the results page and the ``report``
+config section's settings."""
