@@ -39,14 +39,15 @@ SHIPPED = {
 def default_mismatches(schema_node, cls, where):
     """Where a schema object and a settings class disagree: keys on one side only, or a
     default written differently (the class's default is the one that counts)."""
-    defaults = cls().to_dict()
+    instance = cls()
+    defaults = instance.to_dict()
     props = schema_node["properties"]
     problems = [f"{where}.{k}: in the schema, not in {cls.__name__}" for k in sorted(set(props) - set(defaults))]
     problems += [f"{where}.{k}: in {cls.__name__}, not in the schema" for k in sorted(set(defaults) - set(props))]
     hints = {f.name: f.type for f in dataclasses.fields(cls)}
     for key in sorted(set(props) & set(defaults)):
         sub = props[key]
-        nested = getattr(cls(), key)
+        nested = getattr(instance, key)
         if isinstance(nested, Settings):
             problems += default_mismatches(sub, type(nested), f"{where}.{key}")
         elif "default" not in sub:

@@ -43,7 +43,6 @@ register_evaluation(
             )
         },
         params=EGGES_JOINT_MAP,
-        extra=("results/{dataset}/figures/egges2004_pc_extrema.png",),
     )
 )
 register_evaluation(
