@@ -11,6 +11,7 @@ import pytest
 from rule_scripts import FakeSnakemake, Named, run
 
 from motionvar.applicability import Need, applicability_table, unmet
+from motionvar.claim_catalog import specs_of
 from motionvar.claims import Claim, NotApplicable, evaluation_source, not_applicable_result
 from motionvar.du2022.fda.settings import FdaSettings
 from motionvar.du2022.graph.settings import GraphSettings
@@ -89,14 +90,17 @@ def test_every_paper_declares_its_evaluations_and_decides_from_the_data():
     assert not table.loc["du2022_fig4_10", "applicable"]
 
 
-def test_not_applicable_result_is_one_claim_with_the_reason():
-    result = not_applicable_result("egges2004_repetition", "no idle clips", checks="No repeats.", source="Sec. 6")
+def test_not_applicable_result_gives_each_claim_the_reason():
+    specs = specs_of("egges2004_repetition")
+    result = not_applicable_result(
+        "egges2004_repetition", "no idle clips", specs, checks="No repeats.", source="Sec. 6"
+    )
     (claim,) = result.claims
-    assert claim.claim_id == "egges2004.repetition.not_applicable" and claim.verdict == "not applicable"
-    assert claim.note == "no idle clips" and claim.source == "Sec. 6"
-    assert result.table["reason"].tolist() == ["no idle clips"]
+    assert claim.claim_id == "egges2004.sec6.variations_show_little_repetition" and claim.verdict == "not applicable"
+    assert claim.note == "no idle clips" and claim.kind == "replication" and claim.source == specs[0].source
+    assert result.table["reason"].tolist() == ["no idle clips"] and result.table["checks"].tolist() == ["No repeats."]
     with pytest.raises(ValueError, match="needs its reason"):
-        Claim("ma2010.x", "ma2010", "Fig. 6", "s", "p", "m", "not applicable", note="")
+        Claim("ma2010.x", "ma2010", "Fig. 6", "replication", "s", "p", "m", "not applicable", note="")
 
 
 @pytest.mark.parametrize(
@@ -114,8 +118,8 @@ def test_evaluation_source(ev, source):
 
 def test_summary_counts_undecided_verdicts_apart():
     claims = [
-        Claim("ma2010.a", "ma2010", "Fig. 6", "s", "p", "m", "reproduced"),
-        not_applicable_result("ma2010_fig8", "one subject").claims[0],
+        Claim("ma2010.a", "ma2010", "Fig. 6", "replication", "s", "p", "m", "reproduced"),
+        Claim("ma2010.b", "ma2010", "Fig. 8", "replication", "s", "p", "-", "not applicable", note="one subject"),
     ]
     table = pd.DataFrame([c.__dict__ for c in claims])
     html = claims_html(table, {"ma2010": "Ma et al. 2010"})
@@ -132,9 +136,12 @@ def test_an_evaluation_that_raises_not_applicable_writes_its_outputs(tmp_path):
         claims=str(tmp_path / "c.json"),
         gif=str(tmp_path / "a.gif"),
     )
-    run(FakeSnakemake(tmp_path, "ma2010_fig6", output=out, wildcards=Named(dataset="xia")), main)
-    (claim,) = json.loads((tmp_path / "c.json").read_text())
-    assert claim["verdict"] == "not applicable" and "leave-one-out needs 3" in claim["note"] and "xia" in claim["note"]
+    run(FakeSnakemake(tmp_path, "egges2004_repetition", output=out, wildcards=Named(dataset="xia")), main)
+    claims = json.loads((tmp_path / "c.json").read_text())
+    assert [c["claim_id"] for c in claims] == [s.claim_id for s in specs_of("egges2004_repetition")]
+    for claim in claims:
+        assert claim["verdict"] == "not applicable" and "leave-one-out needs 3" in claim["note"]
+        assert "xia" in claim["note"]
     assert (tmp_path / "f.png").stat().st_size > 0 and (tmp_path / "a.gif").stat().st_size > 0
     assert pd.read_csv(tmp_path / "t.csv")["verdict"].tolist() == ["not applicable"]
 

@@ -1,16 +1,27 @@
-"""The claims contract (motionvar.claims): the number a verdict comes from travels with the
-claim (value, bound, unit, direction), and claims written before those fields still read."""
+"""The claims contract (motionvar.claims): every claim says what kind of evidence it is, the number a
+verdict comes from travels with the claim (value, bound, unit, direction), a claim is judged by its
+declaration (ClaimSpec), and a claims table without the kind column is refused with its file named."""
 
 from __future__ import annotations
 
-import json
 import math
 
 import numpy as np
 import pandas as pd
 import pytest
 
-from motionvar.claims import CLAIM_COLUMNS, TEXT_COLUMNS, Claim, merge_claims, read_claims, write_claims
+from motionvar.claims import (
+    CLAIM_COLUMNS,
+    TEXT_COLUMNS,
+    Claim,
+    ClaimSpec,
+    Judgement,
+    judge_claims,
+    merge_claims,
+    read_claims,
+    verdict_threshold,
+    write_claims,
+)
 from motionvar.report.summary import read_claims_table
 
 
@@ -19,6 +30,7 @@ def claim(**kw) -> Claim:
         claim_id="ma2010.x",
         paper="ma2010",
         source="Fig. 6",
+        kind="replication",
         statement="s",
         published="p",
         measured="m",
@@ -44,11 +56,35 @@ def test_bad_values_are_refused(bad):
         claim(**bad)
 
 
-def test_claims_written_before_value_and_bound_still_read(tmp_path):
-    old = {k: "s" for k in TEXT_COLUMNS} | {"claim_id": "du2022.a", "paper": "du2022", "verdict": "reproduced"}
-    (tmp_path / "old.json").write_text(json.dumps([old]))
-    c = read_claims(tmp_path / "old.json")[0]
-    assert c.value is None and c.bound is None and c.unit == "" and c.direction == ""
-    pd.DataFrame([old]).to_csv(tmp_path / "old.csv", index=False)
-    table = read_claims_table(tmp_path / "old.csv")
-    assert list(table.columns) == list(CLAIM_COLUMNS) and table.loc[0, "value"] == ""
+def test_a_claim_without_a_known_kind_is_refused():
+    with pytest.raises(ValueError, match="kind 'proxy'"):
+        claim(kind="proxy")
+
+
+def test_a_claims_table_without_the_kind_column_names_its_file(tmp_path):
+    old = {k: "s" for k in TEXT_COLUMNS if k != "kind"} | {"claim_id": "du2022.a", "paper": "du2022"}
+    pd.DataFrame([old | {"verdict": "reproduced"}]).to_csv(tmp_path / "old.csv", index=False)
+    with pytest.raises(ValueError, match="old.csv: columns"):
+        read_claims_table(tmp_path / "old.csv")
+
+
+def _judge(m):
+    return Judgement(verdict_threshold(m["error"], 1.2, "<="), f"{m['error']:.2f} cm", "", m["error"], 1.2, "cm", "<=")
+
+
+SPEC = ClaimSpec(
+    "ma2010.fig6.x", "ma2010_fig6", "Fig. 6", "replication", "below 1.2 cm", "< 1.2 cm", "<= 1.2 cm", _judge
+)
+
+
+def test_a_declared_claim_is_judged_from_measurements():
+    (c,) = judge_claims([SPEC], "ma2010_fig6", {"error": 0.9})
+    assert (c.verdict, c.kind, c.value, c.bound, c.measured) == ("reproduced", "replication", 0.9, 1.2, "0.90 cm")
+    assert SPEC.claim({"error": 1.5}).verdict == "not reproduced"
+    assert SPEC.undecided("not testable", "one cycle").note == "one cycle"
+    with pytest.raises(ValueError, match="no claim declared"):
+        judge_claims([SPEC], "ma2010_fig8", {})
+    with pytest.raises(ValueError, match="kind"):
+        ClaimSpec("ma2010.y", "ma2010_fig6", "Fig. 6", "proof", "s", "p", "b", _judge)
+    with pytest.raises(ValueError, match="one paper"):
+        ClaimSpec("ma2010.y", "du2022_fig3_9", "Fig. 6", "stand-in", "s", "p", "b", _judge)

@@ -27,6 +27,7 @@ def table(rows: list[tuple]) -> pd.DataFrame:
                         cid,
                         cid.split(".")[0],
                         "Fig. 1",
+                        "replication",
                         "s",
                         "p",
                         "m",
@@ -69,7 +70,7 @@ def test_agreement_counts_and_the_stable_rule(five):
     # missing from one seed: a verdict of its own, 4 of 5 still stable
     assert t.loc["du2022.d", "verdict_s4"] == "missing" and t.loc["du2022.d", "n_agree"] == 4
     assert t.loc["du2022.d", "stable"]
-    assert list(t.reset_index().columns[:4]) == ["claim_id", "paper", "source", "statement"]
+    assert list(t.reset_index().columns[:4]) == ["claim_id", "paper", "source", "kind"]
 
 
 def test_interval_is_the_student_t_interval_of_the_mean(five):

@@ -634,8 +634,11 @@ def test_fig3_10(fda_curves):
     for c in result.claims:
         check_value_bound(c)
     walk_only = FdaSettings.from_dict({"reconstruction": {"primitives": ["walk_leftStance"]}})
-    no_pick = evaluate_fig3_10(fda_curves[:2], walk_only)
-    assert len(no_pick.claims) == 3
+    no_pick = evaluate_fig3_10(fda_curves[:2], walk_only)  # the normalized-FPCA claim is about picking
+    assert [c.verdict == "not applicable" for c in no_pick.claims] == [False, False, True, False]
+    assert "'pick_reach' is not among the reconstructed primitives" in no_pick.claims[2].note
+    for c in no_pick.claims:
+        check_value_bound(c)
     fig = draw_fig3_10(result)
     assert len(fig.axes) == 4
     plt.close(fig)

@@ -473,8 +473,16 @@ def test_dense_pick_segments_align_to_pick_reaches():
 
 
 def test_fig4_12_verdicts_follow_the_numbers():
-    from motionvar.du2022.graph.evaluations.fig4_12 import fig4_12_claims
-    from motionvar.du2022.graph.evaluations.sec4_6_1 import compactness_claim
+    from motionvar.claims import judge_claims
+    from motionvar.du2022.claims import CLAIMS
+    from motionvar.du2022.graph.evaluations.fig4_12 import fig4_12_measurements
+
+    def fig4_12_claims(summary, per_query):
+        return judge_claims(CLAIMS, "du2022_fig4_12", fig4_12_measurements(summary, per_query))
+
+    def compactness_claim(model_bytes, data_bytes):
+        m = dict(model_bytes=model_bytes, data_bytes=data_bytes, clips=1, frames=1)
+        return judge_claims(CLAIMS, "du2022_sec4_6_1", m)[0]
 
     rows = []
     for kind in ("position", "orientation", "pose"):

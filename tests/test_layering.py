@@ -30,6 +30,7 @@ LEVELS = {
     "egges2004": 3,
     "cli": 4,  # the `motionvar` command: glue over the papers and shared parts; nothing imports it
     "config_sections": 4,  # config section -> settings class of each paper (rule scripts, tests)
+    "claim_catalog": 4,  # every paper's claim declarations (rule scripts, report, tests)
 }
 PAPERS = {"ma2010", "du2022", "egges2004"}
 

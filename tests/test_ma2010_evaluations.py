@@ -6,6 +6,8 @@ import matplotlib
 
 matplotlib.use("Agg")  # noqa: E402  (tests draw figures to nowhere)
 
+import json
+
 import matplotlib.pyplot as plt
 import numpy as np
 import pandas as pd
@@ -13,6 +15,7 @@ import pytest
 from claim_checks import check_value_bound
 from ma2010_toywalk import toy_walk
 
+from motionvar.claim_catalog import spec
 from motionvar.claims import VERDICTS, NotApplicable
 from motionvar.core import cmu_joint_map
 from motionvar.io import load_dataset, save_dataset
@@ -67,9 +70,12 @@ def model(walks):
 
 def check(result, draw, claim_prefix):
     assert len(result.table) and result.claims
+    json.dumps(result.measurements)  # plain numbers, strings, lists and dicts of them
     for c in result.claims:
         assert c.claim_id.startswith(f"{PAPER}.{claim_prefix}") and c.verdict in VERDICTS
         check_value_bound(c)  # the number the verdict comes from travels with the claim
+        again = spec(c.claim_id).claim(result.measurements)  # the measurements alone decide the claim
+        assert (again.verdict, again.measured, again.kind) == (c.verdict, c.measured, spec(c.claim_id).kind)
     fig = draw(result)
     assert fig.axes
     plt.close(fig)
@@ -105,6 +111,9 @@ def test_fig3_step_phases_and_key_frames(tmp_path):
     result = fig3_keyframes(data, JM, TOY.replace(fig3_max_clips=1))
     assert set(result.table["behaviour"]) == {"walk"} and set(result.figure["shown"]) == {"walk"}
     assert set(result.table["extremum"]) == {"max", "min"} and (result.table["part"] == "lower").all()
+    # no run clips: no run claim (nothing to judge), and the walk's claim judged on its own scan
+    assert [c.claim_id for c in result.claims] == ["ma2010.fig3.walk_keyframes_at_one_gait_phase"]
+    assert set(result.measurements["behaviours"]) == {"walk"} and result.measurements["max_clips"] == 1
     check(result, figures.draw_fig3, "fig3.walk_keyframes")
 
 

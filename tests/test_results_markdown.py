@@ -1,36 +1,58 @@
-"""docs/results.md from merged claims tables (tools/readme_results.py)."""
+"""docs/results.md and README's counts from merged claims tables (tools/readme_results.py)."""
 
 import pandas as pd
 
-from motionvar.claims import Claim, not_applicable_result
+from motionvar.claims import Claim
 from motionvar.report.results_markdown import results_markdown, verdict_counts
+from motionvar.report.stability import claims_stability
 
 
 def _table(claims):
     return pd.DataFrame([c.__dict__ for c in claims])
 
 
-def test_results_markdown_counts_and_lists_claims():
-    main = _table(
-        [
-            Claim("ma2010.a", "ma2010", "Fig. 6", "stride | error", "<1.2", "0.9 cm", "reproduced"),
-            Claim("du2022.b", "du2022", "Fig. 3.9", "rmse falls", "-", "5/5", "partial"),
-        ]
-    )
+def _claim(cid, kind, verdict, statement="s", measured="m", **kw):
+    return Claim(cid, cid.split(".")[0], "Fig. 6", kind, statement, "<1.2", measured, verdict, **kw)
+
+
+MAIN = _table(
+    [
+        _claim("ma2010.a", "replication", "reproduced", "stride | error", "0.9 cm", value=0.9, bound=1.2, unit="cm"),
+        _claim("ma2010.b", "stand-in", "partial"),
+        _claim("ma2010.c", "consistency", "reproduced"),
+        _claim("du2022.b", "replication", "partial"),
+    ]
+)
+
+
+def test_results_count_by_paper_and_kind_and_list_claims():
     xia = _table(
         [
-            Claim("ma2010.a", "ma2010", "Fig. 6", "s", "p", "m", "not reproduced"),
-            not_applicable_result("egges2004_speed", "no idle clips", source="Sec. 8").claims[0],
+            _claim("ma2010.a", "replication", "not reproduced"),
+            _claim("egges2004.s", "consistency", "not applicable", note="no idle clips"),
         ]
     )
-    md = results_markdown(main, "synthetic", {"xia": xia}, "config/config.yaml")
-    assert "1 reproduced, 1 partial, 0 not reproduced" in md
-    assert "| Fig. 6 | stride \\| error | reproduced | 0.9 cm |" in md
-    assert (
-        "- `xia`: 2 claims: 0 reproduced, 0 partial, 1 not reproduced, 1 not applicable; not applicable: "
-        "Sec. 8 (egges2004)." in md
-    )
+    md = results_markdown(MAIN, "synthetic", {"xia": xia}, "config/config.yaml")
+    assert "| Ma et al. 2010 | replication | 1 | 1 reproduced, 0 partial, 0 not reproduced |" in md
+    assert "| Ma et al. 2010 | stand-in | 1 | 0 reproduced, 1 partial, 0 not reproduced |" in md
+    assert "| Ma et al. 2010 | consistency | 1 | 1 checks: 1 hold, 0 fail |" in md
+    assert "| Fig. 6 | replication | stride \\| error | reproduced | - | - | 0.9 cm |" in md
+    assert "- `xia`: 2 claims: replication 0 reproduced, 0 partial, 1 not reproduced; consistency 1 checks: " in md
     assert "### Egges et al. 2004" in md and "*(no claims)*" in md
+
+
+def test_a_verdict_that_fewer_than_four_of_five_seeds_give_is_unstable():
+    seeds = {}
+    for i in range(5):
+        t = MAIN.copy()
+        t.loc[t.claim_id == "ma2010.a", "verdict"] = "reproduced" if i < 3 else "partial"
+        t.loc[t.claim_id == "ma2010.a", "value"] = 0.9 + i / 10
+        seeds[f"s{i}"] = t.astype(str)
+    stability = claims_stability(seeds)
+    md = results_markdown(MAIN, "s0", None, "", stability)
+    assert "| Ma et al. 2010 | replication | 1 | 0 reproduced, 0 partial, 0 not reproduced, 1 unstable |" in md
+    assert "| unstable (reproduced) | 3/5 | 1.1 [0.904, 1.3] cm |" in md
+    assert "| Ma et al. 2010 | stand-in | 1 | 0 reproduced, 1 partial, 0 not reproduced |" in md
 
 
 def test_verdict_counts_leaves_out_absent_undecided_verdicts():

@@ -756,7 +756,10 @@ def test_evaluate_table5_2(style_run, layout):
     assert result.claims[2].value == n_own / 2
     for c in result.claims:
         check_value_bound(c)
-    assert "Step_SD (cm; means over primitives and styles)" in result.claims[2].note
+    assert "Step_SD (cm; mean over primitives) from the neutral clips" in result.claims[1].note
+    assert result.measurements["rows"]["walk_leftStance"]["models"]["proud"]["training_pose_sd"] == pytest.approx(
+        tt.loc["proud", "training_pose_sd"], abs=1e-5
+    )
     fig = draw_table5_2(result)
     assert any(coll.get_label() == "own training data" for ax in fig.axes for coll in ax.collections)
     # published bars for the thesis' rows only (none for the autoencoder baseline)

@@ -17,7 +17,9 @@ from motionvar.io.bvh import write_bvh
 
 
 def claim(i, verdict="reproduced", paper="du2022"):
-    return Claim(f"{paper}.c{i}", paper, f"Fig. {i}", f"statement {i}", "< 1 cm", f"{i / 10:.1f} cm", verdict)
+    return Claim(
+        f"{paper}.c{i}", paper, f"Fig. {i}", "replication", f"statement {i}", "< 1 cm", f"{i / 10:.1f} cm", verdict
+    )
 
 
 def test_claims_merge_and_summary(tmp_path):
@@ -45,21 +47,15 @@ def test_claims_merge_and_summary(tmp_path):
     for colour in ("#c9ecd0", "#ffe8a8", "#f6c6c6"):
         assert colour in html
     assert "statement 3" in html and "&lt; 1 cm" in html and "across seeds" not in html
-    # with a stability run's table, each verdict says whether the seeds agree on it
+    # with a stability run's table (this dataset among its seeds), each verdict says how many seeds give it
     stab = tmp_path / "claims_stability.csv"
-    pd.DataFrame(
-        {
-            "claim_id": ["du2022.c1", "ma2010.c3"],
-            "verdict": ["reproduced", "partial"],
-            "n_agree": [5, 3],
-            "n_seeds": [5, 5],
-            "stable": [True, False],
-        }
-    ).to_csv(stab, index=False)
+    seeds = {f"verdict_{s}": ["reproduced", "not reproduced"] for s in ("test", "b", "c")}
+    seeds |= {"verdict_d": ["reproduced", "partial"], "verdict_e": ["partial", "partial"]}
+    pd.DataFrame({"claim_id": ["du2022.c1", "ma2010.c3"], **seeds}).to_csv(stab, index=False)
     fake.params = Named(categories={}, stability=str(stab))
     run(fake, script("claims_summary").main)
     html = html_out.read_text()
-    assert "stable across seeds: reproduced in 5/5" in html and "NOT stable across seeds: partial in 3/5" in html
+    assert "4 of 5 seeds give it" in html and "UNSTABLE: 3 of 5 seeds give it" in html
     assert "not in the stability run" in html  # du2022.c2
 
 
@@ -126,7 +122,7 @@ def test_claims_merge_rejects_duplicate_claim_ids(tmp_path, capsys):
 def test_claims_summary_rejects_a_table_with_unknown_verdicts(tmp_path, capsys):
     table = tmp_path / "claims.csv"
     pd.DataFrame(
-        [dict(zip(CLAIM_COLUMNS, ["du2022.x", "du2022", "s", "s", "s", "s", "maybe", "", "", "", "", ""]))]
+        [{**dict.fromkeys(CLAIM_COLUMNS, "s"), "claim_id": "du2022.x", "paper": "du2022", "verdict": "maybe"}]
     ).to_csv(table, index=False)
     out = tmp_path / "summary.html"
     fake = FakeSnakemake(

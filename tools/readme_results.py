@@ -1,11 +1,13 @@
-"""Rewrite docs/results.md (every claim of the last runs) from the merged claims of finished runs.
+"""Rewrite docs/results.md (every claim of the last runs) and the counts of README's Results from the
+merged claims of finished runs.
 
     python tools/readme_results.py [--main synthetic] [--others xia bandai_ds1 dfki_markerless]
-        [--note "config/config.yaml, 25 subjects"]
+        [--stability results/stability_full/claims_stability.csv] [--note "config/config.yaml, 25 subjects"]
 
-Reads results/<dataset>/claims.csv (the `claims` rule's output) and replaces the text
-between the markers <!-- results:start --> and <!-- results:end --> of docs/results.md
-(the README's "Results" section gives the counts and links there).
+Reads results/<dataset>/claims.csv (the `claims` rule's output) and, where it exists, the
+full-size stability run's table (config/seeds_full.yaml, rule claims_stability), and replaces the
+text between the markers <!-- results:start --> and <!-- results:end --> of docs/results.md and
+between <!-- counts:start --> and <!-- counts:end --> of README.md (the counts per paper and kind).
 A dataset whose claims file is missing is left out with a warning.
 """
 
@@ -17,10 +19,12 @@ from pathlib import Path
 
 import pandas as pd
 
-from motionvar.report.results_markdown import results_markdown
+from motionvar.report.counts import seed_agreement, shown_verdicts
+from motionvar.report.results_markdown import counts_markdown, results_markdown
 
 ROOT = Path(__file__).resolve().parents[1]
 START, END = "<!-- results:start -->", "<!-- results:end -->"
+COUNTS_START, COUNTS_END = "<!-- counts:start -->", "<!-- counts:end -->"
 
 
 def read(dataset: str) -> pd.DataFrame | None:
@@ -31,25 +35,37 @@ def read(dataset: str) -> pd.DataFrame | None:
     return pd.read_csv(path, dtype=str, keep_default_na=False)
 
 
+def replace_between(path: Path, start: str, end: str, body: str) -> None:
+    """Replace the text between the markers ``start`` and ``end`` of ``path`` by ``body``."""
+    text = path.read_text(encoding="utf-8")
+    if start not in text or end not in text:
+        sys.exit(f"error: {path} has no {start} ... {end} markers")
+    head, rest = text.split(start, 1)
+    _, tail = rest.split(end, 1)
+    path.write_text(f"{head}{start}\n{body}{end}{tail}", encoding="utf-8")
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--main", default="synthetic")
     parser.add_argument("--others", nargs="*", default=["xia", "bandai_ds1", "dfki_markerless"])
+    parser.add_argument("--stability", default="results/stability_full/claims_stability.csv")
     parser.add_argument("--note", default="")
     args = parser.parse_args()
     main_claims = read(args.main)
     if main_claims is None:
         sys.exit(f"error: no claims for {args.main}")
     others = {name: t for name in args.others if (t := read(name)) is not None}
-    readme = ROOT / "docs" / "results.md"
-    text = readme.read_text(encoding="utf-8")
-    if START not in text or END not in text:
-        sys.exit(f"error: {readme} has no {START} ... {END} markers")
-    head, rest = text.split(START, 1)
-    _, tail = rest.split(END, 1)
-    body = results_markdown(main_claims, args.main, others, args.note)
-    readme.write_text(f"{head}{START}\n{body}{END}{tail}", encoding="utf-8")
-    print(f"{readme}: Results from {args.main} and {len(others)} further dataset(s)")
+    stability_path = ROOT / args.stability
+    stability = pd.read_csv(stability_path) if stability_path.is_file() else None
+    if stability is None:
+        print(f"warning: {stability_path} missing: verdicts without their agreement over seeds", file=sys.stderr)
+    body = results_markdown(main_claims, args.main, others, args.note, stability)
+    replace_between(ROOT / "docs" / "results.md", START, END, body)
+    agreement = seed_agreement(main_claims, stability, args.main) if stability is not None else None
+    counts = counts_markdown(main_claims, shown_verdicts(main_claims, agreement))
+    replace_between(ROOT / "README.md", COUNTS_START, COUNTS_END, counts)
+    print(f"docs/results.md and README.md: Results from {args.main} and {len(others)} further dataset(s)")
 
 
 if __name__ == "__main__":

@@ -16,7 +16,7 @@ from __future__ import annotations
 import json
 import math
 import numbers
-from collections.abc import Iterable, Sequence
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import asdict, dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
@@ -27,7 +27,12 @@ if TYPE_CHECKING:  # pandas is imported where a table is built: every rule impor
 CHECKED_VERDICTS = ("reproduced", "partial", "not reproduced")
 UNDECIDED_VERDICTS = ("not testable", "not applicable")
 VERDICTS = CHECKED_VERDICTS + UNDECIDED_VERDICTS
-TEXT_COLUMNS = ("claim_id", "paper", "source", "statement", "published", "measured", "verdict", "note")
+#: the kinds of evidence (docs/claims.md): the paper's own experiment, a stated proxy for what the paper judged by
+#: eye or cited, and a check that is true by construction (listed, never counted as reproduction)
+KINDS = ("replication", "stand-in", "consistency")
+#: the kinds that count towards a reproduction rate, each apart
+EVIDENCE_KINDS = ("replication", "stand-in")
+TEXT_COLUMNS = ("claim_id", "paper", "source", "kind", "statement", "published", "measured", "verdict", "note")
 CLAIM_COLUMNS = (*TEXT_COLUMNS, "value", "bound", "unit", "direction")
 #: how a claim's ``value`` is compared with its ``bound`` for the verdict
 DIRECTIONS = ("<=", ">=", "<", ">", "")
@@ -47,6 +52,7 @@ class Claim:
     claim_id: str
     paper: str
     source: str
+    kind: str
     statement: str
     published: str
     measured: str
@@ -64,6 +70,8 @@ class Claim:
             raise ValueError(f"claim {self.claim_id}: id must start with the paper key {self.paper!r}")
         if self.verdict in UNDECIDED_VERDICTS and not self.note.strip():
             raise ValueError(f"claim {self.claim_id}: a {self.verdict!r} claim needs its reason in the note")
+        if self.kind not in KINDS:
+            raise ValueError(f"claim {self.claim_id}: kind {self.kind!r} not in {KINDS}")
         if self.direction not in DIRECTIONS:
             raise ValueError(f"claim {self.claim_id}: direction {self.direction!r} not in {DIRECTIONS}")
         for name in ("value", "bound"):
@@ -72,6 +80,102 @@ class Claim:
                 if isinstance(v, bool) or not isinstance(v, numbers.Real):
                     raise ValueError(f"claim {self.claim_id}: {name} must be a number or None; got {v!r}")
                 object.__setattr__(self, name, float(v))  # numpy scalars -> float (JSON)
+
+
+@dataclass(frozen=True)
+class Judgement:
+    """What a claim's verdict function makes of its evaluation's measurements: the verdict, the
+    measured numbers as text, the number it was decided on (``value`` against ``bound`` in
+    ``direction``, in ``unit``) and the note (at most three sentences: what was measured, how it
+    differs from the paper's setup)."""
+
+    verdict: str
+    measured: str
+    note: str = ""
+    value: float | None = None
+    bound: float | None = None
+    unit: str = ""
+    direction: str = ""
+
+
+@dataclass(frozen=True)
+class ClaimSpec:
+    """One claim as its paper declares it (``motionvar.<paper>.claims``): what the paper states,
+    where, the kind of evidence our check is, the bound in words, and ``judge``, the function from
+    the measurements of ``evaluation`` (a mapping of numbers, :attr:`EvaluationResult.measurements`)
+    to a :class:`Judgement`. The verdict is computed there and nowhere else."""
+
+    claim_id: str
+    evaluation: str
+    source: str
+    kind: str
+    statement: str
+    published: str
+    bound: str
+    judge: Callable[[Mapping[str, Any]], Judgement]
+
+    def __post_init__(self) -> None:
+        if self.kind not in KINDS:
+            raise ValueError(f"claim {self.claim_id}: kind {self.kind!r} not in {KINDS}")
+        if not self.claim_id.startswith(self.paper + ".") or not self.evaluation.startswith(self.paper + "_"):
+            raise ValueError(f"claim {self.claim_id}: id and evaluation {self.evaluation!r} must name one paper")
+
+    @property
+    def paper(self) -> str:
+        return self.claim_id.partition(".")[0]
+
+    def claim(self, measurements: Mapping[str, Any]) -> Claim:
+        """The claim with its verdict, judged from ``measurements``."""
+        j = self.judge(measurements)
+        return Claim(
+            claim_id=self.claim_id,
+            paper=self.paper,
+            source=self.source,
+            kind=self.kind,
+            statement=self.statement,
+            published=self.published,
+            measured=j.measured,
+            verdict=j.verdict,
+            note=j.note,
+            value=j.value,
+            bound=j.bound,
+            unit=j.unit,
+            direction=j.direction,
+        )
+
+    def undecided(self, verdict: str, reason: str) -> Claim:
+        """The claim left undecided (``not applicable`` or ``not testable``) with ``reason``."""
+        if verdict not in UNDECIDED_VERDICTS:
+            raise ValueError(f"claim {self.claim_id}: {verdict!r} is not one of {UNDECIDED_VERDICTS}")
+        return Claim(
+            claim_id=self.claim_id,
+            paper=self.paper,
+            source=self.source,
+            kind=self.kind,
+            statement=self.statement,
+            published=self.published,
+            measured="-",
+            verdict=verdict,
+            note=reason,
+        )
+
+
+def judge_claims(specs: Iterable[ClaimSpec], evaluation: str, measurements: Mapping[str, Any]) -> list[Claim]:
+    """The claims of ``evaluation`` among ``specs`` (a paper's declarations), in declaration order,
+    each judged from ``measurements``."""
+    claims = [spec.claim(measurements) for spec in specs if spec.evaluation == evaluation]
+    if not claims:
+        raise ValueError(f"no claim declared for evaluation {evaluation!r}")
+    return claims
+
+
+def specs_table(specs: Iterable[ClaimSpec]) -> pd.DataFrame:
+    """A paper's declarations as one table (id, evaluation, source, kind, statement, published,
+    bound): every claim and its bound on one screen."""
+    import pandas as pd
+
+    cols = ("claim_id", "evaluation", "source", "kind", "statement", "published", "bound")
+    return pd.DataFrame([{c: getattr(s, c) for c in cols} for s in specs], columns=list(cols))
 
 
 class NotApplicable(Exception):
@@ -88,13 +192,15 @@ class NotApplicable(Exception):
 @dataclass
 class EvaluationResult:
     """What an evaluation function returns: its ``table`` (written as the evaluation's
-    CSV), its ``claims`` (built by the evaluation that measured them) and ``figure``, the
-    numbers its figure draws (passed to the paper's ``figures.py``; keys are the
-    evaluation's own)."""
+    CSV), its ``claims`` (judged from ``measurements`` by the paper's declarations,
+    :func:`judge_claims`), ``figure``, the numbers its figure draws (passed to the paper's
+    ``figures.py``; keys are the evaluation's own), and ``measurements``, the numbers its
+    claims are judged from."""
 
     table: pd.DataFrame
     claims: list[Claim]
     figure: dict[str, Any] = field(default_factory=dict)
+    measurements: dict[str, Any] = field(default_factory=dict)
 
 
 _SOURCE_KINDS = {"fig": "Fig.", "table": "Table", "sec": "Sec."}
@@ -111,28 +217,22 @@ def evaluation_source(evaluation: str) -> str:
     return evaluation
 
 
-def not_applicable_result(evaluation: str, reason: str, checks: str = "", source: str = "") -> EvaluationResult:
-    """The outputs of an evaluation that a dataset cannot support: one claim
-    ``<paper>.<evaluation>.not_applicable`` with verdict ``not applicable`` and ``reason``
-    in its note, a one-row table saying so, and the reason for the figure."""
+def not_applicable_result(
+    evaluation: str, reason: str, specs: Iterable[ClaimSpec] = (), checks: str = "", source: str = ""
+) -> EvaluationResult:
+    """The outputs of an evaluation that a dataset cannot support: each of its claims (``specs``,
+    the paper's declarations; those of other evaluations are skipped) with verdict ``not
+    applicable`` and ``reason`` in its note, a one-row table saying so, and the reason for the
+    figure. ``checks`` says in words what the evaluation checks (the table's column)."""
     import pandas as pd
 
-    paper, _, rest = evaluation.partition("_")
+    paper = evaluation.partition("_")[0]
     source = source or evaluation_source(evaluation)
-    statement = checks or f"The checks of {source}."
-    claim = Claim(
-        claim_id=f"{paper}.{rest or evaluation}.not_applicable",
-        paper=paper,
-        source=source,
-        statement=statement,
-        published="-",
-        measured="-",
-        verdict="not applicable",
-        note=reason,
-    )
-    table = pd.DataFrame([{"evaluation": evaluation, "source": source, "verdict": "not applicable", "reason": reason}])
+    claims = [s.undecided("not applicable", reason) for s in specs if s.evaluation == evaluation]
+    row = {"evaluation": evaluation, "source": source, "checks": checks or f"the checks of {source}"}
+    table = pd.DataFrame([{**row, "verdict": "not applicable", "reason": reason}])
     return EvaluationResult(
-        table=table, claims=[claim], figure={"title": f"{paper} {source}", "reason": reason, "not_applicable": True}
+        table=table, claims=claims, figure={"title": f"{paper} {source}", "reason": reason, "not_applicable": True}
     )
 
 

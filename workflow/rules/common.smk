@@ -24,10 +24,10 @@ SUMMARY_CATEGORY = "Summary"
 
 # outputs of rule claims_stability (stability.smk), in the default target when config
 # stability.datasets names the datasets of a seeds run (config/seeds.yaml)
-STABILITY = "results/stability"
+STABILITY = config.get("stability", {}).get("folder", "results/stability")
 STABILITY_CSV = f"{STABILITY}/claims_stability.csv"
 STABILITY_OUTPUTS = [STABILITY_CSV, f"{STABILITY}/claims_stability.png", f"{STABILITY}/claims_stability.html"]
-STABILITY_REPORT = "reports/stability.html"
+STABILITY_REPORT = f"reports/{os.path.basename(STABILITY)}.html"
 
 # Scheduling (`priority:` of the rules on the run's long chains; every other rule has 0). On a
 # few cores the wall time is set by when the long chains start: left to input sizes, the
@@ -122,6 +122,19 @@ def validate_config(schema_path):
             )
     if len(stability_datasets()) == 1:
         raise WorkflowError("Invalid configuration: stability.datasets needs at least 2 datasets (one per seed)")
+
+
+def stability_table_of(dataset):
+    """The claims-stability table (results/*/claims_stability.csv, rule claims_stability) whose
+    seeds include ``dataset``, or "" when no stability run has it; the newest when several do."""
+    import glob
+
+    found = []
+    for path in glob.glob("results/*/claims_stability.csv"):
+        with open(path, encoding="utf-8") as f:
+            if f"verdict_{dataset}" in f.readline().rstrip("\n").split(","):
+                found.append(path)
+    return max(found, key=os.path.getmtime) if found else ""
 
 
 def stability_datasets():

@@ -90,8 +90,9 @@ rule claims_summary:
         ),
     params:
         categories=PAPER_CATEGORY,
-        # a stability run's table, where one exists (rule claims_stability): each verdict marked stable or not
-        stability=STABILITY_CSV if os.path.exists(STABILITY_CSV) else "",
+        # the table of a stability run that has this dataset among its seeds (rule claims_stability), where one
+        # exists: each verdict marked stable or not
+        stability=lambda wc: stability_table_of(wc.dataset),
     log:
         ev_log("claims_summary"),
     benchmark:

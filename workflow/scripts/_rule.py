@@ -150,17 +150,20 @@ def _fail(snakemake, log, message: str) -> None:
 
 def write_not_applicable(snakemake, reason: str) -> None:
     """The evaluation's outputs when its input turns out insufficient (NotApplicable):
-    the not-applicable claim with ``reason``, a table and a figure saying so; further
+    each of its claims not applicable with ``reason``, a table and a figure saying so; further
     outputs of the rule (figures, GIFs, tables) say the same."""
     import matplotlib.pyplot as plt
     import numpy as np
 
+    from motionvar.claim_catalog import specs_of
     from motionvar.claims import evaluation_source, not_applicable_result
     from motionvar.plots import write_gif
     from motionvar.plots.notice import draw_notice
 
     ev = snakemake.rule
-    result = not_applicable_result(ev, f"Not applicable to dataset {snakemake.wildcards.dataset}: {reason}")
+    result = not_applicable_result(
+        ev, f"Not applicable to dataset {snakemake.wildcards.dataset}: {reason}", specs_of(ev)
+    )
     title = f"{evaluation_source(ev)} ({ev}): not applicable"
     write_evaluation(snakemake, result, lambda r: draw_notice(title, reason))
     written = {str(snakemake.output.table), str(snakemake.output.figure), str(snakemake.output.claims)}

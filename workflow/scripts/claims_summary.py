@@ -1,6 +1,6 @@
 """Rule claims_summary: the merged claims as an HTML page, one table per paper with the
 verdicts coloured (results/{dataset}/claims_summary.html), each marked stable or not
-where a stability run exists (results/stability/claims_stability.csv)."""
+where a stability run has the dataset among its seeds (results/*/claims_stability.csv)."""
 
 
 def main(snakemake) -> None:
@@ -17,6 +17,7 @@ def main(snakemake) -> None:
         paper_titles=snakemake.params.categories,
         title=f"Claims checked on dataset '{snakemake.wildcards.dataset}'",
         stability=stability,
+        dataset=snakemake.wildcards.dataset,
     )
     Path(snakemake.output[0]).write_text(html, encoding="utf-8")
 

@@ -1,4 +1,4 @@
-"""Rules not_applicable_<paper>: the table, figure and claim of an evaluation the dataset
+"""Rules not_applicable_<paper>: the table, figure and claims of an evaluation the dataset
 cannot support, with the reason from checkpoint applicability."""
 
 
@@ -6,6 +6,7 @@ def main(snakemake) -> None:
     import pandas as pd
     from _rule import write_evaluation
 
+    from motionvar.claim_catalog import specs_of
     from motionvar.claims import not_applicable_result
     from motionvar.plots.notice import draw_notice
 
@@ -17,6 +18,7 @@ def main(snakemake) -> None:
     result = not_applicable_result(
         ev,
         f"Not applicable to dataset {snakemake.wildcards.dataset}: {row.reason}",
+        specs_of(ev),
         checks=row.checks,
         source=row.source,
     )

@@ -1,14 +1,17 @@
-"""docs/results.md (linked from the README's "Results") from merged claims tables: per paper, the verdict
-counts and one line per claim (source, verdict, measured value); per further dataset,
-one line of counts. Regenerate with ``python tools/readme_results.py``."""
+"""docs/results.md and README's Results counts (tools/readme_results.py) from merged claims tables:
+per paper and kind of evidence, the verdict counts (``unstable`` where a stability run's seeds do not
+share the verdict); per paper one line per claim (source, kind, verdict, how many seeds give it, the
+value's interval over the seeds, the measured value); per further dataset, one line of counts."""
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping
 
 import pandas as pd
 
 from ..claims import CHECKED_VERDICTS, UNDECIDED_VERDICTS
+from .counts import counts_text, kind_counts, seed_agreement, shown_verdicts
 
 PAPER_TITLES = {"ma2010": "Ma et al. 2010", "du2022": "Du 2022", "egges2004": "Egges et al. 2004"}
 
@@ -24,43 +27,97 @@ def _cell(text: str) -> str:
     return str(text).replace("|", "\\|").replace("\n", " ")
 
 
-def paper_results(claims: pd.DataFrame, paper: str) -> str:
-    """Markdown of one paper's claims: counts, then a table source | claim | verdict | measured."""
-    rows = claims[claims["paper"] == paper].sort_values("claim_id", kind="stable")
+def counts_markdown(claims: pd.DataFrame, shown: pd.Series, titles: Mapping[str, str] = PAPER_TITLES) -> str:
+    """A table paper | kind | claims | verdicts (:func:`motionvar.report.counts.kind_counts`)."""
+    lines = ["| paper | kind | claims | verdicts |", "|---|---|---|---|"]
+    for row in kind_counts(claims, shown).to_dict("records"):
+        title = titles.get(row["paper"], row["paper"])
+        lines.append(f"| {title} | {row['kind']} | {row['claims']} | {counts_text(row)} |")
+    return "\n".join(lines) + "\n"
+
+
+def _interval(stability: pd.DataFrame | None, claim_id: str, unit: str) -> str:
+    if stability is None or claim_id not in set(stability["claim_id"]):
+        return "-"
+    r = stability.set_index("claim_id").loc[claim_id]
+    mean, low, high = (float(r[c]) for c in ("value_mean", "value_ci_low", "value_ci_high"))
+    if not math.isfinite(mean):
+        return "-"
+    if not math.isfinite(low):
+        return f"{mean:.3g} {unit}".strip()
+    return f"{mean:.3g} [{low:.3g}, {high:.3g}] {unit}".strip()
+
+
+def paper_results(
+    claims: pd.DataFrame,
+    paper: str,
+    shown: pd.Series,
+    agreement: pd.DataFrame | None = None,
+    stability: pd.DataFrame | None = None,
+) -> str:
+    """Markdown of one paper's claims: source | kind | claim | verdict | seeds | value over the
+    seeds | measured, ordered by kind (replication, stand-in, consistency), then id."""
+    order = {"replication": 0, "stand-in": 1, "consistency": 2}
+    rows = claims.assign(shown_verdict=shown.to_numpy(), kind_order=claims["kind"].map(order))
+    rows = rows[rows["paper"] == paper].sort_values(["kind_order", "claim_id"], kind="stable")
     if rows.empty:
         return "*(no claims)*\n"
+    seeds = agreement.set_index("claim_id") if agreement is not None else None
     lines = [
-        f"{len(rows)} claims: {verdict_counts(rows['verdict'])}.",
-        "",
-        "| source | claim | verdict | measured |",
-        "|---|---|---|---|",
+        "| source | kind | claim | verdict | seeds giving it | value over the seeds [95 %] | measured |",
+        "|---|---|---|---|---|---|---|",
     ]
-    lines += [
-        f"| {_cell(r.source)} | {_cell(r.statement)} | {r.verdict} | {_cell(r.measured)} |"
-        for r in rows.itertuples(index=False)
-    ]
+    for r in rows.itertuples(index=False):
+        verdict = r.verdict if r.shown_verdict == r.verdict else f"{r.shown_verdict} ({r.verdict})"
+        agree = "-"
+        if seeds is not None and int(seeds.loc[r.claim_id, "n_seeds"]):
+            agree = f"{int(seeds.loc[r.claim_id, 'n_agree'])}/{int(seeds.loc[r.claim_id, 'n_seeds'])}"
+        lines.append(
+            f"| {_cell(r.source)} | {r.kind} | {_cell(r.statement)} | {verdict} | {agree} | "
+            f"{_cell(_interval(stability, r.claim_id, r.unit))} | {_cell(r.measured)} |"
+        )
     return "\n".join(lines) + "\n"
 
 
 def results_markdown(
-    main: pd.DataFrame, main_name: str, others: Mapping[str, pd.DataFrame] | None = None, run_note: str = ""
+    main: pd.DataFrame,
+    main_name: str,
+    others: Mapping[str, pd.DataFrame] | None = None,
+    run_note: str = "",
+    stability: pd.DataFrame | None = None,
 ) -> str:
-    """The Results section body: ``main`` (the full synthetic run) per paper, then one
-    line per dataset of ``others`` (name -> claims)."""
+    """The body of docs/results.md: ``main`` (the full synthetic run) counted per paper and kind,
+    with each verdict's agreement over the seeds of ``stability`` (a claims-stability table with
+    ``main_name`` among its seeds; ``unstable`` where fewer than 4 of 5 give it), then one line per
+    dataset of ``others`` (name -> claims)."""
+    main = main.reset_index(drop=True)
+    agreement = seed_agreement(main, stability, main_name) if stability is not None else None
+    shown = shown_verdicts(main, agreement)
+    seeds_text = (
+        f" Seeds: {len([c for c in stability.columns if c.startswith('verdict_')])} full-size runs "
+        "(config/seeds_full.yaml); a verdict that fewer than 4 of 5 seeds give is counted as unstable."
+        if stability is not None
+        else ""
+    )
     parts = [
-        f"Claims of the last run on `{main_name}`{(' (' + run_note + ')') if run_note else ''}: "
-        f"{verdict_counts(main['verdict'])}. The report holds the figures, tables and notes.",
+        f"Claims of the last run on `{main_name}`{(' (' + run_note + ')') if run_note else ''}. Reproduction "
+        "is counted over replication and stand-in claims, each kind apart; consistency claims are checks "
+        f"(true by construction or sanity checks), never counted as reproduction.{seeds_text} The report holds "
+        "the figures, tables and notes.",
         "",
+        counts_markdown(main, shown),
     ]
     for paper, title in PAPER_TITLES.items():
-        parts += [f"### {title}", "", paper_results(main, paper)]
+        parts += [f"### {title}", "", paper_results(main, paper, shown, agreement, stability)]
     if others:
         parts += ["### Real data sets (`config/real/`)", ""]
         for name, table in others.items():
+            table = table.reset_index(drop=True)
             na = table[table["verdict"] == "not applicable"]
-            skipped = ", ".join(sorted(na["source"] + " (" + na["paper"] + ")")) if len(na) else "none"
-            parts.append(
-                f"- `{name}`: {len(table)} claims: {verdict_counts(table['verdict'])}; not applicable: {skipped}."
+            skipped = ", ".join(sorted(set(na["source"] + " (" + na["paper"] + ")"))) if len(na) else "none"
+            by_kind = "; ".join(
+                f"{row['kind']} {counts_text(row)}" for row in kind_counts(table.assign(paper="all")).to_dict("records")
             )
+            parts.append(f"- `{name}`: {len(table)} claims: {by_kind}; not applicable: {skipped}.")
         parts.append("")
     return "\n".join(parts)

@@ -7,6 +7,8 @@ are defined here.
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 import pandas as pd
 from scipy.signal import welch
@@ -16,14 +18,15 @@ from sklearn.metrics import confusion_matrix
 from sklearn.pipeline import Pipeline, make_pipeline
 from sklearn.preprocessing import StandardScaler
 
-from ...claims import Claim, EvaluationResult
+from ...claims import EvaluationResult, judge_claims
 from ...core.joint_map import JointMap
 from ..categories import support_ratio
+from ..claims import CLAIMS
 from ..database import Recording
 from ..engine import generate_idle_pcs
 from ..pipeline import IdleModel
-from ..settings import Egges2004Settings
-from .common import PAPER, perlin_sds, perlin_sequence, subject_rng
+from ..settings import Egges2004Settings, IdentificationSettings
+from .common import perlin_sds, perlin_sequence, subject_rng
 
 FEATURE_SETS = ("all", "dynamics")
 SWAY_BANDS_HZ = ((0.05, 0.3), (0.3, 1.0), (1.0, 3.0))
@@ -83,6 +86,8 @@ def make_identifier(seed: int) -> Pipeline:
 
 REC, GEN, PERLIN = "recorded (held out)", "generated (Egges 2004)", "Perlin noise on PCs"
 IDENTIFICATION_SOURCES = (REC, GEN, PERLIN)
+#: a sequence to train on or to identify: (subject, PC values (T, D), support ratio (T,))
+Sequence = tuple[str, np.ndarray, np.ndarray]
 
 
 def identification(
@@ -96,12 +101,32 @@ def identification(
     subject of windows of held-out recordings, of generated idle motion and of the
     Perlin baseline (``settings.identification``, ``settings.perlin_frequency_hz``,
     ``settings.analysis.support_margin``, ``settings.seed``). Returns the accuracy table,
-    the claim and, for the figure, ``labels`` and ``confusion`` (the confusion matrix of
-    the generated windows, all features) and ``window_s``."""
+    the claim, the measurements (:func:`identification_measurements`) and, for the figure,
+    ``labels`` and ``confusion`` (the confusion matrix of the generated windows, all
+    features) and ``window_s``."""
     params = settings.identification
     subjects = list(model.databases)
     fps = model.databases[subjects[0]].fps
     sequences = _test_sequences(model, recordings, held_out, joint_map, settings)
+    train = [(s, r.pcs, r.support) for s in subjects for r in recordings[s]]
+    table, confusion = identification_table(train, sequences, subjects, fps, settings)
+    measurements = identification_measurements(table, params)
+    claims = judge_claims(CLAIMS, "egges2004_identification", measurements)
+    return EvaluationResult(table, claims, {**confusion, "window_s": params.window_s}, measurements)
+
+
+def identification_table(
+    train: list[Sequence],
+    sequences: dict[str, list[Sequence]],
+    subjects: list[str],
+    fps: float,
+    settings: Egges2004Settings,
+) -> tuple[pd.DataFrame, dict[str, Any]]:
+    """Per feature set, a classifier trained on the windows of ``train`` names the subject of the
+    windows of each source's ``sequences``: the accuracy table (accuracy, chance and the binomial
+    p-value against it per source and feature set) and, for the generated windows with all
+    features, ``labels`` and ``confusion`` (empty without a generated source)."""
+    params = settings.identification
 
     def features(items, fs):
         blocks = [
@@ -113,7 +138,7 @@ def identification(
     rows, confusion = [], {}
     chance = 1.0 / len(subjects)
     for fs in FEATURE_SETS:
-        X, y = features([(s, r.pcs, r.support) for s in subjects for r in recordings[s]], fs)
+        X, y = features(train, fs)
         clf = make_identifier(settings.seed).fit(X, y)
         for source, items in sequences.items():
             Xs, ys = features(items, fs)
@@ -132,8 +157,7 @@ def identification(
             )
             if fs == "all" and source == GEN:
                 confusion = {"labels": subjects, "confusion": confusion_matrix(ys, pred, labels=subjects)}
-    table = pd.DataFrame(rows)
-    return EvaluationResult(table, [_claim(table, settings)], {**confusion, "window_s": params.window_s})
+    return pd.DataFrame(rows), confusion
 
 
 def _test_sequences(
@@ -142,7 +166,7 @@ def _test_sequences(
     held_out: dict[str, list[Recording]],
     joint_map: JointMap,
     settings: Egges2004Settings,
-) -> dict[str, list[tuple[str, np.ndarray, np.ndarray]]]:
+) -> dict[str, list[Sequence]]:
     """Per source (IDENTIFICATION_SOURCES), the (subject, PC values, support ratio) of every
     sequence to identify: the held-out recordings, ``generated_s`` of generated idle motion
     and of the Perlin baseline per subject."""
@@ -150,7 +174,7 @@ def _test_sequences(
     fps = model.databases[subjects[0]].fps
     n_gen = int(round(settings.identification.generated_s * fps)) + 1
     sds = perlin_sds(model, recordings)
-    sequences: dict[str, list[tuple[str, np.ndarray, np.ndarray]]] = {k: [] for k in IDENTIFICATION_SOURCES}
+    sequences: dict[str, list[Sequence]] = {k: [] for k in IDENTIFICATION_SOURCES}
     for s in subjects:
         db, pca, sk = model.databases[s], model.pca, model.skeletons[s]
         sequences[REC] += [(s, r.pcs, r.support) for r in held_out[s]]
@@ -168,46 +192,22 @@ def _test_sequences(
     return sequences
 
 
-def _claim(table: pd.DataFrame, settings: Egges2004Settings) -> Claim:
-    """Sec. 8's claim from the accuracy table: generated windows named above chance and at
-    least as well as the Perlin baseline's."""
-    params = settings.identification
-    subjects = int(table["subjects"].iloc[0])
-    chance = 1.0 / subjects
+#: measurement key of each source's accuracies (motionvar.egges2004.claims)
+SOURCE_KEYS = {REC: "recorded", GEN: "generated", PERLIN: "perlin"}
 
-    def get(source, fs, col="accuracy"):
+
+def identification_measurements(table: pd.DataFrame, params: IdentificationSettings) -> dict[str, Any]:
+    """What Sec. 8's claim is judged on, from the accuracy table: the accuracy per source and
+    feature set, the binomial p-value of the generated windows (all features), the number of
+    subjects, and the significance level and window length used."""
+
+    def get(source: str, fs: str, col: str = "accuracy") -> float:
         return float(table.loc[(table.source == source) & (table.features == fs), col].iloc[0])
 
-    gen, per, rec = get(GEN, "all"), get(PERLIN, "all"), get(REC, "all")
-    p_gen = get(GEN, "all", "p_value")
-    above = p_gen < params.alpha
-    verdict = "reproduced" if above and gen >= per else ("partial" if above else "not reproduced")
-    note = (
-        "Quantitative stand-in for the paper's informal viewing test: a logistic-regression classifier "
-        f"trained on {params.window_s:g}-s windows of each subject's recorded idle clips names the subject of "
-        "generated windows. Reproduced = above chance (binomial test) and at least as good as the Perlin "
-        "baseline (the subject's mean posture plus generic Perlin noise on the PCs). "
-        f"With movement-only features (no posture means): generated {get(GEN, 'dynamics'):.2f}, "
-        f"Perlin {get(PERLIN, 'dynamics'):.2f}, recorded {get(REC, 'dynamics'):.2f}."
-    )
-    if verdict == "partial":
-        note += " Generated motion is recognised above chance but not better than the Perlin baseline."
-    return Claim(
-        claim_id=f"{PAPER}.sec8.generated_idle_identifies_person",
-        paper=PAPER,
-        source="Sec. 5.6, 8",
-        statement="Idle motion generated from a person's database lets viewers recognise that person.",
-        published="informal viewing test: 'in general, test subjects could recognise the person' (no number)",
-        measured=(
-            f"accuracy {gen:.2f} on generated windows (chance {chance:.2f}, p = {p_gen:.1e}, "
-            f"{subjects} subjects); Perlin baseline {per:.2f}; held-out recordings {rec:.2f}"
-        ),
-        verdict=verdict,
-        note=note,
-        # the main condition: generated windows named at least as well as the Perlin baseline's (accuracy generated
-        # minus Perlin); above chance (binomial p < alpha) is required beside it (without it: not reproduced)
-        value=gen - per,
-        bound=0.0,
-        unit="share",
-        direction=">=",
-    )
+    return {
+        "accuracy": {key: {fs: get(source, fs) for fs in FEATURE_SETS} for source, key in SOURCE_KEYS.items()},
+        "p_value_generated": get(GEN, "all", "p_value"),
+        "subjects": int(table["subjects"].iloc[0]),
+        "alpha": params.alpha,
+        "window_s": params.window_s,
+    }

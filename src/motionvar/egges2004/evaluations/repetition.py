@@ -5,16 +5,19 @@ windows of generated, recorded, looped and Perlin sequences.
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 import pandas as pd
 
-from ...claims import Claim, EvaluationResult, verdict_threshold
+from ...claims import EvaluationResult, judge_claims
 from ..baselines import loop_frames
+from ..claims import CLAIMS
 from ..database import Recording
 from ..engine import generate_idle_pcs
 from ..pipeline import IdleModel
 from ..settings import Egges2004Settings, RepetitionSettings
-from .common import PAPER, perlin_sds, perlin_sequence, subject_rng
+from .common import perlin_sds, perlin_sequence, subject_rng
 
 
 def window_best_match(x: np.ndarray, window: int, stride: int, chunk: int = 512) -> np.ndarray:
@@ -106,7 +109,39 @@ def repetition(
     pooled = {k: np.concatenate(v) for k, v in pooled.items()}
     n_pcs = next(iter(model.databases.values())).variations.pcs.size
     figure = {"pooled": pooled, "sequence_s": params.sequence_s, "window_s": params.window_s, "n_pcs": n_pcs}
-    return EvaluationResult(table, [_claim(table, pooled, params, len(subjects))], figure)
+    measurements = repetition_measurements(table, pooled, params, len(subjects))
+    return EvaluationResult(table, judge_claims(CLAIMS, "egges2004_repetition", measurements), figure, measurements)
+
+
+#: measurement key of each source's pooled median (motionvar.egges2004.claims)
+MEDIAN_KEYS = {
+    GEN_VAR: "generated",
+    GEN_VAR_CUT: "generated_cut",
+    REC_VAR: "recorded",
+    LOOP_VAR: "looped",
+    GEN_IDLE: "generated_idle",
+    REC_IDLE: "recorded_idle",
+    LOOP_IDLE: "looped_idle",
+    PERLIN_IDLE: "perlin_idle",
+}
+
+
+def repetition_measurements(
+    table: pd.DataFrame, pooled: dict[str, np.ndarray], params: RepetitionSettings, n_subjects: int
+) -> dict[str, Any]:
+    """What Sec. 6.2's claim is judged on: the median best match per source (pooled over
+    subjects; NaN without windows), the mean length of the recorded rests that were measured,
+    the subject counts, and the window, sequence length and tolerance used."""
+    measured_rec = table[(table.source == REC_VAR) & (table.windows > 0)]
+    return {
+        "median_best_ncc": {MEDIAN_KEYS[k]: float(np.median(v)) if len(v) else float("nan") for k, v in pooled.items()},
+        "recorded_rest_s": float(measured_rec["seconds"].mean()),
+        "subjects": n_subjects,
+        "subjects_with_recorded_rest": len(measured_rec),
+        "window_s": params.window_s,
+        "sequence_s": params.sequence_s,
+        "tolerance": params.tolerance,
+    }
 
 
 def _sequences(
@@ -132,47 +167,3 @@ def _sequences(
         LOOP_IDLE: loop_frames(recs[0].pcs[: int(round(params.loop_clip_s * fps))], n),
         PERLIN_IDLE: perlin_sequence(model, recs, sds, settings.perlin_frequency_hz, n, int(rng.integers(2**31))),
     }
-
-
-def _claim(table: pd.DataFrame, pooled: dict[str, np.ndarray], params: RepetitionSettings, n_subjects: int) -> Claim:
-    """Sec. 6.2's claim from the pooled best matches: generated variations repeat less than
-    a loop and, at the recorded length, no more than the recorded rest variations."""
-    med = {k: float(np.median(v)) if len(v) else np.nan for k, v in pooled.items()}
-    gen, cut, rec, loop = med[GEN_VAR], med[GEN_VAR_CUT], med[REC_VAR], med[LOOP_VAR]
-    measured_rec = table[(table.source == REC_VAR) & (table.windows > 0)]
-    if gen >= loop:
-        verdict = "not reproduced"
-    elif measured_rec.empty:  # less repetition than a loop, but no recorded rest long enough to compare
-        verdict = "partial"
-    else:
-        verdict = verdict_threshold(cut, rec, "<=", params.tolerance)
-    rec_s = measured_rec["seconds"].mean()
-    return Claim(
-        claim_id=f"{PAPER}.sec6.variations_show_little_repetition",
-        paper=PAPER,
-        source="Sec. 6.2",
-        statement="Small posture variations generated from clustered (distance, value) pairs show very little repetition.",
-        published="qualitative: 'the variations show very little repetition' (no number)",
-        measured=(
-            f"median best-match NCC of {params.window_s:g}-s windows: generated variations {gen:.2f} over "
-            f"{params.sequence_s:g} s vs looped rest {loop:.2f}; at the recorded length ({rec_s:.0f} s on average) "
-            f"generated {cut:.2f} vs recorded rest variations {rec:.2f}; full idle over {params.sequence_s:g} s: "
-            f"generated {med[GEN_IDLE]:.2f}, looped clip {med[LOOP_IDLE]:.2f}, Perlin {med[PERLIN_IDLE]:.2f} "
-            f"(recorded idle {med[REC_IDLE]:.2f} over its own length)"
-        ),
-        verdict=verdict,
-        # the main condition: at the recorded length, no more repetition than the recorded rest (rec is NaN when no
-        # recorded rest is long enough); before it, generated variations must repeat less than a loop (gen < loop)
-        value=cut,
-        bound=rec,
-        unit="ncc",
-        direction="<=",
-        note=(
-            "Repetition = for each non-overlapping window, the highest normalised cross-correlation with any other "
-            "non-overlapping window of the same sequence (1 = an exact repeat). Reproduced = generated variations "
-            "repeat less than a loop and, at the same length, no more than the recorded resting variations "
-            f"(partial: within {params.tolerance:.0%}, or no recorded rest long enough to compare). "
-            f"{n_subjects} subjects, {len(measured_rec)} of them with recorded resting segments of at least two "
-            f"{params.window_s:g}-s windows (the others are left out of the recorded comparison)."
-        ),
-    )

@@ -10,16 +10,14 @@ from dataclasses import dataclass, field
 import numpy as np
 import pandas as pd
 
-from ...claims import Claim, EvaluationResult, verdict_threshold
+from ...claims import EvaluationResult, judge_claims
 from ...core.joint_map import JointMap
 from ...core.motion import Motion
 from ...prep.contacts import detect_foot_contacts
 from ...prep.intervals import parse_intervals
+from ..claims import CLAIMS, fig3_claim_id
 from ..examples import extract_cycles, rows_matching
 from ..settings import Ma2010Settings
-from .common import PAPER, PROTOCOL
-
-GERUNDS = {"walk": "walking", "run": "running"}  # claim statements: "the key frames of running"
 
 
 def step_phases(maxima: np.ndarray, strikes: np.ndarray) -> np.ndarray:
@@ -123,50 +121,20 @@ def scan_behaviour(
     return scan
 
 
-def no_maximum_reason(behaviour: str, n: int, scan: BehaviourScan) -> str:
-    """Why the claim of a behaviour whose ``n`` clips hold no maximum between two foot
-    strikes is not applicable."""
-    return (
-        f"none of the {n} {behaviour} clips has a maximum of S_M(t) (legs farthest apart) between two foot "
-        f"strikes: {scan.n_struck} of them have two or more {scan.strike_source} foot strikes, {scan.n_maxima} "
-        "maxima in all; the claim measures where in the step the maxima fall, so it needs clips holding at "
-        "least one whole step, from a foot strike to the next"
-    )
-
-
-def phase_claim(behaviour: str, scan: BehaviourScan, phase_sd_bound: float) -> Claim:
-    """The claim of one behaviour: the circular SD of its maxima's phase within the step at
-    most ``phase_sd_bound`` (reproduced; partial: twice that)."""
-    sd, n, offset = circular_sd(scan.phases), len(scan.phases), float(np.median(scan.offsets))
-    source = {
-        "ground truth": "generator ground truth",
-        "detected": "detected from foot contacts, motionvar.prep",
-        "mixed": "ground truth where the metadata has it, else detected",
-    }[scan.strike_source]
-    return Claim(
-        **claim_head(behaviour),
-        measured=f"circular SD of the maxima's phase within the step: {sd:.3f} of a step over {n} maxima; median "
-        f"offset from the nearest foot strike {offset * 1000:+.0f} ms",
-        verdict=verdict_threshold(sd, phase_sd_bound, "<=", tolerance=1.0),
-        value=sd,
-        bound=phase_sd_bound,
-        unit="step",
-        direction="<=",
-        note=f"Reproduced when the SD is at most {phase_sd_bound:g} of a step (partial: twice that; our bound, the "
-        f"paper gives none). Steps run from one foot strike ({source}) to the next. {PROTOCOL}",
-    )
-
-
-def claim_head(behaviour: str) -> dict:
-    """Id, paper, source, statement and published value of a behaviour's claim."""
-    return dict(
-        claim_id=f"{PAPER}.fig3.{behaviour}_keyframes_at_one_gait_phase",
-        paper=PAPER,
-        source="Fig. 3, Sec. 4.1-4.2",
-        statement=f"The key frames (extrema of S_M(t)) of {GERUNDS.get(behaviour, behaviour)} fall at the same gait phase in every "
-        "step, so they can segment and time-warp the motion.",
-        published="each local extremum of S_M(t) is a key frame, used to cut and time-warp clips (no number given)",
-    )
+def behaviour_measurements(scan: BehaviourScan, n_clips: int) -> dict:
+    """What Fig. 3's claim on one behaviour is judged on (``motionvar.ma2010.claims``): the circular
+    SD of its maxima's phase within the step and their median offset from the nearest foot strike
+    (NaN without a maximum between two strikes), the counts of clips scanned, of clips with two or
+    more strikes, of maxima and of maxima between two strikes, and where the strikes came from."""
+    return {
+        "phase_sd": circular_sd(scan.phases) if scan.phases else float("nan"),
+        "median_offset_s": float(np.median(scan.offsets)) if scan.offsets else float("nan"),
+        "clips": n_clips,
+        "clips_with_strikes": scan.n_struck,
+        "maxima": scan.n_maxima,
+        "maxima_in_steps": len(scan.phases),
+        "strike_source": scan.strike_source,
+    }
 
 
 def fig3_keyframes(dataset, joint_map: JointMap, settings: Ma2010Settings, what: str = "metadata") -> EvaluationResult:
@@ -174,7 +142,8 @@ def fig3_keyframes(dataset, joint_map: JointMap, settings: Ma2010Settings, what:
     walk (of ``settings`` walk_styles and walk_variants) and the first run as the table,
     and per behaviour a claim on the circular SD of the maxima's phase within the step over
     its first ``settings.fig3_max_clips`` clips (0: all), reproduced at most
-    ``settings.fig3_phase_sd``. ``what`` names the metadata in errors. A behaviour whose
+    ``settings.fig3_phase_sd`` (measurements: :func:`behaviour_measurements` per behaviour).
+    ``what`` names the metadata in errors. A behaviour without clips has no claim; one whose
     clips hold no maximum between two foot strikes gets its claim with verdict ``not
     applicable`` and the reason. Figure: ``shown`` (behaviour -> clip id, motion, its
     :class:`CycleExtraction`, foot strikes) and ``strike_source`` (behaviour -> "ground
@@ -182,17 +151,20 @@ def fig3_keyframes(dataset, joint_map: JointMap, settings: Ma2010Settings, what:
     meta = dataset.metadata
     walks = rows_matching(meta, behaviour="walk", style=settings.walk_styles, variant=settings.walk_variants, what=what)
     runs = np.flatnonzero(meta["behaviour"].astype(str).to_numpy() == "run")
-    rows, shown, shown_source, claims = [], {}, {}, []
+    rows, shown, shown_source, behaviours = [], {}, {}, {}
     for behaviour, idx in (("walk", walks), ("run", runs)):
         scan = scan_behaviour(dataset, idx, behaviour, joint_map, settings)
         rows += scan.rows
         if scan.shown is not None:
             shown[behaviour], shown_source[behaviour] = scan.shown, scan.shown_source
-        if scan.phases:
-            claims.append(phase_claim(behaviour, scan, settings.fig3_phase_sd))
-        elif len(idx):
-            reason = no_maximum_reason(behaviour, len(idx[: settings.fig3_max_clips or None]), scan)
-            claims.append(Claim(**claim_head(behaviour), measured="-", verdict="not applicable", note=reason))
-    return EvaluationResult(
-        table=pd.DataFrame(rows), claims=claims, figure={"shown": shown, "strike_source": shown_source}
-    )
+        if len(idx):  # a behaviour without clips has no claim
+            behaviours[behaviour] = behaviour_measurements(scan, len(idx[: settings.fig3_max_clips or None]))
+    measurements = {
+        "behaviours": behaviours,
+        "phase_sd_bound": settings.fig3_phase_sd,
+        "max_clips": settings.fig3_max_clips,
+    }
+    present = {fig3_claim_id(b) for b in behaviours}
+    claims = [c for c in judge_claims(CLAIMS, "ma2010_fig3", measurements) if c.claim_id in present]
+    figure = {"shown": shown, "strike_source": shown_source}
+    return EvaluationResult(pd.DataFrame(rows), claims, figure, measurements)

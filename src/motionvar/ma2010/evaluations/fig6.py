@@ -16,8 +16,9 @@ from collections.abc import Mapping, Sequence
 import numpy as np
 import pandas as pd
 
-from ...claims import Claim, EvaluationResult, verdict_from_bool, verdict_threshold
+from ...claims import EvaluationResult, judge_claims
 from ..baselines.mukai_kuriyama import mk05_kriging, rose98_rbf
+from ..claims import CLAIMS
 from ..examples import WalkCycles, joint_groups
 from ..representation import ClipCodec, ClipSet
 from ..settings import ROOT_GROUPS, STRIDE_REFERENCES, Ma2010Settings
@@ -25,8 +26,6 @@ from ..svi import GROUP_ORDER, ClipPrediction, StyleVariationModel, resolve_stru
 from ..synthesis import RootSolver
 from ..variation import joint_variation
 from .common import (
-    PAPER,
-    PROTOCOL,
     PUBLISHED_MAX_STRIDE_ERROR_CM,
     clip_pose_error,
     loo_folds,
@@ -35,11 +34,6 @@ from .common import (
 )
 
 XI_KINDS = ("own", "mean", "sampled")  # the held-out cycle's xi, the network's conditional mean, a draw
-# the previous full-config run (25 subjects, 126 cycles, 80 folds): root rotation in group D, per-cycle folds
-PREVIOUS_FULL = (
-    "max 6.85 cm, mean 1.59 cm, 61/80 folds within 1.2 cm (root rotation in the upper-body group D, one cycle per fold)"
-)
-PREVIOUS_MK05 = "Kriging 1.43 cm vs RBF 0.91 cm (one cycle per fold)"
 # pose errors closer than this are a tie (0.1 mm: the clips are the same to display precision; with
 # whole-walk folds RBF's kernels often do not reach the held-out style and both fall back to a linear fit)
 POSE_TIE_CM = 0.01
@@ -246,25 +240,6 @@ def loo_summary(folds: pd.DataFrame, methods: Mapping[str, dict], bound: float) 
     return pd.DataFrame(rows)
 
 
-def _stats(summary: pd.DataFrame, method: str, cycles: str = "all") -> dict | None:
-    row = summary[(summary["method"] == method) & (summary["cycles"] == cycles)]
-    return None if row.empty else row.iloc[0].to_dict()
-
-
-def _pose(summary: pd.DataFrame, method: str, cycles: str) -> str:
-    s = _stats(summary, method, cycles)
-    return "-" if s is None else f"{s['mean_pose_error_cm']:.2f}"
-
-
-def _describe(s: dict | None) -> str:
-    if s is None:
-        return "none held out"
-    return (
-        f"max {s['max_stride_error_cm']:.2f} cm, mean {s['mean_stride_error_cm']:.2f} cm, "
-        f"{s['n_within_bound']}/{s['n']} within 1.2 cm"
-    )
-
-
 def held_out_cycles(n_clips: int, max_clips: int, seed: int) -> np.ndarray:
     """The cycles Fig. 6 predicts: at most ``max_clips`` (a subset seeded by ``seed``; 0: all)."""
     if max_clips and n_clips > max_clips:
@@ -286,153 +261,59 @@ def loo_methods(root: str, alt: str, alt_name: str, ablation: bool) -> dict[str,
     return methods
 
 
-def _unit_text(folds: pd.DataFrame, loo_unit: str) -> str:
-    n_walks = folds["source_clip"].nunique()
-    return (
-        f"each fold leaves out the held-out cycle's whole walk ({n_walks} walks; no model sees a sibling "
-        "cycle of the cycle it predicts)"
-        if loo_unit == "walk"
-        else "each fold leaves out one cycle (its sibling cycles from the same walk stay in training)"
-    )
+def summary_measurements(summary: pd.DataFrame) -> dict[str, dict[str, dict]]:
+    """The summary rows of :func:`loo_summary` as method -> cycles ("all", "steady", "closing") ->
+    the row's numbers (n, max and mean stride and style errors, cycles within the bound, mean pose
+    error)."""
+    keys = ("n", "max_stride_error_cm", "mean_stride_error_cm", "n_within_bound")
+    keys += ("max_style_error_cm", "mean_style_error_cm", "mean_pose_error_cm")
+    out: dict[str, dict[str, dict]] = {}
+    for row in summary.to_dict("records"):
+        out.setdefault(row["method"], {})[row["cycles"]] = {k: row[k] for k in keys}
+    return out
 
 
-def _changed_text(root: str, loo_unit: str, stride_reference: str) -> str:
-    """The claim note's comparison with the previous full-config run (:data:`PREVIOUS_FULL`)."""
-    changes = []
-    if root == "legs":
-        changes.append(
-            "the root rotation moved from the upper-body group D to the legs group A (measured cause of "
-            "the failing folds: a xi_D two SDs from its mean tilted the pelvis ~1 degree, the swinging foot "
-            "dropped below the stance foot, the support switched early and the stride collapsed by ~7 cm)"
-        )
-    if loo_unit == "walk":
-        changes.append(
-            "the folds leave out the whole walk (the paper predicts a new clip from the others; sibling "
-            "cycles of one capture are near-copies)"
-        )
-    changes.append(
-        "strides are measured on the uncut walk between the cycle's own footfalls (the clipped window "
-        "read 6.6 % short) and the support foot holds for a minimum contact time"
-    )
-    if stride_reference == "validation":
-        changes.append(
-            "the predicted stride is compared with the validation cycle put through the same measure, as "
-            "Fig. 6 compares the validation and predicted clips (the measure on the held-out truth itself "
-            "errs against its style: see the floor)"
-        )
-    return (
-        f"Previous full-config run: {PREVIOUS_FULL}. Changed: " + "; ".join(changes) + "."
-        if changes
-        else f"As in the previous full-config run ({PREVIOUS_FULL})."
-    )
-
-
-def _reference_text(summary: pd.DataFrame, stride_reference: str) -> str:
-    """What the stride errors are taken against, with the measure's floor."""
-    own_style = _stats(summary, "ours_own_xi")
-    floor, floor_steady = _stats(summary, "validation"), _stats(summary, "validation", "steady")
-    return (
-        "Stride errors against the validation cycle through the same measure (retimed, root by footskate cleanup, "
-        f"swing-ankle travel). Against the strides asked for (measured on the uncut walk): max "
-        f"{own_style['max_style_error_cm']:.2f} cm, mean {own_style['mean_style_error_cm']:.2f} cm; the measure's "
-        f"floor, the validation cycle itself against its style: max {floor['max_stride_error_cm']:.2f} cm, mean "
-        f"{floor['mean_stride_error_cm']:.2f} cm, {floor['n_within_bound']}/{floor['n']} within 1.2 cm (steady "
-        f"cycles: {_describe(floor_steady)})."
-        if stride_reference == "validation"
-        else "Stride errors against the strides asked for (measured on the uncut walk); the measure's floor, the "
-        f"validation cycle itself: max {floor['max_stride_error_cm']:.2f} cm, mean "
-        f"{floor['mean_stride_error_cm']:.2f} cm, {floor['n_within_bound']}/{floor['n']} within 1.2 cm."
-    )
-
-
-def stride_claim(
+def loo_measurements(
     folds: pd.DataFrame, summary: pd.DataFrame, settings: Ma2010Settings, root: str, alt: str | None
-) -> Claim:
-    """Fig. 6's claim: every stride error of ours (own xi, root rotation in ``root``) within
-    the published 1.2 cm; the note adds the network's xi, the ablation (root rotation in
-    ``alt``; None: no ablation) and the measure's floor."""
+) -> dict:
+    """What Fig. 6's claims are judged on (``motionvar.ma2010.claims``): the stride error of ours with
+    the held-out cycle's own xi over every held-out cycle (max, mean, count, count within 1.2 cm), the
+    summary rows (:func:`summary_measurements`), the folds' setup (root group ``root``, the ablation's
+    ``alt`` or None, fold unit, number of walks, stride reference, variogram), and the mean pose errors
+    of Kriging, RBF and least squares on style with the counts of cycles Kriging predicts better and
+    ties (within :data:`POSE_TIE_CM`) and the largest per-cycle distance of each interpolation to the
+    least-squares fit."""
     err = folds["ours_own_xi_stride_error_cm"].to_numpy()
-    steady, closing = (_stats(summary, "ours_own_xi", s) for s in ("steady", "closing"))
-    mean_xi, sampled = _stats(summary, "ours_mean_xi"), _stats(summary, "ours_sampled_xi")
-    alt_name = f"root_{alt}"
-    ablation_text = (
-        f" Ablation, root rotation in {alt} instead of {root}: own xi {_describe(_stats(summary, f'ours_own_xi_{alt_name}'))} "
-        f"(steady cycles {_describe(_stats(summary, f'ours_own_xi_{alt_name}', 'steady'))}); xi at the conditional mean "
-        f"{_describe(_stats(summary, f'ours_mean_xi_{alt_name}'))}."
-        if alt is not None
-        else ""
-    )
-    if verdict_threshold(float(err.max()), PUBLISHED_MAX_STRIDE_ERROR_CM, "<=") == "reproduced":
-        verdict_text = "Every stride error within the published bound."
-    else:
-        verdict_text = "partial if the max error is within twice the published bound."
-    changed = _changed_text(root, settings.loo_unit, settings.fig6_stride_reference)
-    return Claim(
-        claim_id=f"{PAPER}.fig6.loo_max_stride_error_below_1_2cm",
-        paper=PAPER,
-        source="Fig. 6, Sec. 7.1",
-        statement="In leave-one-out cross validation over walking clips the stride length of every synthesized "
-        "clip is within 1.2 cm of the held-out clip's.",
-        published=f"max stride error < {PUBLISHED_MAX_STRIDE_ERROR_CM} cm",
-        measured=f"max {err.max():.2f} cm, mean {err.mean():.2f} cm over {len(err)} cycles "
-        f"({int(np.sum(err <= PUBLISHED_MAX_STRIDE_ERROR_CM))} within 1.2 cm); steady cycles: "
-        f"{_describe(steady)}; closing cycles: {_describe(closing)}",
-        verdict=verdict_threshold(float(err.max()), PUBLISHED_MAX_STRIDE_ERROR_CM, "<=", tolerance=1.0),
-        value=float(err.max()),
-        bound=PUBLISHED_MAX_STRIDE_ERROR_CM,
-        unit="cm",
-        direction="<=",
-        note=f"{verdict_text} {_reference_text(summary, settings.fig6_stride_reference)} Verdict on ours with each "
-        f"held-out cycle's own style and latent variation (Eq. 7-9, the training model's tau), root rotation in {root}; "
-        f"{_unit_text(folds, settings.loo_unit)}. The network's xi instead: conditional mean {_describe(mean_xi)}, "
-        f"sampled {_describe(sampled)}. A closing cycle is the last of its walk, running into the slow-down of the "
-        f"closing step; the others are steady.{ablation_text} {changed} {PROTOCOL}",
-    )
-
-
-def mk05_claim(folds: pd.DataFrame, summary: pd.DataFrame, settings: Ma2010Settings) -> Claim:
-    """MK05's claim on the same folds: Kriging on style alone beats RBF by mean pose error
-    (ties within :data:`POSE_TIE_CM`), with plain least squares on style as the reference."""
-    kr, rb = folds["kriging_pose_error_cm"].mean(), folds["rbf_pose_error_cm"].mean()
-    n_better = int(np.sum(folds["kriging_pose_error_cm"] < folds["rbf_pose_error_cm"] - POSE_TIE_CM))
-    ls_krig = float(np.max(np.abs(folds["kriging_pose_error_cm"] - folds["least_squares_pose_error_cm"])))
-    ls_rbf = float(np.max(np.abs(folds["rbf_pose_error_cm"] - folds["least_squares_pose_error_cm"])))
-    n_tied = int(np.sum(np.abs(folds["kriging_pose_error_cm"] - folds["rbf_pose_error_cm"]) <= POSE_TIE_CM))
-    return Claim(
-        claim_id=f"{PAPER}.mk05.kriging_beats_rbf",
-        paper=PAPER,
-        source="Sec. 2 (citing Mukai & Kuriyama 2005)",
-        statement="Universal Kriging predicts motions more accurately than RBFs.",
-        published="Kriging error < RBF error (MK05)",
-        measured=f"mean LOO pose error: Kriging {kr:.2f} cm, RBF {rb:.2f} cm; Kriging better on "
-        f"{n_better}/{len(folds)} cycles, tied (within {POSE_TIE_CM:g} cm) on {n_tied}",
-        verdict=verdict_from_bool(kr < rb - POSE_TIE_CM),
-        value=kr - rb,
-        bound=-POSE_TIE_CM,
-        unit="cm",
-        direction="<",  # Kriging minus RBF mean pose error
-        note=(
-            f"A tie: the mean errors differ by {abs(kr - rb):.3f} cm, within {POSE_TIE_CM:g} cm. "
-            if abs(kr - rb) <= POSE_TIE_CM
-            else ""
-        )
-        + "Both interpolate whole cycles over the style alone (same clip vectors, same folds as Fig. 6: "
-        f"{_unit_text(folds, settings.loo_unit)}); pose error = mean joint-position distance with the root at the "
-        f"origin on the common timeline. RBF: cubic B-splines with a linear term (Rose 1998); Kriging: "
-        f"{settings.variogram_model} variogram. "
-        + (
-            f"Changed from the previous full-config run ({PREVIOUS_MK05}): folds leave out the whole walk, "
-            "since with one cycle per fold RBF's narrow kernels copy the held-out cycle's sibling cycles."
-            if settings.loo_unit == "walk"
-            else f"Folds as in the previous full-config run ({PREVIOUS_MK05})."
-        )
-        + f" Plain least squares on style (the trend alone): {folds['least_squares_pose_error_cm'].mean():.2f}"
-        f" cm; Kriging within {ls_krig:.3f} cm and RBF within {ls_rbf:.3f} cm of it per cycle (0: the method "
-        "adds nothing to the linear fit)."
-        + f" Kriging vs RBF on steady cycles: {_pose(summary, 'kriging', 'steady')} vs "
-        f"{_pose(summary, 'rbf', 'steady')} cm; closing: {_pose(summary, 'kriging', 'closing')} vs "
-        f"{_pose(summary, 'rbf', 'closing')} cm.",
-    )
+    kriging, rbf = folds["kriging_pose_error_cm"], folds["rbf_pose_error_cm"]
+    ls = folds["least_squares_pose_error_cm"]
+    return {
+        "stride_error_cm": {
+            "max": float(err.max()),
+            "mean": float(err.mean()),
+            "n": len(err),
+            "n_within": int(np.sum(err <= PUBLISHED_MAX_STRIDE_ERROR_CM)),
+        },
+        "summary": summary_measurements(summary),
+        "root_group": root,
+        "ablation_root_group": alt,
+        "loo_unit": settings.loo_unit,
+        "walks": int(folds["source_clip"].nunique()),
+        "stride_reference": settings.fig6_stride_reference,
+        "variogram_model": settings.variogram_model,
+        "pose_error_cm": {
+            "kriging": float(kriging.mean()),
+            "rbf": float(rbf.mean()),
+            "least_squares": float(ls.mean()),
+        },
+        "kriging_better": int(np.sum(kriging < rbf - POSE_TIE_CM)),
+        "tied": int(np.sum(np.abs(kriging - rbf) <= POSE_TIE_CM)),
+        "cycles": len(folds),
+        "least_squares_gap_cm": {
+            "kriging": float(np.max(np.abs(kriging - ls))),
+            "rbf": float(np.max(np.abs(rbf - ls))),
+        },
+        "pose_tie_cm": POSE_TIE_CM,
+    }
 
 
 def fig6_leave_one_out(walks: WalkCycles, settings: Ma2010Settings, ablation: bool = True) -> EvaluationResult:
@@ -443,7 +324,7 @@ def fig6_leave_one_out(walks: WalkCycles, settings: Ma2010Settings, ablation: bo
     With ``ablation`` the model is refitted with the root rotation in the other joint group
     than ``walks.root_group``. Claims (on ``walks.root_group``, the held-out cycle's own xi):
     every stride error within the published 1.2 cm; Kriging beats RBF by mean pose error
-    (MK05). Table: summary rows (``kind`` "summary": method x all / steady / closing
+    (MK05), judged on :func:`loo_measurements`. Table: summary rows (``kind`` "summary": method x all / steady / closing
     cycles) then one row per held-out cycle (``kind`` "fold"). Figure:
     ``published_max_stride_error_cm``, ``root_group``, ``ablation`` (the ablation's table
     prefix or None), ``loo_unit``, ``stride_reference``."""
@@ -468,10 +349,7 @@ def fig6_leave_one_out(walks: WalkCycles, settings: Ma2010Settings, ablation: bo
     summary = loo_summary(folds, loo_methods(root, alt, alt_name, ablation), PUBLISHED_MAX_STRIDE_ERROR_CM)
     summary.insert(3, "loo_unit", settings.loo_unit)
     table = pd.concat([summary, folds], ignore_index=True)
-    claims = [
-        stride_claim(folds, summary, settings, root, alt if ablation else None),
-        mk05_claim(folds, summary, settings),
-    ]
+    measurements = loo_measurements(folds, summary, settings, root, alt if ablation else None)
     figure = {
         "published_max_stride_error_cm": PUBLISHED_MAX_STRIDE_ERROR_CM,
         "root_group": root,
@@ -480,4 +358,4 @@ def fig6_leave_one_out(walks: WalkCycles, settings: Ma2010Settings, ablation: bo
         "loo_unit": settings.loo_unit,
         "stride_reference": settings.fig6_stride_reference,
     }
-    return EvaluationResult(table=table, claims=claims, figure=figure)
+    return EvaluationResult(table, judge_claims(CLAIMS, "ma2010_fig6", measurements), figure, measurements)

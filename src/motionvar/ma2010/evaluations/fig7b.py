@@ -11,13 +11,14 @@ import pandas as pd
 from scipy.spatial import cKDTree
 from scipy.stats import spearmanr
 
-from ...claims import Claim, EvaluationResult, verdict_from_bool
+from ...claims import EvaluationResult, judge_claims
+from ..claims import CLAIMS
 from ..examples import WalkCycles
 from ..representation import ClipSet
 from ..settings import Ma2010Settings
 from ..svi import StyleVariationModel
 from ..synthesis import RootSolver
-from .common import PAPER, PROTOCOL, predicted_strides
+from .common import predicted_strides
 
 
 def reliability_map(
@@ -47,34 +48,26 @@ def reliability_map(
     )
 
 
+def reliability_correlation(table: pd.DataFrame) -> tuple[float, float, np.ndarray]:
+    """Spearman's rho and its p-value between the stride error and the distance to the nearest
+    example over the points of a reliability map (:func:`reliability_map`), a failed synthesis
+    (NaN error) ranking last; and the mask of failed points."""
+    failed = table["stride_error_cm"].isna().to_numpy()
+    ranked = np.where(failed, np.inf, table["stride_error_cm"].to_numpy())  # a failed synthesis ranks last
+    rho, p = spearmanr(ranked, table["nearest_example_cm"])
+    return float(rho), float(p), failed
+
+
 def fig7b_reliability(walks: WalkCycles, model: StyleVariationModel, settings: Ma2010Settings) -> EvaluationResult:
     """Fig. 7b for ``model`` fitted to ``walks``: the reliability map on an ``n_grid`` x
     ``n_grid`` grid (``settings.reliability_grid``; the examples' range widened by
     ``settings.reliability_margin``) and the claim that the stride error grows with the distance to the
-    nearest example (Spearman rho > 0 at p < 0.05; failed syntheses rank last). Figure:
-    ``n_grid``, ``example_style`` (N, 2), ``rho``, ``p``, ``failed`` (mask over the table)."""
+    nearest example (:func:`reliability_correlation`; measurements ``rho``, ``p``, ``grid_points``,
+    ``failed``, ``margin``). Figure: ``n_grid``, ``example_style`` (N, 2), ``rho``, ``p``, ``failed``
+    (mask over the table)."""
     n_grid, margin = settings.reliability_grid, settings.reliability_margin
     table = reliability_map(model, walks.clips, walks.solver, n_grid, margin)
-    failed = table["stride_error_cm"].isna().to_numpy()
-    ranked = np.where(failed, np.inf, table["stride_error_cm"].to_numpy())  # a failed synthesis ranks last
-    rho, p = spearmanr(ranked, table["nearest_example_cm"])
-    claim = Claim(
-        claim_id=f"{PAPER}.fig7b.error_grows_with_distance",
-        paper=PAPER,
-        source="Fig. 7b, Sec. 7.2",
-        statement="The distance between a requested style and the examples' styles correlates strongly with the "
-        "(un)reliability of the synthesized motion.",
-        published="strong correlation (map, no number)",
-        measured=f"Spearman rho = {rho:.2f} (p = {p:.1g}) between stride error and distance to the nearest example, "
-        f"{len(table)} grid points ({int(failed.sum())} failed syntheses ranked last)",
-        verdict=verdict_from_bool(rho > 0 and p < 0.05),
-        value=rho,
-        bound=0.0,
-        unit="rho",
-        direction=">",  # the main condition; p < 0.05 is required beside it
-        note="Reproduced when rho > 0 at p < 0.05. Reliability = stride error of the synthesized cycle (the paper "
-        f"does not define its reliability level). Grid: the examples' range widened by {margin:g} "
-        f"of its extent on each side. {PROTOCOL}",
-    )
+    rho, p, failed = reliability_correlation(table)
+    measurements = {"rho": rho, "p": p, "grid_points": len(table), "failed": int(failed.sum()), "margin": margin}
     figure = {"n_grid": n_grid, "example_style": walks.clips.style, "rho": rho, "p": p, "failed": failed}
-    return EvaluationResult(table=table, claims=[claim], figure=figure)
+    return EvaluationResult(table, judge_claims(CLAIMS, "ma2010_fig7b", measurements), figure, measurements)

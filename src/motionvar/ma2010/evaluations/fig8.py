@@ -10,9 +10,10 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
-from ...claims import Claim, EvaluationResult, verdict_from_bool, verdict_from_fraction
+from ...claims import EvaluationResult, judge_claims
 from ...core.kinematics import fk
 from ..baselines.mukai_kuriyama import StyleClipInterpolation, mk05_kriging, rose98_rbf
+from ..claims import CLAIMS
 from ..correspondence import retime
 from ..examples import WalkCycles
 from ..settings import Ma2010Settings
@@ -20,8 +21,6 @@ from ..svi import ClipPrediction, StyleVariationModel
 from ..synthesis import RootSolver
 from ..variation import joint_variation
 from .common import (
-    PAPER,
-    PROTOCOL,
     PUBLISHED_MAX_STRIDE_ERROR_CM,
     group_spread,
     nearest_clips,
@@ -117,92 +116,42 @@ def variant_motions(
     return motions, keys
 
 
-def variation_claim(
-    spreads: dict, data_name: str, errors: np.ndarray, ceil_errors: np.ndarray, n_near: int, bounds, root_group: str
-) -> Claim:
-    """Fig. 8a's claim: the variants spread in every group, within ``bounds`` times the
-    spread of the ``n_near`` nearest examples (``data_name``), and keep the stride."""
-    n = len(errors)
-    lo, hi = bounds
-    ours, ref, ceil = spreads["ours"], spreads[data_name], spreads["ceiling (their own xi)"]
-    static = spreads["data, mean posture removed"]
-    ratios = {g: ours[g] / max(ref[g], 1e-12) for g in GROUPS}
-    checks = [
-        all(ours[g] > 1e-6 for g in GROUPS),
-        all(lo <= r <= hi for r in ratios.values()),
-        float(errors.max()) <= PUBLISHED_MAX_STRIDE_ERROR_CM,
-    ]
-
-    def share(g: str) -> str:  # the method's share of the gap ours -> data in group g, and the posture offsets' in it
-        gap, method = ref[g] - ours[g], ref[g] - ceil[g]
-        if gap <= 1e-9:
-            return f"{g}: no gap"
-        posture = (ref[g] - static[g]) / method if method > 1e-9 else 0.0
-        return (
-            f"{g} {100 * min(max(method / gap, 0.0), 1.0):.0f}% (posture offsets "
-            f"{100 * min(max(posture, 0.0), 1.0):.0f}% of it)"
-        )
-
-    return Claim(
-        claim_id=f"{PAPER}.fig8.variants_differ_at_fixed_style",
-        paper=PAPER,
-        source="Fig. 8a, Sec. 7.3",
-        statement="Clips synthesized with the same style parameter differ visibly while their stride lengths "
-        "coincide with the requested one.",
-        published="differences easy to notice; strides coincide with the style parameter",
-        measured="spread ours / ceiling / data per group: "
-        + ", ".join(f"{g} {ours[g]:.2f}/{ceil[g]:.2f}/{ref[g]:.2f} cm" for g in GROUPS)
-        + f"; max stride error {errors.max():.2f} cm ({int(np.sum(errors > PUBLISHED_MAX_STRIDE_ERROR_CM))}"
-        f"/{n} over 1.2 cm; ceiling {ceil_errors.max():.2f} cm)",
-        verdict=verdict_from_fraction(sum(checks), len(checks), full=1.0, partial=0.6),
-        value=sum(checks) / len(checks),
-        bound=1.0,
-        unit="share",
-        direction=">=",
-        note=f"Three checks: spread > 0 in every group; spread within [{lo:g}, {hi:g}] x the spread of the "
-        f"{n_near} example cycles nearest the style (one per subject, as Fig. 1); every stride error <= "
-        f"{PUBLISHED_MAX_STRIDE_ERROR_CM} cm (Fig. 6's bound). Passed: {checks}. Ceiling: the same style "
-        "synthesized from those examples' own xi instead of sampled xi, the most variation the model can "
-        "give them. Eq. 7's xi sums frame-to-frame rotation changes, so a constant posture offset (torso "
-        "lean, head pitch, elbow flexion: much of the variation between subjects) cancels out of xi "
-        "exactly and cannot reach the synthesis. Of the gap in spread ours -> data, the part between ceiling "
-        "and data is the method's, the rest comes from sampling "
-        f"{n} xi (per group, in cm of SD; posture offsets = data minus the data with each clip's mean "
-        "posture removed): " + ", ".join(share(g) for g in GROUPS) + ". The examples with each clip's mean "
-        "posture removed spread "
-        + ", ".join(f"{g} {static[g]:.2f}" for g in GROUPS)
-        + " cm. Previous full-config run (root "
-        "rotation in group D): spread ours 0.03-1.42 cm vs data 0.35-2.39 cm; ceiling 0.43/1.60/1.64/0.03 "
-        "cm vs data 0.92/2.22/2.39/0.35 cm; 6/20 strides over 1.2 cm. Changed: "
-        + (
-            "the root rotation moved to the legs group A (config ma2010.root_group; a sampled xi_D no longer "
-            "tilts the pelvis and breaks the stride), and "
-            if root_group == "legs"
-            else ""
-        )
-        + f"the ceiling is reported. Root rotation in: {root_group}. {PROTOCOL}",
-    )
+#: measurement key of each spread of :func:`fixed_style_spreads` but the data's (``motionvar.ma2010.claims``)
+SPREAD_KEYS = {
+    "ours": "ours",
+    "ceiling (their own xi)": "ceiling",
+    "data, mean posture removed": "data_posture_free",
+    "RBF": "rbf",
+    "Kriging": "kriging",
+}
 
 
-def no_variation_claim(spreads: dict, n: int) -> Claim:
-    """Sec. 7.3-7.4's claim: RBF and style-only Kriging give one clip for one style."""
-    ours = spreads["ours"]
-    none_vary = max(max(spreads["RBF"].values()), max(spreads["Kriging"].values()))
-    return Claim(
-        claim_id=f"{PAPER}.sec7_4.rbf_kriging_give_no_variation",
-        paper=PAPER,
-        source="Sec. 7.3-7.4",
-        statement="RBFs and universal Kriging cannot produce variants with the same style parameters.",
-        published="constant output for a constant style",
-        measured=f"largest spread of {n} RBF / Kriging clips at one style: {none_vary:.2e} cm (ours: "
-        f"{min(ours.values()):.2f}-{max(ours.values()):.2f} cm)",
-        verdict=verdict_from_bool(none_vary < 1e-6),
-        value=none_vary,
-        bound=1e-6,
-        unit="cm",
-        direction="<",
-        note="Both interpolate over the style alone, so a repeated style gives the same clip.",
-    )
+def fixed_style_measurements(
+    spreads: dict,
+    data_name: str,
+    errors: np.ndarray,
+    ceil_errors: np.ndarray,
+    n_near: int,
+    settings: Ma2010Settings,
+    root_group: str,
+) -> dict:
+    """What Fig. 8a's claims are judged on: the spread per joint group of every source
+    (``spread_cm``: :data:`SPREAD_KEYS`, the nearest examples' ``data_name`` as ``data``), the
+    groups, the variants' largest stride error and how many exceed 1.2 cm, the ceiling's largest,
+    the numbers of variants and of nearest examples, ``settings.spread_ratio_bounds`` and the root
+    rotation's group."""
+    spread = {SPREAD_KEYS.get(name, "data" if name == data_name else name): dict(s) for name, s in spreads.items()}
+    return {
+        "spread_cm": spread,
+        "groups": list(GROUPS),
+        "max_stride_error_cm": float(errors.max()),
+        "over_bound": int(np.sum(errors > PUBLISHED_MAX_STRIDE_ERROR_CM)),
+        "variants": len(errors),
+        "ceiling_max_stride_error_cm": float(ceil_errors.max()),
+        "examples": n_near,
+        "spread_ratio_bounds": list(settings.spread_ratio_bounds),
+        "root_group": root_group,
+    }
 
 
 def fig8_fixed_style(walks: WalkCycles, model: StyleVariationModel, settings: Ma2010Settings) -> EvaluationResult:
@@ -211,9 +160,9 @@ def fig8_fixed_style(walks: WalkCycles, model: StyleVariationModel, settings: Ma
     errors, and the spread per joint group of ours, of the ceiling (the same style from the
     nearest examples' own xi, :func:`ceiling_variants`), of the nearest examples (one per
     subject; also with each clip's mean posture removed), of RBF and of style-only Kriging
-    (:func:`fixed_style_spreads`). Claims: the variants differ within
-    ``settings.spread_ratio_bounds`` times the data's spread while keeping the stride; RBF
-    and Kriging do not vary. Figure: ``motions`` and ``key_frames`` of the variants in real
+    (:func:`fixed_style_spreads`). Claims, judged on :func:`fixed_style_measurements`: the
+    variants differ within ``settings.spread_ratio_bounds`` times the data's spread while
+    keeping the stride; RBF and Kriging do not vary. Figure: ``motions`` and ``key_frames`` of the variants in real
     time, ``style``, ``errors``, ``spreads``, ``ceiling_errors``, ``data_name`` (the key of
     the data's spread)."""
     clips, solver = walks.clips, walks.solver
@@ -233,12 +182,9 @@ def fig8_fixed_style(walks: WalkCycles, model: StyleVariationModel, settings: Ma
     ]
     rows += [{"kind": "spread_cm", "name": name, **s} for name, s in spreads.items()]
     motions, keys = variant_motions(model, pred, solver, clips.fps)
-    claims = [
-        variation_claim(
-            spreads, data_name, errors, ceil_errors, len(near), settings.spread_ratio_bounds, walks.root_group
-        ),
-        no_variation_claim(spreads, n),
-    ]
+    measurements = fixed_style_measurements(
+        spreads, data_name, errors, ceil_errors, len(near), settings, walks.root_group
+    )
     figure = {
         "motions": motions,
         "key_frames": keys,
@@ -249,4 +195,5 @@ def fig8_fixed_style(walks: WalkCycles, model: StyleVariationModel, settings: Ma
         "ceiling_errors": ceil_errors,
         "data_name": data_name,
     }
-    return EvaluationResult(table=pd.DataFrame(rows), claims=claims, figure=figure)
+    claims = judge_claims(CLAIMS, "ma2010_fig8", measurements)
+    return EvaluationResult(pd.DataFrame(rows), claims, figure, measurements)

@@ -12,10 +12,11 @@ import logging
 import numpy as np
 import pandas as pd
 
-from ...claims import Claim, EvaluationResult, NotApplicable, verdict_from_fraction
+from ...claims import EvaluationResult, NotApplicable, judge_claims
 from ...core.motion import Motion
 from ...core.threads import fixed_threads
 from ...metrics.jerk import mean_jerk, root_free_jerk
+from ..claims import CLAIMS
 from ..comparison import (
     LABELS,
     METHODS,
@@ -30,15 +31,15 @@ from ..comparison import (
 )
 from ..examples import WalkCycles
 from ..settings import Ma2010Settings
-from .common import PAPER, PROTOCOL, nearest_clips
+from .common import nearest_clips
 
 log = logging.getLogger(__name__)
 
 # The rivals' fits (the Bayesian GPLVM's 200 L-BFGS-B iterations in torch, the DBN's regressions)
 # follow paths whose last bits depend on how many threads torch and BLAS split a product over,
-# and the paths amplify them: at full size one thread instead of two moved GPLVM rows of the
-# table by up to 13 % (the verdict held). So the sequences are made with a fixed thread count,
-# the one of the published runs, whatever cores the job was given.
+# and the paths amplify them: at full size one thread instead of two changes GPLVM rows of the
+# table by up to 13 % (the verdict holds). So the sequences are made with a fixed thread count,
+# that of the published results, whatever cores the job was given.
 RIVAL_THREADS = 2
 
 
@@ -86,65 +87,30 @@ def sequence_rows(
     return rows
 
 
-def natural_claim(means: pd.DataFrame, out: dict[str, list[Motion]], full: float, settings: Ma2010Settings) -> Claim:
-    """Sec. 7.4's claim from the per-method means of the table: ours is at least as natural
-    as every rival that varies, on every naturalness score (:data:`NATURALNESS_SCORES`)."""
+def comparison_measurements(
+    means: pd.DataFrame, out: dict[str, list[Motion]], full: float, n_examples: int, settings: Ma2010Settings
+) -> dict:
+    """What Sec. 7.4's claim is judged on, from the per-method means of the table: every method's
+    naturalness scores (:data:`NATURALNESS_SCORES`, lower is more natural) and variation between its
+    sequences, on which scores ours is at least as good as every method that varies
+    (:func:`..comparison.best_with_variation`), the labels, the methods whose sequences stopped before
+    ``full`` s (the shortest one's length), the number of example cycles, and the settings of ours
+    (xi draws, transition landing) and of the Perlin noise."""
     scores = {m: {k: float(means.loc[m, k]) for k in NATURALNESS_SCORES} for m in METHODS}
     variation = {m: float(means.loc[m, "variation_between_sequences_cm"]) for m in METHODS}
-    best = best_with_variation(scores, variation, "ours")
-    rivals = [LABELS[m] for m in METHODS if m != "ours" and variation[m] > 1e-6]
-    ours_varies = variation["ours"] > 1e-6
-    n_best = sum(best.values()) if ours_varies else 0
-    xi_per, landing_rule = settings.comparison_xi, settings.comparison_landing
-    return Claim(
-        claim_id=f"{PAPER}.sec7_4.ours_most_natural_with_variation",
-        paper=PAPER,
-        source="Sec. 7.4",
-        statement="Three long sequences by our method are visually different but more natural than those of Perlin "
-        "noise, a GPLVM, RBFs, Kriging and a DBN built from the same five example clips.",
-        published="ours natural and varied; the others unnatural (Perlin, GPLVM jerks, DBN after many iterations) "
-        "or without variation (RBF, Kriging); judged from video",
-        measured=f"ours best on {n_best}/{len(best)} naturalness scores among the methods that vary ({', '.join(rivals)}): "
-        + "; ".join(
-            f"{NATURALNESS_SCORES[k]}: ours {scores['ours'][k]:.3g}, best rival "
-            f"{min((scores[m][k] for m in METHODS if m != 'ours' and variation[m] > 1e-6), default=float('nan')):.3g}"
-            + (" (ours best)" if best[k] else "")
-            for k in NATURALNESS_SCORES
-        )
-        + f"; variation between ours' sequences {variation['ours']:.2f} cm",
-        verdict=verdict_from_fraction(n_best, len(best), full=1.0, partial=0.5),
-        value=n_best / len(best) if best else float("nan"),
-        bound=1.0,
-        unit="share",
-        direction=">=",
-        note=(
-            "Diverged (unrolled process left the rotation range before the end): "
-            + ", ".join(
-                f"{LABELS[m]} after {min(x.duration for x in out[m]):.1f} s"
-                for m in METHODS
-                if any(x.duration < full for x in out[m])
-            )
-            + ". "
-            if any(x.duration < full for m in METHODS for x in out[m])
-            else ""
-        )
-        + f"The paper judges naturalness by eye; here {len(best)} scores stand in for it (all best: reproduced; at "
-        "least half: partial). RBF and Kriging make identical sequences (variation 0) and are not rivals. "
-        f"Ours draws xi once per {xi_per} ({'one person per sequence' if xi_per == 'sequence' else 'a new person every cycle'}; "
-        f"the paper does not say); transitions land on the {landing_rule.replace('_', ' ')} of the pose distance "
-        "(Eq. 15). The GPLVM rival is a Bayesian GPLVM along a fitted helix, stronger than the MAP GPLVM of "
-        "[Law03] that the paper drives 'roughly'. Perlin "
-        f"amplitude {settings.perlin_amplitude_rad:g} rad at {settings.perlin_frequency_hz:g} Hz (set by hand, as in the "
-        f"paper). Changed from the previous run (full config: ours best on 0/4, skating ours vs best rival "
-        "not distinguishable): foot skating now counts only frames where the contact detection has a foot down "
-        "and takes its contact point's speed (the generator's walks score ~0.1 cm/s; the earlier "
-        "height-threshold measure, in the table as low_joint_speed_cm_s, scored them 13-47 cm/s: heel and toe "
-        "roll); root-free jerk is scored beside whole-body jerk (5 scores, was 4: the shared root cleanup "
-        "dominated whole-body jerk); xi per sequence (was per cycle) and the significant-maximum landing "
-        "(was the first local maximum, 3-5 frames in) are the new defaults (config ma2010.comparison_xi, "
-        "comparison_landing); the shared footskate cleanup keeps each support foot at least 0.1 s (was the "
-        f"lower foot of every frame, which flickered in double support and jolted the root). {PROTOCOL}",
-    )
+    return {
+        "scores": scores,
+        "variation_cm": variation,
+        "ours_best": best_with_variation(scores, variation, "ours"),
+        "labels": {m: LABELS[m] for m in METHODS},
+        "score_labels": dict(NATURALNESS_SCORES),
+        "diverged_s": {m: min(x.duration for x in out[m]) for m in METHODS if any(x.duration < full for x in out[m])},
+        "examples": n_examples,
+        "xi_per": settings.comparison_xi,
+        "landing": settings.comparison_landing,
+        "perlin_amplitude_rad": settings.perlin_amplitude_rad,
+        "perlin_frequency_hz": settings.perlin_frequency_hz,
+    }
 
 
 def sec7_4_comparison(walks: WalkCycles, settings: Ma2010Settings, threads: int = RIVAL_THREADS) -> EvaluationResult:
@@ -155,7 +121,8 @@ def sec7_4_comparison(walks: WalkCycles, settings: Ma2010Settings, threads: int 
     beside it; a discontinuity is an acceleration above ``settings.discontinuity_factor`` x
     the examples' peak) and variation, one table row per sequence plus the examples as
     reference (:func:`sequence_rows`); a sequence that stops early (diverged) scores
-    infinite. Claim: ours is the most natural of the methods that vary. Figure: ``means``
+    infinite. Claim: ours is the most natural of the methods that vary (judged on
+    :func:`comparison_measurements`). Figure: ``means``
     (per-method means of the table), ``n_examples``, ``seconds``, ``n_sequences``,
     ``sequences`` (method -> motions). The sequences are made on ``threads`` torch and BLAS
     threads (:data:`RIVAL_THREADS`)."""
@@ -185,4 +152,5 @@ def sec7_4_comparison(walks: WalkCycles, settings: Ma2010Settings, threads: int 
         "n_sequences": settings.comparison_sequences,
         "sequences": out,
     }
-    return EvaluationResult(table=table, claims=[natural_claim(means, out, full, settings)], figure=figure)
+    measurements = comparison_measurements(means, out, full, len(near), settings)
+    return EvaluationResult(table, judge_claims(CLAIMS, "ma2010_sec7_4", measurements), figure, measurements)

@@ -6,12 +6,14 @@ the latent space itself."""
 from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
+from typing import Any
 
 import numpy as np
 import pandas as pd
 from sklearn.manifold import TSNE
 
-from ....claims import Claim, EvaluationResult, verdict_from_fraction
+from ....claims import EvaluationResult, judge_claims
+from ...claims import CLAIMS
 from ..settings import FdaSettings
 from .curves import METHODS
 from .measures import latent_separation
@@ -26,8 +28,9 @@ def evaluate_fig3_11(curves: Sequence[Mapping[str, np.ndarray]], settings: FdaSe
 
     Table: per (primitive, method) the latent dimension, clips, silhouette and k-NN
     accuracy. Figure: ``panels`` (rows of dicts: primitive, method, dim, labels, xy (t-SNE
-    map), silhouette, knn_accuracy), ``knn``. Claim: for ``reconstruction.pick_primitive``
-    SFPCA separates the labels best."""
+    map), silhouette, knn_accuracy), ``knn``. Measurements (:func:`fig3_11_measurements`): the
+    separation of ``reconstruction.pick_primitive`` per method, judged in
+    :mod:`motionvar.du2022.claims` (SFPCA separates the labels best)."""
     data = {}
     for z in curves:
         for method in z["methods"]:
@@ -63,41 +66,28 @@ def evaluate_fig3_11(curves: Sequence[Mapping[str, np.ndarray]], settings: FdaSe
             )
         panels.append(row)
     table = pd.DataFrame(rows)
-    sub = table[table["primitive"] == settings.reconstruction.pick_primitive].set_index("method")
-    claims = [sfpca_separation_claim(sub, settings.reconstruction.pick_primitive, knn)] if len(sub) else []
-    return EvaluationResult(table=table, claims=claims, figure={"panels": panels, "knn": knn})
+    measurements = fig3_11_measurements(table, settings.reconstruction.pick_primitive, knn)
+    claims = judge_claims(CLAIMS, "du2022_fig3_11", measurements)
+    return EvaluationResult(table, claims, {"panels": panels, "knn": knn}, measurements)
+
+
+def fig3_11_measurements(table: pd.DataFrame, pick_primitive: str, knn: int) -> dict[str, Any]:
+    """What the Fig. 3.11 claim is judged on: for ``pick_primitive`` its latent dimension and,
+    per method in the table's order, the silhouette and the ``knn``-NN accuracy (``methods``
+    empty when the table has no such primitive)."""
+    sub = table[table["primitive"] == pick_primitive]
+    return {
+        "pick_primitive": str(pick_primitive),
+        "knn": int(knn),
+        "latent_dim": int(sub["latent_dim"].iloc[0]) if len(sub) else None,
+        "methods": {
+            str(r["method"]): {"silhouette": float(r["silhouette"]), "knn_accuracy": float(r[f"knn{knn}_accuracy"])}
+            for r in sub.to_dict("records")
+        },
+    }
 
 
 def tsne_map(latent: np.ndarray, tsne_perplexity: float, seed: int) -> np.ndarray:
     """(clips, 2) t-SNE map of latent coordinates (perplexity capped at (clips - 1) / 3)."""
     perplexity = min(tsne_perplexity, (len(latent) - 1) / 3.0)
     return TSNE(n_components=2, perplexity=perplexity, init="pca", random_state=seed).fit_transform(latent)
-
-
-def sfpca_separation_claim(sub: pd.DataFrame, pick_primitive: str, knn: int) -> Claim:
-    """SFPCA separates the labels of the pick primitive best (Sec. 3.3.5, Fig. 3.11), by
-    silhouette and by k-NN accuracy; ``sub``: the table rows of ``pick_primitive`` by method."""
-    col = f"knn{knn}_accuracy"
-    best_sil = sub["silhouette"].idxmax()
-    best_knn = sub[col].max()
-    n_best = int(best_sil == "sfpca") + int(sub.loc["sfpca", col] >= best_knn)
-    return Claim(
-        claim_id="du2022.fig3_11.sfpca_best_separation_pick",
-        paper="du2022",
-        source="Fig. 3.11",
-        statement="For two-hand pick reach, SFPCA's latent space separates the three kinds of picking "
-        "(low, forward, high) best of the four methods.",
-        published="SFPCA clearly separates three types of picking; FPCA mislocates some low picks, "
-        "GPLVM and normalized FPCA keep the main structure with a few mislocated (visual, t-SNE)",
-        measured=f"{pick_primitive} ({sub['latent_dim'].iloc[0]}-D): silhouette "
-        + ", ".join(f"{m} {sub.loc[m, 'silhouette']:.3f}" for m in METHODS)
-        + f"; {knn}-NN accuracy "
-        + ", ".join(f"{m} {sub.loc[m, col]:.3f}" for m in METHODS),
-        verdict=verdict_from_fraction(n_best, 2),
-        value=n_best / 2,
-        bound=1.0,
-        unit="share",
-        direction=">=",
-        note="The thesis judges t-SNE plots by eye; we measure in the latent space itself. Reproduced: SFPCA "
-        "best by both silhouette and k-NN accuracy (ties count); partial: by one of them.",
-    )

@@ -10,13 +10,15 @@ the walk's hips are from the path.
 from __future__ import annotations
 
 from collections.abc import Mapping
+from typing import Any
 
 import numpy as np
 import pandas as pd
 
-from ....claims import Claim, EvaluationResult, verdict_from_fraction, verdict_threshold
+from ....claims import EvaluationResult, judge_claims
 from ....core.joint_map import JointMap
 from ....io.dataset import MotionDataset
+from ...claims import CLAIMS
 from ..constraints import Constraint
 from ..morphable_graph import MorphableGraph, Path2D, concatenate_steps, follow_path, synthesize_step
 from ..primitive import MotionPrimitive, primitive_clips
@@ -24,14 +26,11 @@ from ..settings import GraphSettings, SynthesisSettings
 from ..trees import SpacePartitioningTree
 from .common import semantic_index
 
-PAPER = "du2022"
 REACH_JOINT = "right_hand"
 VARIANT_LABELS = {
-    "greedy": "greedy (T = 1, no line 9; the earlier walk)",
+    "greedy": "greedy (T = 1, no line 9)",
     "line9": "line 9 alone (T = 1, all steps optimised together)",
 }
-PATH_CLOSE_CM = 10.0  # "follows the path": mean remaining hips position error per step
-REACH_CLOSE_CM = 2.0  # "reaches the target": remaining hand distance
 
 
 def _mode(look_ahead: int, joint_steps: int | str) -> str:
@@ -46,7 +45,7 @@ def _mode(look_ahead: int, joint_steps: int | str) -> str:
     return f"{ahead}, {line9}"
 
 
-def fig4_10_claims(
+def fig4_10_measurements(
     table: pd.DataFrame,
     n_steps: int,
     end_gap_cm: float,
@@ -54,68 +53,41 @@ def fig4_10_claims(
     mode: str = "",
     max_deviation_cm: float = float("nan"),
     variants: Mapping[str, Mapping] | None = None,
-) -> list[Claim]:
-    """Path following (mean remaining hips error per step <= :data:`PATH_CLOSE_CM`) and
-    reaching (every remaining hand error <= :data:`REACH_CLOSE_CM`) from the table of
-    :func:`evaluate_fig4_10`; ``mode`` names the look-ahead and line-9 settings,
-    ``max_deviation_cm`` is the largest distance of the walk's hips from the path,
-    ``variants`` the summaries of the compared walks (:data:`VARIANTS`)."""
+) -> dict[str, Any]:
+    """What the Fig. 4.10 claims are judged on, from the table of :func:`evaluate_fig4_10`: the
+    walk's step count and mean hips position errors per step (final, after the tree search,
+    after each step's own optimisation), mean heading error, end gap and largest distance from
+    the path; ``mode`` (look-ahead and line 9); the summaries of the compared walks
+    (``variants``, :data:`VARIANTS`); the reaching errors after LM and after the tree search,
+    with the reach joint and the targets' offset."""
     path_rows = table[table["task"] == "path"]
     reach_rows = table[table["task"] == "reach"]
-    mean_step = float(path_rows["position_error_cm"].mean())
-    greedy = ""
-    if "position_error_step_cm" in path_rows.columns:
-        greedy = f"; after each step's own LM (before joint optimisation) {path_rows['position_error_step_cm'].mean():.1f} cm"
-    dev = f"; hips at most {max_deviation_cm:.1f} cm from the path" if np.isfinite(max_deviation_cm) else ""
-    ok = int((reach_rows["position_error_cm"] <= REACH_CLOSE_CM).sum())
-    compared = "".join(
-        f" {VARIANT_LABELS.get(k, k)}: {v['n_steps']} steps, {v['mean_step_cm']:.1f} cm per step, at most "
-        f"{v['max_deviation_cm']:.1f} cm from the path, end {v['end_gap_cm']:.0f} cm from it."
-        for k, v in (variants or {}).items()
-    )
-    return [
-        Claim(
-            f"{PAPER}.fig4_10.follows_path",
-            PAPER,
-            "Fig. 4.10 (left)",
-            "A graph walk of walking primitives follows a floor path.",
-            "path following (qualitative figure)",
-            f"{n_steps} steps; hips position error per step, final {mean_step:.1f} cm (tree: "
-            f"{path_rows['position_error_tree_cm'].mean():.1f} cm{greedy}), heading "
-            f"{path_rows['heading_error_deg'].mean():.1f} deg; end of walk {end_gap_cm:.0f} cm from the path's "
-            f"end{dev}",
-            verdict_threshold(mean_step, PATH_CLOSE_CM, "<=", tolerance=1.0),
-            value=mean_step,
-            bound=PATH_CLOSE_CM,
-            unit="cm",
-            direction="<=",
-            note=f"reproduced when the mean remaining step position error is <= {PATH_CLOSE_CM:.0f} cm (partial up "
-            f"to twice that). Synthesis: {mode or 'see the caption'}; steps are not blended. Changed since the "
-            "previous run (issue 13): Algorithm 1 line 9 and a look-ahead of T steps implemented (the walk "
-            "looked one step ahead and drifted 24-45 cm after the first 45-degree corner at full size); the "
-            "next step is placed at the previous step's last canonical frame."
-            + (f" Compared walks (same trees):{compared}" if compared else ""),
-        ),
-        Claim(
-            f"{PAPER}.fig4_10.reaches_targets",
-            PAPER,
-            "Fig. 4.10 (right)",
-            "Targets within the variation range are reached by the picking primitive.",
-            "reaching targets (qualitative figure)",
-            f"{ok} of {len(reach_rows)} targets within {REACH_CLOSE_CM:.0f} cm; errors after LM "
-            + ", ".join(f"{e:.2f}" for e in reach_rows["position_error_cm"])
-            + " cm (tree: "
-            + ", ".join(f"{e:.1f}" for e in reach_rows["position_error_tree_cm"])
-            + " cm)",
-            verdict_from_fraction(ok, len(reach_rows)),
-            value=ok / len(reach_rows) if len(reach_rows) else float("nan"),
-            bound=1.0,
-            unit="share",
-            direction=">=",
-            note=f"targets: training end positions of the {REACH_JOINT} moved {reach_offset_cm:g} cm in a random "
-            f"direction; reproduced when every remaining error is <= {REACH_CLOSE_CM:.0f} cm.",
-        ),
-    ]
+    own = path_rows["position_error_step_cm"].mean() if "position_error_step_cm" in path_rows.columns else None
+    return {
+        "path": {
+            "n_steps": int(n_steps),
+            "mean_step_cm": float(path_rows["position_error_cm"].mean()),
+            "mean_tree_cm": float(path_rows["position_error_tree_cm"].mean()),
+            "mean_step_own_cm": None if own is None else float(own),
+            "heading_deg": float(path_rows["heading_error_deg"].mean()),
+            "end_gap_cm": float(end_gap_cm),
+            "max_deviation_cm": float(max_deviation_cm),
+        },
+        "mode": mode,
+        "variants": {
+            k: {
+                "label": VARIANT_LABELS.get(k, k),
+                **{f: v[f] for f in ("n_steps", "mean_step_cm", "max_deviation_cm", "end_gap_cm")},
+            }
+            for k, v in (variants or {}).items()
+        },
+        "reach": {
+            "joint": REACH_JOINT,
+            "offset_cm": reach_offset_cm,
+            "errors_cm": [float(e) for e in reach_rows["position_error_cm"]],
+            "tree_errors_cm": [float(e) for e in reach_rows["position_error_tree_cm"]],
+        },
+    }
 
 
 VARIANTS = {"greedy": (1, 0), "line9": (1, "all")}  # compared walks: (look_ahead, joint_steps)
@@ -257,7 +229,8 @@ def evaluate_fig4_10(
     table = pd.DataFrame(rows + reach_rows)
     figure = dict(walk_figure, reaches=reaches, targets=targets, reach_primitive=st.reach_primitive)
     mode = _mode(int(st.look_ahead), st.joint_steps)
-    claims = fig4_10_claims(
+    measurements = fig4_10_measurements(
         table, len(steps), summary["end_gap_cm"], st.reach_offset_cm, mode, summary["max_deviation_cm"], variants
     )
-    return EvaluationResult(table=table, claims=claims, figure=dict(figure, mode=mode, variants=variants))
+    claims = judge_claims(CLAIMS, "du2022_fig4_10", measurements)
+    return EvaluationResult(table, claims, dict(figure, mode=mode, variants=variants), measurements)

@@ -1,0 +1,57 @@
+"""The claims catalog (motionvar.claim_catalog): every claim declared once with its kind, every
+replication and stand-in claim with a negative control, and notes without run history."""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import pytest
+from negative_controls import all_controls
+
+from motionvar.claim_catalog import CLAIMS, catalog_markdown, spec, specs_of
+from motionvar.claims import EVIDENCE_KINDS, KINDS, not_applicable_result, specs_table
+
+SRC = Path(__file__).resolve().parents[1] / "src" / "motionvar"
+#: words that tell a run's history rather than what is (history belongs in CHANGELOG.md)
+HISTORY = re.compile(r"previous run|changed from|changed since|no longer|earlier run|\(issue \d+\)", re.I)
+
+
+def test_every_claim_is_declared_once_with_a_kind():
+    ids = [s.claim_id for s in CLAIMS]
+    assert len(ids) == len(set(ids))
+    assert all(s.kind in KINDS for s in CLAIMS)
+    assert {s.paper for s in CLAIMS} == {"ma2010", "du2022", "egges2004"}
+
+
+def test_every_replication_and_stand_in_claim_has_a_negative_control():
+    controls = all_controls()
+    needed = {s.claim_id for s in CLAIMS if s.kind in EVIDENCE_KINDS}
+    assert sorted(needed - set(controls)) == [], "claims without a negative control"
+    unknown = sorted(set(controls) - {s.claim_id for s in CLAIMS})
+    assert unknown == [], "controls of claims that are not declared"
+    consistency = sorted(c for c in controls if spec(c).kind == "consistency")
+    assert consistency == [], "a consistency claim needs no control: it cannot fail by construction"
+    assert all(len(m) == 1 for m in controls.values()), {c: m for c, m in controls.items() if len(m) > 1}
+
+
+def test_a_declaration_table_shows_every_claim_and_its_bound():
+    table = specs_table(CLAIMS)
+    assert len(table) == len(CLAIMS) and table["bound"].str.len().min() > 0
+
+
+def test_a_not_applicable_evaluation_lists_each_of_its_claims():
+    result = not_applicable_result("egges2004_repetition", "no idle clips", specs_of("egges2004_repetition"))
+    assert [c.claim_id for c in result.claims] == [s.claim_id for s in specs_of("egges2004_repetition")]
+    assert all(c.verdict == "not applicable" and c.note == "no idle clips" for c in result.claims)
+
+
+@pytest.mark.parametrize("path", sorted(SRC.rglob("*.py")), ids=lambda p: str(p.relative_to(SRC)))
+def test_library_code_tells_no_run_history(path):
+    hits = [line.strip() for line in path.read_text().splitlines() if HISTORY.search(line)]
+    assert hits == [], f"{path}: history belongs in CHANGELOG.md"
+
+
+def test_docs_claims_md_lists_the_declarations_as_they_are():
+    doc = Path(__file__).resolve().parents[1] / "docs" / "claims.md"
+    assert doc.read_text(encoding="utf-8") == catalog_markdown(), "run python tools/claims_doc.py"

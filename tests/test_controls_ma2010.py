@@ -1,0 +1,196 @@
+"""Negative controls of the Ma et al. 2010 claims (tests/negative_controls.py): for each replication
+and stand-in claim, the measurements of a situation in which the paper's statement is false."""
+
+from __future__ import annotations
+
+import numpy as np
+import pandas as pd
+import pytest
+from ma2010_toywalk import toy_walk
+from negative_controls import check_control
+
+from motionvar.core import cmu_joint_map
+from motionvar.ma2010.comparison import LABELS, METHODS, NATURALNESS_SCORES, best_with_variation, variation_between
+from motionvar.ma2010.evaluations.common import group_spread
+from motionvar.ma2010.evaluations.fig3 import circular_sd, step_phases
+from motionvar.ma2010.evaluations.fig7b import reliability_correlation
+from motionvar.ma2010.evaluations.fig8 import GROUPS, posture_free_spread
+from motionvar.ma2010.examples import joint_groups, root_solver
+
+JM = cmu_joint_map()
+
+
+def _scattered_maxima(behaviour: str) -> dict:
+    """Fig. 3 on clips whose maxima of S_M(t) fall anywhere in the step (uniformly random frames
+    between regular foot strikes): the key frames do not mark one gait phase."""
+    rng = np.random.default_rng(0)
+    strikes = np.arange(0, 1200, 60)  # a foot strike every 0.5 s at 120 fps
+    maxima = np.sort(rng.integers(strikes[0], strikes[-1], size=40))
+    phases = step_phases(maxima, strikes)
+    offsets = (maxima - strikes[np.abs(maxima[:, None] - strikes[None, :]).argmin(axis=1)]) / 120.0
+    scan = {
+        "phase_sd": circular_sd(phases),
+        "median_offset_s": float(np.median(offsets)),
+        "clips": 2,
+        "clips_with_strikes": 2,
+        "maxima": len(maxima),
+        "maxima_in_steps": len(phases),
+        "strike_source": "ground truth",
+    }
+    return {"behaviours": {behaviour: scan}, "phase_sd_bound": 0.05, "max_clips": 0}
+
+
+def _summary_row(err: np.ndarray, style_err: np.ndarray, pose: float = 1.0) -> dict:
+    return {
+        "n": len(err),
+        "max_stride_error_cm": float(np.nanmax(err)),
+        "mean_stride_error_cm": float(np.nanmean(err)),
+        "n_within_bound": int(np.sum(err <= 1.2)),
+        "max_style_error_cm": float(np.nanmax(style_err)),
+        "mean_style_error_cm": float(np.nanmean(style_err)),
+        "mean_pose_error_cm": pose,
+    }
+
+
+def _fig6_measurements(ours: np.ndarray, floor: np.ndarray, pose: dict[str, np.ndarray]) -> dict:
+    """Fig. 6's measurements from per-cycle stride errors of ours (own xi; the network's xi err alike)
+    and of the measure on the validation cycle (``floor``), and per-cycle pose errors of Kriging, RBF
+    and least squares; the last cycle closes its walk."""
+    closing = np.zeros(len(ours), bool)
+    closing[-1] = True
+    style = ours + floor
+
+    def rows(err: np.ndarray, p: np.ndarray | None = None) -> dict:
+        mean_pose = (lambda mask: float(p[mask].mean())) if p is not None else (lambda mask: 1.0)
+        return {
+            cycles: _summary_row(err[mask], style[mask], mean_pose(mask))
+            for cycles, mask in (("all", np.ones_like(closing)), ("steady", ~closing), ("closing", closing))
+        }
+
+    kr, rb, ls = (pose[k] for k in ("kriging", "rbf", "least_squares"))
+    return {
+        "stride_error_cm": {
+            "max": float(ours.max()),
+            "mean": float(ours.mean()),
+            "n": len(ours),
+            "n_within": int(np.sum(ours <= 1.2)),
+        },
+        "summary": {
+            **{f"ours_{k}_xi": rows(ours) for k in ("own", "mean", "sampled")},
+            "validation": rows(floor),
+            **{k: rows(np.zeros(len(ours)), v) for k, v in pose.items()},
+        },
+        "root_group": "legs",
+        "ablation_root_group": None,
+        "loo_unit": "walk",
+        "walks": len(ours),
+        "stride_reference": "validation",
+        "variogram_model": "linear",
+        "pose_error_cm": {k: float(v.mean()) for k, v in pose.items()},
+        "kriging_better": int(np.sum(kr < rb - 0.01)),
+        "tied": int(np.sum(np.abs(kr - rb) <= 0.01)),
+        "cycles": len(ours),
+        "least_squares_gap_cm": {"kriging": float(np.max(np.abs(kr - ls))), "rbf": float(np.max(np.abs(rb - ls)))},
+        "pose_tie_cm": 0.01,
+    }
+
+
+def stride_of_an_interpolator_that_ignores_the_style() -> dict:
+    """Fig. 6 with a model that predicts every held-out cycle at the mean stride of the others
+    (it ignores the style asked for): the strides of ten walks from 55 to 75 cm, left out one at a
+    time, miss by up to 11 cm."""
+    strides = np.column_stack([np.linspace(55.0, 75.0, 10), np.linspace(56.0, 76.0, 10)])
+    n = len(strides)
+    predicted = (strides.sum(axis=0) - strides) / (n - 1)  # the mean of the other walks
+    ours = np.abs(predicted - strides).max(axis=1)
+    pose = {k: np.full(n, 1.0) for k in ("kriging", "rbf", "least_squares")}
+    return _fig6_measurements(ours, np.full(n, 0.3), pose)
+
+
+def kriging_worse_than_rbf() -> dict:
+    """MK05 on folds where Kriging predicts every held-out cycle 0.3-0.5 cm worse (mean joint-position
+    distance) than RBF: Kriging is the less accurate of the two."""
+    rbf = np.linspace(0.8, 1.4, 8)
+    pose = {"kriging": rbf + np.linspace(0.3, 0.5, 8), "rbf": rbf, "least_squares": rbf + 0.1}
+    return _fig6_measurements(np.full(8, 0.5), np.full(8, 0.3), pose)
+
+
+def reliability_that_falls_with_distance() -> dict:
+    """Fig. 7b on a map whose stride error is largest at the examples and falls away from them (the
+    reliability measure of :func:`reliability_correlation` on it): no growth with distance."""
+    dist = np.linspace(0.0, 20.0, 64)
+    error = 3.0 - 0.1 * dist + 0.05 * np.sin(np.arange(64))
+    table = pd.DataFrame({"stride_error_cm": error, "nearest_example_cm": dist})
+    rho, p, failed = reliability_correlation(table)
+    return {"rho": rho, "p": p, "grid_points": len(table), "failed": int(failed.sum()), "margin": 0.5}
+
+
+def variants_that_are_one_clip() -> dict:
+    """Fig. 8a with a sampler that returns the same clip for every variant (xi ignored), beside
+    example cycles of four walkers who swing their legs, arms and torso differently: the variants do not differ
+    (spreads by :func:`group_spread` on the clips themselves), though their strides are right."""
+    examples = [
+        toy_walk(arm_amp=0.15 + 0.1 * i, hip_amp=0.3 + 0.02 * i, twist=0.03 + 0.02 * i, n_cycles=1.0) for i in range(4)
+    ]
+    sk = examples[0].skeleton
+    solver, groups = root_solver(sk, JM), joint_groups(JM, sk, "legs")
+    data = np.stack([m.rotations[:120] for m in examples])
+    variants = np.repeat(data[:1], 5, axis=0)
+    spread = {
+        "ours": group_spread(variants, groups, solver),
+        "ceiling": group_spread(data, groups, solver),
+        "data": group_spread(data, groups, solver),
+        "data_posture_free": posture_free_spread(data, groups, solver),
+        "rbf": group_spread(variants, groups, solver),
+        "kriging": group_spread(variants, groups, solver),
+    }
+    return {
+        "spread_cm": spread,
+        "groups": list(GROUPS),
+        "max_stride_error_cm": 0.4,
+        "over_bound": 0,
+        "variants": len(variants),
+        "ceiling_max_stride_error_cm": 0.4,
+        "examples": len(examples),
+        "spread_ratio_bounds": [0.33, 3.0],
+        "root_group": "legs",
+    }
+
+
+def sequences_that_do_not_vary() -> dict:
+    """Sec. 7.4 with three sequences of ours that are one and the same walk (variation between
+    them by :func:`variation_between`: 0), however natural their scores: not visually different."""
+    walk = toy_walk(n_cycles=2.0)
+    variation = {m: 2.0 for m in METHODS} | {"rbf": 0.0, "kriging": 0.0}
+    variation["ours"] = variation_between([walk, walk, walk])
+    scores = {m: {k: 1.0 for k in NATURALNESS_SCORES} for m in METHODS}
+    scores["ours"] = {k: 0.5 for k in NATURALNESS_SCORES}  # the most natural on every score
+    return {
+        "scores": scores,
+        "variation_cm": variation,
+        "ours_best": best_with_variation(scores, variation, "ours"),
+        "labels": dict(LABELS),
+        "score_labels": dict(NATURALNESS_SCORES),
+        "diverged_s": {},
+        "examples": 5,
+        "xi_per": "sequence",
+        "landing": "significant_maximum",
+        "perlin_amplitude_rad": 0.1,
+        "perlin_frequency_hz": 1.0,
+    }
+
+
+CONTROLS = {
+    "ma2010.fig3.walk_keyframes_at_one_gait_phase": lambda: _scattered_maxima("walk"),
+    "ma2010.fig3.run_keyframes_at_one_gait_phase": lambda: _scattered_maxima("run"),
+    "ma2010.fig6.loo_max_stride_error_below_1_2cm": stride_of_an_interpolator_that_ignores_the_style,
+    "ma2010.mk05.kriging_beats_rbf": kriging_worse_than_rbf,
+    "ma2010.fig7b.error_grows_with_distance": reliability_that_falls_with_distance,
+    "ma2010.fig8.variants_differ_at_fixed_style": variants_that_are_one_clip,
+    "ma2010.sec7_4.ours_most_natural_with_variation": sequences_that_do_not_vary,
+}
+
+
+@pytest.mark.parametrize("claim_id", sorted(CONTROLS))
+def test_negative_control_is_not_reproduced(claim_id):
+    check_control(claim_id, CONTROLS[claim_id])
