@@ -22,6 +22,12 @@ def check_control(claim_id: str, control: Control) -> None:
     assert claim.verdict == "not reproduced", (claim_id, claim.verdict, claim.measured)
 
 
+def control_claim(claim_id: str):
+    """The claim judged on its negative control (from the control module that holds it)."""
+    (module,) = all_controls()[claim_id]
+    return spec(claim_id).claim(importlib.import_module(module).CONTROLS[claim_id]())
+
+
 def all_controls() -> dict[str, list[str]]:
     """claim id -> the control modules (``test_controls_*``) that hold a control for it."""
     found: dict[str, list[str]] = {}

@@ -55,3 +55,20 @@ def test_library_code_tells_no_run_history(path):
 def test_docs_claims_md_lists_the_declarations_as_they_are():
     doc = Path(__file__).resolve().parents[1] / "docs" / "claims.md"
     assert doc.read_text(encoding="utf-8") == catalog_markdown(), "run python tools/claims_doc.py"
+
+
+#: a note says what was measured and how it differs from the paper's setup: at most three sentences
+NOTE_SENTENCES, NOTE_CHARS = 3, 600
+
+
+def sentences(text: str) -> int:
+    """Sentences of a note: ends of sentence are '.', '!' or '?' before a capital letter or the end."""
+    return len(re.findall(r"[.!?](?=\s+[A-Z]|\s*$)", text.strip()))
+
+
+@pytest.mark.parametrize("claim_id", sorted(all_controls()))
+def test_a_note_is_at_most_three_sentences(claim_id):
+    from negative_controls import control_claim
+
+    note = control_claim(claim_id).note
+    assert sentences(note) <= NOTE_SENTENCES and len(note) <= NOTE_CHARS, (claim_id, len(note), note)

@@ -9,12 +9,72 @@ import pandas as pd
 import pytest
 from negative_controls import check_control
 
+from motionvar.claim_catalog import spec
+from motionvar.core import Motion, Skeleton
+from motionvar.core.quaternions import quat_about_axis
+from motionvar.du2022.fda import choose_basis_sizes
+from motionvar.du2022.fda.evaluations import evaluate_fig3_9
 from motionvar.du2022.fda.evaluations.fig3_10 import fig3_10_measurements
 from motionvar.du2022.fda.evaluations.fig3_11 import fig3_11_measurements
 from motionvar.du2022.fda.evaluations.measures import latent_separation
+from motionvar.du2022.fda.settings import FdaSettings
 
 PICK, WALK = "pick_reach", "walk_leftStance"
 DIMS = (1, 2, 4, 8)
+
+
+# ---------------------------------------------------------------- Fig. 3.9
+
+
+class _Clips:
+    """The part of a canonical dataset that :func:`choose_basis_sizes` reads."""
+
+    def __init__(self, motions: list[Motion], metadata: pd.DataFrame) -> None:
+        self._motions, self.metadata = motions, metadata
+
+    def motion(self, i: int) -> Motion:
+        return self._motions[i]
+
+
+def walk_clips(n: int = 8, frames: int = 60, cycles: float = 1.0, seed: int = 0) -> list[Motion]:
+    """``n`` clips of a five-joint rig on one canonical timeline: joints swinging through
+    ``cycles`` sine cycles with random phases, a forward root, and small per-frame jitter (the
+    noise floor at which the RMSE against K flattens, as in captured data)."""
+    rng = np.random.default_rng(seed)
+    skeleton = Skeleton(
+        names=tuple(f"j{i}" for i in range(5)),
+        parents=np.array([-1, 0, 1, 1, 1]),
+        offsets=np.array([[0, 0, 0], [0, 20, 0], [0, 25, 0], [15, 20, 0], [-15, 20, 0]], float),
+    )
+    axes, t = rng.normal(size=(5, 3)), np.linspace(0, 1, frames)
+    clips = []
+    for _ in range(n):
+        angles = 0.4 * np.sin(2 * np.pi * cycles * t[:, None] + rng.uniform(0, 2 * np.pi) + np.arange(5))
+        angles += 0.01 * rng.normal(size=angles.shape)
+        q = np.stack([quat_about_axis(axes[j], angles[:, j]) for j in range(5)], axis=1)
+        root = np.stack([100 * t, 90 + 2 * np.sin(4 * np.pi * t) + 0.1 * rng.normal(size=frames), 0 * t], -1)
+        clips.append(Motion(skeleton=skeleton, root_pos=root, rotations=q, fps=60.0))
+    return clips
+
+
+def fig3_9_of(primitives: dict[str, tuple[str, list[Motion]]]) -> dict:
+    """Fig. 3.9 measurements of primitive -> (behaviour, clips), measured as the pipeline does
+    (:func:`choose_basis_sizes` with the default candidates and cut-off, then the evaluation)."""
+    motions = [m for _, clips in primitives.values() for m in clips]
+    meta = pd.DataFrame([{"primitive": p, "behaviour": b} for p, (b, clips) in primitives.items() for _ in clips])
+    settings = FdaSettings()
+    rmse, _ = choose_basis_sizes(_Clips(motions, meta), settings.basis)
+    return evaluate_fig3_9(rmse, settings).measurements
+
+
+def picking_as_simple_as_walking() -> dict:
+    """The pick primitive's clips are the walking clips themselves: picking is exactly as simple as
+    walking, so the cut-off rule chooses the same K for both (the statement is false)."""
+    walks = walk_clips()
+    return fig3_9_of({WALK: ("walk", walks), PICK: ("pick", walks)})
+
+
+# ---------------------------------------------------------------- Fig. 3.10
 
 
 def _fig3_10(errors: dict[tuple[str, str], tuple[list[float], list[float]]]) -> dict:
@@ -57,18 +117,16 @@ def normalized_fpca_above_fpca_for_picking() -> dict:
     return _fig3_10(errors)
 
 
-def scaled_variants_not_monotone() -> dict:
-    """One primitive whose two scaled FPCA variants reconstruct worse with more dimensions in both
-    spaces (their scalings are fitted per dimension and land in worse optima as d grows), while
-    FPCA's nested subspaces fall (the statement is false for two of the three methods)."""
-    rising = [1.0, 0.8, 0.9, 1.1]
-    return _fig3_10(
-        {
-            (PICK, "fpca"): (_falling(1.0), _falling(4.0)),
-            (PICK, "normalized_fpca"): (rising, [4 * r for r in rising]),
-            (PICK, "sfpca"): ([1.0, 0.7, 0.75, 0.9], [3.0, 2.1, 2.5, 2.4]),
-        }
-    )
+def sfpca_not_monotone() -> dict:
+    """SFPCA's weights, fitted anew at every dimension, land in worse optima as d grows: its errors
+    rise again in both spaces of both primitives, while FPCA's and normalized FPCA's nested fits
+    fall (the statement is false for SFPCA)."""
+    errors = {}
+    for p in (PICK, WALK):
+        errors[(p, "fpca")] = (_falling(1.0), _falling(4.0))
+        errors[(p, "normalized_fpca")] = (_falling(1.2), _falling(5.0))
+        errors[(p, "sfpca")] = ([1.0, 0.7, 0.75, 0.9], [3.0, 2.1, 2.5, 2.4])
+    return _fig3_10(errors)
 
 
 def sfpca_latent_ignores_the_labels() -> dict:
@@ -90,11 +148,11 @@ def sfpca_latent_ignores_the_labels() -> dict:
     return fig3_11_measurements(pd.DataFrame(rows), PICK, 5)
 
 
-def cvaes_ignore_their_style() -> dict:
-    """Every CVAE's samples are the neutral VAE's (the style term had no effect): D (Eq. 5.12,
-    the evaluation's own distance) of each model's samples to each style example is the same
-    row for every model, so its minimum lies on the diagonal of one row only (the statement is
-    false)."""
+def table5_1_of(active: dict[str, int] | None = None) -> dict:
+    """Table 5.1 measurements where every CVAE's samples are the neutral VAE's (the style term had
+    no effect): D (Eq. 5.12, the evaluation's own distance) of each model's samples to each style
+    example is the same row for every model; ``active``: latent dimensions in use per model
+    (default 4 each)."""
     import torch
 
     from motionvar.du2022.style.evaluations.table5_1 import table5_1_measurements
@@ -107,8 +165,15 @@ def cvaes_ignore_their_style() -> dict:
     table = pd.DataFrame(
         {s: [float(style_distance(samples, examples[s])) for _ in styles] for s in styles}, index=styles
     )
-    infos = [{"style": s, "regime": "adam lr 1e-05, 2 epochs", "active_units": 4} for s in styles[1:]]
-    return table5_1_measurements(table, WALK, 20, infos)
+    active = {s: 4 for s in styles} | (active or {})
+    infos = [{"style": s, "regime": "adam lr 1e-05, 2 epochs", "active_units": active[s]} for s in styles]
+    return table5_1_measurements(table, WALK, 20, infos, 32)
+
+
+def cvaes_ignore_their_style() -> dict:
+    """Every CVAE's samples are the neutral VAE's, each model using 4 latent dimensions: the
+    minimum of the same row lies on the diagonal of one row only (the statement is false)."""
+    return table5_1_of()
 
 
 # ---------------------------------------------------------------- Tables 5.2-5.3
@@ -130,10 +195,16 @@ def _clips(n: int, amplitude: float, seed: int, speed_spread: float = 0.1) -> np
     return feats
 
 
-def _table5_2(training: np.ndarray, round_trip: np.ndarray, models: dict[str, tuple[np.ndarray, np.ndarray]]) -> dict:
+def _table5_2(
+    training: np.ndarray,
+    round_trip: np.ndarray,
+    models: dict[str, tuple[np.ndarray, np.ndarray]],
+    active: dict[str, int] | None = None,
+) -> dict:
     """Tables 5.2-5.3 measurements: the neutral training clips, the same through the
     autoencoder, and per model (neutral first) its samples and its own training clips; the
-    decoder at the posterior means is taken to give the samples."""
+    decoder at the posterior means is taken to give the samples; ``active``: latent dimensions
+    in use per model (default 4 each)."""
     from motionvar.du2022.style.diversity import diversity
     from motionvar.du2022.style.evaluations.table5_2 import ROUND_TRIP, TRAINING, table5_2_measurements
     from motionvar.du2022.style.settings import StyleSettings
@@ -149,7 +220,7 @@ def _table5_2(training: np.ndarray, round_trip: np.ndarray, models: dict[str, tu
                 "primitive": WALK,
                 "model": name,
                 **measured,
-                "active_latents": 4,
+                "active_latents": (active or {}).get(name, 4),
                 **{f"training_{k}": v for k, v in own_measured.items()},
                 **{f"posterior_mean_{k}": v for k, v in measured.items()},
             }
@@ -173,21 +244,28 @@ def neutral_vae_spreads_step_lengths() -> dict:
     return _table5_2(train, train, {"neutral": (_clips(12, 10.0, 1, speed_spread=0.3), train)})
 
 
+def _shrunk(clips: np.ndarray, factor: float) -> np.ndarray:
+    """``clips`` with every pose pulled toward the mean pose (pose spread times ``factor``)."""
+    out = clips.copy()
+    mean = clips[..., : 3 * J].mean(axis=(0, 1))
+    out[..., : 3 * J] = mean + factor * (clips[..., : 3 * J] - mean)
+    return out
+
+
 def cvaes_keep_their_pose_variance() -> dict:
-    """The neutral VAE keeps 80% of its training clips' pose swing while the CVAEs reproduce
-    their own style's clips exactly (every style's pose_SD relative to its own data above the
-    neutral VAE's: the statement is false)."""
+    """The neutral VAE keeps 80% of its training clips' pose spread while each CVAE, trained on the
+    same neutral clips, reproduces them whole (the style term took no pose variance away): every
+    CVAE's pose_SD is above the neutral VAE's (the statement is false)."""
     train = _clips(12, 10.0, 0)
-    neutral = train.copy()
-    neutral[..., : 3 * J] = train[..., : 3 * J].mean(axis=(0, 1)) + 0.8 * (
-        train[..., : 3 * J] - train[..., : 3 * J].mean(axis=(0, 1))
-    )
     proud, old = _clips(4, 14.0, 2), _clips(4, 6.0, 3)
-    return _table5_2(train, train, {"neutral": (neutral, train), "proud": (proud, proud), "old": (old, old)})
+    return _table5_2(
+        train, train, {"neutral": (_shrunk(train, 0.8), train), "proud": (train, proud), "old": (train, old)}
+    )
 
 
 CONTROLS = {
-    "du2022.fig3_10.errors_decrease_with_dims": scaled_variants_not_monotone,
+    "du2022.fig3_9.complex_motions_need_more_basis": picking_as_simple_as_walking,
+    "du2022.fig3_10.sfpca_errors_decrease_with_dims": sfpca_not_monotone,
     "du2022.fig3_10.normalized_fpca_beats_fpca_observation_pick": normalized_fpca_above_fpca_for_picking,
     "du2022.fig3_10.sfpca_lowest_observation_error": sfpca_worst_in_joint_space,
     "du2022.fig3_11.sfpca_best_separation_pick": sfpca_latent_ignores_the_labels,
@@ -201,3 +279,42 @@ CONTROLS = {
 @pytest.mark.parametrize("claim_id", sorted(CONTROLS))
 def test_negative_control_is_not_reproduced(claim_id):
     check_control(claim_id, CONTROLS[claim_id])
+
+
+# ---------------------------------------------------------------- beside the controls
+
+
+def test_complex_picks_need_more_basis_functions():
+    """The positive case of the Fig. 3.9 control's measure: pick clips that swing through three
+    cycles where the walks swing through one need more basis functions."""
+    walks = walk_clips()
+    claim = spec("du2022.fig3_9.complex_motions_need_more_basis").claim(
+        fig3_9_of({WALK: ("walk", walks), PICK: ("pick", walk_clips(cycles=3.0, seed=1))})
+    )
+    assert claim.verdict == "reproduced" and claim.value > 0, claim.measured
+
+
+def test_a_collapsed_model_makes_the_chapter_5_claims_not_testable():
+    """A model using fewer than 2 latent dimensions leaves the claims that compare its samples
+    not testable, with the reason in the note; the other claims are still judged."""
+    collapsed = spec("du2022.table5_1.diagonal_dominant").claim(table5_1_of({"proud": 1}))
+    assert collapsed.verdict == "not testable" and "proud 1" in collapsed.note and collapsed.value is None
+    assert collapsed.measured.startswith("1 of 4 rows")
+
+    train = _clips(12, 10.0, 0)
+    proud = _clips(4, 14.0, 2)
+    models = {"neutral": (_shrunk(train, 0.9), train), "proud": (_shrunk(train, 0.8), proud)}
+    ids = [f"du2022.table5_2.{c}" for c in ("neutral_pose_sd_close_to_training", "neutral_step_sd_lower_than_training")]
+    style_id = "du2022.table5_2.style_pose_sd_lower_than_neutral"
+    healthy = _table5_2(train, train, models)
+    assert all(spec(c).claim(healthy).verdict in ("reproduced", "partial", "not reproduced") for c in [*ids, style_id])
+
+    neutral_collapsed = _table5_2(train, train, models, active={"neutral": 0})
+    for claim_id in [*ids, style_id]:
+        claim = spec(claim_id).claim(neutral_collapsed)
+        assert claim.verdict == "not testable" and f"{WALK} neutral 0" in claim.note, claim
+        assert claim.value is None and claim.bound is None and claim.direction == ""
+
+    cvae_collapsed = _table5_2(train, train, models, active={"proud": 1})
+    assert spec(style_id).claim(cvae_collapsed).verdict == "not testable"
+    assert [spec(c).claim(cvae_collapsed).verdict for c in ids] == [spec(c).claim(healthy).verdict for c in ids]

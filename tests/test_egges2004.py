@@ -304,18 +304,110 @@ def test_blend_with_masks_and_add_variations(toy):
 
 
 def test_window_features_sets():
-    from motionvar.egges2004.evaluations.identification import window_features
+    from motionvar.egges2004.evaluations.identification import feature_subset, window_features
 
     rng = np.random.default_rng(0)
     pcs, lam = rng.normal(size=(1200, 12)), rng.uniform(0.3, 0.7, 1200)
     full = window_features(pcs, lam, 30.0, 10.0, n_pcs=5, margin=0.1)
     dyn = window_features(pcs, lam, 30.0, 10.0, n_pcs=5, margin=0.1, feature_set="dynamics")
-    assert full.shape == (4, 5 + 5 + 1 + 3 + 1 + 9) and dyn.shape == (4, 5 + 1 + 9)
+    posture = window_features(pcs, lam, 30.0, 10.0, n_pcs=5, margin=0.1, feature_set="posture")
+    assert full.shape == (4, 5 + 5 + 1 + 3 + 1 + 9) and dyn.shape == (4, 5 + 1 + 9) and posture.shape == (4, 5 + 4)
     assert np.all(np.isfinite(full))
+    assert np.array_equal(feature_subset(full, "dynamics", 5), dyn)
+    assert np.array_equal(feature_subset(full, "posture", 5), posture)
+    # movement-only features do not see the posture held: shifting every PC changes none of them
+    assert np.allclose(window_features(pcs + 3.0, lam, 30.0, 10.0, 5, 0.1, feature_set="dynamics"), dyn)
     with pytest.raises(ValueError, match="feature_set"):
         window_features(pcs, lam, 30.0, 10.0, 5, 0.1, feature_set="mean")
+    with pytest.raises(ValueError, match="feature_set"):
+        feature_subset(full, "mean", 5)
     with pytest.raises(ValueError, match="window"):
         window_features(pcs[:100], lam[:100], 30.0, 10.0, 5, 0.1)
+
+
+def test_mcnemar_greater_counts_discordant_pairs():
+    from scipy.stats import binomtest
+
+    from motionvar.egges2004.evaluations.identification import mcnemar_greater
+
+    a = np.array([1, 1, 1, 1, 1, 1, 1, 0, 0, 1], dtype=bool)
+    b = np.array([0, 0, 0, 0, 0, 0, 1, 1, 0, 1], dtype=bool)
+    better, worse, p = mcnemar_greater(a, b)
+    assert (better, worse) == (6, 1) and p == pytest.approx(binomtest(6, 7, 0.5, alternative="greater").pvalue)
+    assert mcnemar_greater(b, a)[2] > 0.9  # one-sided: B is not better than A
+    assert mcnemar_greater(a, a) == (0, 0, 1.0)  # no discordant pair: no evidence
+    with pytest.raises(ValueError, match="paired"):
+        mcnemar_greater(a, b[:5])
+
+
+def test_movement_only_features_identify_people_who_differ_only_in_movement():
+    """Ground truth of the movement-only features (Sec. 5.6: "the way a person changes posture"):
+    four synthetic people with one body, stance and set of resting postures who differ only in
+    how they move (sway, breathing rate, how often and how fast they shift, head and arm
+    movements; motionvar.synth.idle.movement_twin) are named from movement-only features and not
+    from posture-only ones, through the posture PCA and the classifier of the evaluation."""
+    from motionvar.egges2004.evaluations.identification import REC, identification_table
+    from motionvar.egges2004.settings import Egges2004Settings
+    from motionvar.synth import idle as synth_idle
+    from motionvar.synth.subjects import make_subjects
+
+    twins = [synth_idle.movement_twin(make_subjects(1, seed=0)[0], k) for k in range(4)]
+    params = synth_idle.IdleParams(duration_s=60.0, fps=15.0, start_xz=(0.0, 0.0), heading_deg=0.0)
+    clips = {
+        f"{k + 1:02d}": [
+            synth_idle.generate_idle(t, params, np.random.default_rng(100 * k + c), st)[0] for c in range(5)
+        ]
+        for k, (t, st) in enumerate(twins)
+    }
+    pca = PosturePCA.fit([ms[0] for ms in clips.values()], 0.01)  # one training clip each spans the postures
+    jm = cmu_joint_map()
+    analysed = {s: [analyse_recording(m, pca, jm, f"{s}_{c}") for c, m in enumerate(ms)] for s, ms in clips.items()}
+    train = [(s, r.pcs, r.support) for s, rs in analysed.items() for r in rs[:3]]
+    held = {REC: [(s, r.pcs, r.support) for s, rs in analysed.items() for r in rs[3:]]}
+    settings = Egges2004Settings.from_dict({"identification": {"window_s": 10.0}})
+    table, _ = identification_table(train, held, list(clips), params.fps, settings)
+    p = table.set_index("features")["p_value"]
+    assert p["dynamics"] < settings.identification.alpha, table
+    assert p["posture"] >= settings.identification.alpha, table
+
+
+def test_spectral_distance_is_zero_for_equal_spectra_and_3_db_for_half_the_power():
+    from motionvar.egges2004.evaluations.repetition import power_spectra, spectral_distance_db
+
+    rng = np.random.default_rng(0)
+    f, psd = power_spectra(rng.normal(size=(400, 2)), 20.0, 40)
+    assert f[0] > 0 and psd.shape == (len(f), 2)  # the zero frequency is dropped
+    assert np.allclose(spectral_distance_db(psd, psd), 0.0)
+    assert np.allclose(spectral_distance_db(psd, 2 * psd), 10 * np.log10(2))  # about 3 dB
+    assert spectral_distance_db(np.zeros_like(psd), np.zeros_like(psd)).tolist() == [0.0, 0.0]
+    assert np.all(spectral_distance_db(np.zeros_like(psd), psd) > 50)  # no movement where there is some
+    with pytest.raises(ValueError, match="same shape"):
+        spectral_distance_db(psd, psd[:, :1])
+    with pytest.raises(ValueError, match="two frames"):
+        power_spectra(np.zeros((1, 2)), 20.0, 40)
+
+
+def test_structure_distances_tell_white_noise_from_sway():
+    from motionvar.egges2004.evaluations.repetition import (
+        GEN_VAR,
+        REC_VAR,
+        WHITE_VAR,
+        structure_distances,
+    )
+
+    rng = np.random.default_rng(0)
+    kernel = np.hanning(25) / np.hanning(25).sum()
+
+    def sway(n):
+        return np.stack([np.convolve(c, kernel, "same") for c in rng.normal(size=(2, n))], axis=1)
+
+    rec = sway(1500)
+    seqs = {REC_VAR: rec, GEN_VAR: sway(3000) + 5.0, WHITE_VAR: rng.normal(size=(3000, 2)) * rec.std(axis=0)}
+    d = structure_distances(seqs, 25.0, 50)
+    assert set(d) == set(seqs) and np.all(d[GEN_VAR] < 3.0) and np.all(d[WHITE_VAR] > 10.0)  # offset removed
+    assert np.all(d[REC_VAR] < 3.0)  # the recordings' halves
+    short = structure_distances({REC_VAR: rec[:99], GEN_VAR: rec}, 25.0, 50)
+    assert all(len(v) == 0 for v in short.values())
 
 
 def test_window_best_match_sees_a_loop():
@@ -329,6 +421,19 @@ def test_window_best_match_sees_a_loop():
     assert np.all(looped > 0.999) and np.median(fresh) < 0.9
     with pytest.raises(ValueError, match="two windows"):
         window_best_match(clip[:60], 50, 1)
+
+
+def test_speed_is_the_mean_of_the_runs_on_named_hardware(toy):
+    from motionvar.egges2004.evaluations.speed import generation_seconds, machine
+
+    _, pca, _, db = toy
+    t = generation_seconds(db, pca, 300, seed=0, repeats=2)
+    assert set(t) == {"balance", "variations", "reconstruct", "total"} and t["total"] > 0
+    assert t["total"] == pytest.approx(t["balance"] + t["variations"] + t["reconstruct"])
+    hw = machine()
+    assert hw["cpu"] and hw["cores"] >= 1 and 1 <= hw["usable_cores"] <= hw["cores"]
+    with pytest.raises(ValueError, match="egges2004.speed.repeats"):
+        generation_seconds(db, pca, 300, seed=0, repeats=0)
 
 
 def test_junction_steps():

@@ -140,14 +140,29 @@ def test_evaluations_on_toy_subjects(fitted):
     )
     assert result.figure["labels"] == ["01", "02", "03"] and result.figure["window_s"] == 5.0
     assert claim.claim_id == "egges2004.sec8.generated_idle_identifies_person"
-    acc = table[table["features"] == "all"].set_index("source")["accuracy"]
-    assert claim.value == pytest.approx(acc["generated (Egges 2004)"] - acc["Perlin noise on PCs"])
-    check_value_bound(claim)  # reproduced needs generated >= Perlin (and above chance)
+    assert set(table["features"]) == {"all", "posture", "dynamics"}
+    gen = table[table["source"] == "generated (Egges 2004)"].set_index("features")
+    m = result.measurements
+    for fs in ("all", "dynamics"):  # the paired comparison with the Perlin windows, per feature set
+        assert gen.loc[fs, "better_than_perlin"] + gen.loc[fs, "worse_than_perlin"] <= gen.loc[fs, "windows"]
+        assert m["vs_perlin"][fs]["p_value"] == gen.loc[fs, "p_vs_perlin"]
+    tests = (gen.loc["all", "p_value"], gen.loc["all", "p_vs_perlin"], gen.loc["dynamics", "p_value"])
+    assert (claim.value, claim.bound, claim.direction) == (max(tests), 0.01, "<")
+    check_value_bound(claim)  # reproduced needs all three tests below alpha
     assert isinstance(figures.draw_identification(result), Figure)
 
     params = with_("repetition", sequence_s=30.0, window_s=3.0, fps=10.0, loop_clip_s=5.0)
     result = repetition(model, recordings, params)
-    pooled, (claim,) = result.figure["pooled"], result.claims
+    pooled, (claim, structure) = result.figure["pooled"], result.claims
+    assert structure.claim_id == "egges2004.sec6.variations_keep_recorded_structure"
+    check_value_bound(structure)
+    spectral = result.table.set_index(["subject", "source"])["spectral_distance_db"]
+    assert (
+        spectral.xs("white noise (recorded variance)", level=1).min()
+        > spectral.xs("generated variations (Sec. 6)", level=1).max()
+    )
+    assert spectral.xs("recorded idle", level=1).isna().all()  # balance shifts are not variations
+    assert set(result.figure["spectra"]["psd"]) >= {"generated variations (Sec. 6)", "recorded rest variations"}
     assert pooled["looped recorded clip"].min() > 0.99 and pooled["looped rest variations"].min() > 0.99
     assert np.median(pooled["generated variations (Sec. 6)"]) < 0.99
     assert claim.verdict in ("reproduced", "partial", "not reproduced") and result.figure["n_pcs"] == 4
@@ -174,6 +189,9 @@ def test_evaluations_on_toy_subjects(fitted):
 
     result = fitting(model, with_("fitting", pairs=4, sequence_s=20.0, between_s=10.0))
     assert result.table[["max_start_error_cm", "max_end_error_cm"]].to_numpy().max() < 1e-6
+    t = result.table
+    assert (t["velocity_kink"] == (t["max_junction_accel_ratio"] > 1)).all()
+    assert "velocity kink at the junctions" in result.claims[0].measured
     assert result.claims[0].verdict in ("reproduced", "partial")
     linear = result.table[result.table["ramp"] == "linear"]
     assert result.claims[0].value == linear["max_junction_step_ratio"].max() and result.claims[0].bound == 1.0
@@ -189,6 +207,7 @@ def test_evaluations_on_toy_subjects(fitted):
     assert len(result.table) == 1 and result.table["realtime_ratio"].iloc[0] > 1
     assert result.claims[0].verdict == "reproduced"
     assert result.claims[0].value == result.table["realtime_ratio"].min() and result.claims[0].unit == "ratio"
+    assert "mean of 1 run) on " in result.claims[0].measured and result.measurements["cores"] >= 1
     check_value_bound(result.claims[0])
     assert isinstance(figures.draw_speed(result), Figure)
 

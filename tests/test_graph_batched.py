@@ -90,6 +90,24 @@ def _reference_greedy(tree: MedianKDTree, objective) -> tuple[int, float, int]:
     return best, best_err, n_evals
 
 
+def _reference_kd_beam(tree: MedianKDTree, objective, beam: int) -> tuple[int, float, int]:
+    """The kd descent keeping the ``beam`` best children of a level (heapq.nsmallest over each
+    node's right child, then its left one), one query at a time."""
+    frontier, best_err = [0], float(objective(tree.samples[tree.point[:1]])[0])
+    best, n_evals = int(tree.point[0]), 1
+    while frontier:
+        kids = [int(c) for n in frontier for c in (tree.right[n], tree.left[n]) if c >= 0]
+        if not kids:
+            break
+        err = objective(tree.samples[tree.point[kids]])
+        n_evals += len(kids)
+        i = int(np.argmin(err))
+        if err[i] < best_err:
+            best_err, best = float(err[i]), int(tree.point[kids[i]])
+        frontier = [kids[i] for i in heapq.nsmallest(beam, range(len(kids)), key=err.__getitem__)]
+    return best, best_err, n_evals
+
+
 def test_constraint_stack_equals_one_query_at_a_time(prim, setup):
     S, last, hand, pose, joints, queries = setup
     lh, rh = (cmu_joint_map().index(prim.skeleton, k) for k in ("left_hip", "right_hip"))
@@ -173,6 +191,30 @@ def test_lockstep_kd_search_equals_one_query_at_a_time(prim, setup):
             assert one.n_evals == obj.n_evals
 
 
+@pytest.mark.parametrize("beam", [2, 3])
+def test_lockstep_kd_beam_search_equals_one_query_at_a_time(prim, setup, beam):
+    """The kd-tree with a beam (Fig. 4.12's median tree at the k-means tree's evaluations): the
+    lockstep search gives each query what the per-query reference gives; a beam as wide as the
+    tree visits every sample (brute force)."""
+    S, last, _, _, joints, queries = setup
+    tree = MedianKDTree(S)
+    index = KeyFramePositionIndex(prim, S, [last], joints)
+    for ckind in KINDS:
+        qs = queries[ckind]
+        many = tree.search_many(index.objective_many(ConstraintStack([[c] for c in qs])), len(qs), beam)
+        for c, r in zip(qs, many):
+            obj = Objective(prim, [c])
+            one = tree.search(obj, beam)
+            assert (r.index, r.error, r.n_evals) == (one.index, one.error, one.n_evals)
+            assert (r.index, r.error, r.n_evals) == _reference_kd_beam(tree, Objective(prim, [c]), beam)
+            assert one.n_evals == obj.n_evals <= 1 + 2 * beam * tree.depth
+    c = queries["position"][0]
+    wide = tree.search(Objective(prim, [c]), tree.n_nodes)
+    assert wide.n_evals == len(S) and wide.index == brute_force(S, Objective(prim, [c])).index
+    with pytest.raises(ValueError, match="beam"):
+        tree.search(Objective(prim, [c]), 0)
+
+
 @pytest.mark.parametrize("beam", [1, 2, 4])
 def test_lockstep_searches_break_ties_as_the_reference(beam):
     """Objective values rounded to a coarse grid (many ties): the first of equal values wins,
@@ -188,13 +230,16 @@ def test_lockstep_searches_break_ties_as_the_reference(beam):
     many = tree.search_many(lambda q, r: evaluate(q, r, tree.points), len(targets), beam)
     kd = MedianKDTree(S, "cyclic")
     kd_many = kd.search_many(lambda q, r: evaluate(q, r, S), len(targets))
-    for q, (r, k) in enumerate(zip(many, kd_many)):
+    kd_beam = kd.search_many(lambda q, r: evaluate(q, r, S), len(targets), beam)
+    kd_general = kd._beam_search(lambda q, r: evaluate(q, r, S), len(targets), 1)  # beam 1 by the beam code
+    for q, (r, k, kb, kg) in enumerate(zip(many, kd_many, kd_beam, kd_general)):
 
         def objective(X, q=q):
             return np.round(np.linalg.norm(X - targets[q], axis=1) * 2.0)
 
         assert (r.index, r.error, r.n_evals) == _reference_beam(tree, objective, beam)
-        assert (k.index, k.error, k.n_evals) == _reference_greedy(kd, objective)
+        assert (k.index, k.error, k.n_evals) == _reference_greedy(kd, objective) == (kg.index, kg.error, kg.n_evals)
+        assert (kb.index, kb.error, kb.n_evals) == _reference_kd_beam(kd, objective, beam)
 
 
 def test_random_search_many_equals_random_search(prim, setup):

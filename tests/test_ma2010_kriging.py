@@ -202,3 +202,29 @@ def test_trend_cut_off_ignores_a_thin_direction_of_collinear_parameters():
     assert np.allclose(cut.trend(on_line), literal.trend(on_line), atol=0.05)
     with pytest.raises(ValueError, match="trend_rcond"):
         UniversalKriging("linear", variogram_scale="sd", trend_rcond=1.5)
+
+
+def test_rbf_with_one_example_per_walk_reaches_between_the_walks():
+    """RBFs on a linear term (Rose et al. 1998), each kernel's support twice the distance to the
+    nearest other example: with every cycle its own example, pairs of near-identical styles (the
+    cycles of one walk) get kernels that reach nothing else, and a style between the pairs gets
+    the linear fit alone; with each walk one example (its cycles' mean style and output) the
+    kernels span the distance to the nearest other walk and reach it, and the interpolation
+    passes through each walk's mean."""
+    from motionvar.ma2010.baselines.rbf import RBFInterpolation, support_radii
+
+    x = np.array([[0.0], [0.001], [1.0], [1.001], [3.0], [3.001]])
+    y = np.array([[0.0], [0.2], [5.0], [5.2], [0.0], [0.2]])
+    walks = np.array(["a", "a", "b", "b", "c", "c"])
+    linear = np.polyval(np.polyfit(x[:, 0], y[:, 0], 1), 2.0)
+    cycles = RBFInterpolation().fit(x, y)
+    assert np.allclose(cycles.predict(x), y, atol=1e-6)
+    assert cycles.predict(np.array([[2.0]]))[0, 0] == pytest.approx(linear) and not cycles.reaches([[2.0]])[0]
+    per_walk = RBFInterpolation().fit(x, y, walks)
+    assert per_walk.reaches([[2.0]])[0] and per_walk.predict(np.array([[2.0]]))[0, 0] > linear + 0.2
+    assert np.allclose(per_walk.predict(np.array([[0.0005], [1.0005], [3.0005]]))[:, 0], [0.1, 5.1, 0.1])
+    assert np.allclose(per_walk.radius_ * x.std(), [2.0, 2.0, 4.0])  # twice the distance to the nearest other walk
+    assert not per_walk.reaches([[10.0]])[0]  # beyond every support: the linear term alone
+    assert np.allclose(support_radii(np.array([[0.0], [0.0]])), 2.0)  # no other example elsewhere
+    with pytest.raises(ValueError, match="group labels"):
+        RBFInterpolation().fit(x, y, walks[:3])

@@ -201,3 +201,34 @@ def test_footfall_strides_run_between_the_swing_foots_footfalls():
     assert np.isnan(footfall_strides(feet, nothing, np.array([19, 45]))).all()
     with pytest.raises(ValueError, match="boundaries"):
         footfall_strides(feet, contacts, np.array([45, 19]))
+
+
+def test_footfall_strides_read_a_footfall_off_the_joint_that_is_down():
+    """A cycle cut at a key frame starts with the trailing (right) foot rolling off its toe: its
+    heel is already 8 cm up and its ankle 5 cm past its footprint, the toe still on it. With the
+    ankle and the toe of each foot the stride runs toe to toe there (120 cm); the ankle alone
+    comes out short (115 cm); where both are down at both ends the ankle is used."""
+    T = 60
+    feet = np.zeros((T, 2, 2, 3))  # (frames, left/right, ankle/toe, xyz)
+    feet[:, 0, 0] = [0.0, 3.0, 0.0]  # left ankle: planted 3 cm up
+    feet[:, 0, 1] = [12.0, 0.0, 0.0]  # left toe
+    t = np.arange(T)
+    feet[:, 1, 0, 0] = np.interp(t, [0, 40], [-55.0, 60.0])  # right ankle: heel up, then lands at 40
+    feet[:, 1, 0, 1] = np.interp(t, [0, 20, 40], [8.0, 20.0, 3.0])
+    feet[:, 1, 1, 0] = np.interp(t, [0, 3, 40, 45], [-48.0, -48.0, 71.0, 72.0])  # right toe: leaves at 3
+    feet[:, 1, 1, 1] = np.interp(t, [0, 3, 20, 40, 45], [0.0, 0.0, 20.0, 2.0, 0.0])
+    contacts = np.zeros((T, 2), dtype=bool)
+    contacts[:, 0] = True
+    contacts[:3, 1] = contacts[40:, 1] = True
+    planted = np.array([[3.0, 0.0], [3.0, 0.0]])
+    both = footfall_strides(feet, contacts, np.array([0, 50]), planted=planted, joint_tolerance=1.0)
+    assert both == pytest.approx([120.0])
+    assert footfall_strides(feet[:, :, 0], contacts, np.array([0, 50]))[0] == pytest.approx(115.0)
+    flat = feet.copy()
+    flat[:, 1, 0, 0] = np.interp(t, [0, 3, 40], [-60.0, -60.0, 60.0])
+    flat[:3, 1, 0, 1] = 3.0  # the right heel down at the start too: ankle to ankle
+    assert footfall_strides(flat, contacts, np.array([0, 50]), planted=planted, joint_tolerance=1.0)[0] == (
+        pytest.approx(120.0)
+    )
+    with pytest.raises(ValueError, match="contacts must be"):
+        footfall_strides(feet, contacts[:, :1], np.array([0, 50]))

@@ -57,3 +57,13 @@ def test_a_verdict_that_fewer_than_four_of_five_seeds_give_is_unstable():
 
 def test_verdict_counts_leaves_out_absent_undecided_verdicts():
     assert verdict_counts(pd.Series(["reproduced", "reproduced"])) == "2 reproduced, 0 partial, 0 not reproduced"
+
+
+def test_seeds_of_another_configuration_are_counted_apart():
+    seeds = {f"ci_s{i}": MAIN.astype(str) for i in range(5)}
+    seeds["ci_s4"] = seeds["ci_s4"].assign(verdict=lambda t: t["verdict"].where(t.claim_id != "ma2010.b", "reproduced"))
+    seeds["ci_s3"] = seeds["ci_s4"]
+    md = results_markdown(MAIN, "synthetic", None, "", claims_stability(seeds))
+    assert "Across the 5 seeds (ci_s0, ci_s1, ci_s2, ci_s3, ci_s4)" in md
+    assert "| Ma et al. 2010 | stand-in | 1 | 0 reproduced, 0 partial, 0 not reproduced, 1 unstable |" in md
+    assert "| partial | partial 3/5 |" in md and "seeds: verdict, agreeing" in md

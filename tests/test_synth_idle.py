@@ -5,7 +5,15 @@ import time
 import numpy as np
 import pytest
 
-from motionvar.synth.idle import CATEGORIES, IdleParams, generate_idle, idle_style, sample_rests
+from motionvar.synth.idle import (
+    CATEGORIES,
+    MOVEMENT_TRAITS,
+    IdleParams,
+    generate_idle,
+    idle_style,
+    movement_twin,
+    sample_rests,
+)
 from motionvar.synth.intervals import parse_intervals, parse_ranges
 from motionvar.synth.signals import colored_noise, minimum_jerk
 from motionvar.synth.stance import body_com, to_body_frame
@@ -209,6 +217,27 @@ def test_subjects_can_be_told_apart():
 def test_style_is_personal_and_stable():
     a, b = idle_style(SUBJECTS[0]), idle_style(SUBJECTS[0])
     assert a == b and idle_style(SUBJECTS[1]) != a
+
+
+def test_movement_twins_stand_alike_and_move_differently():
+    """movement_twin (the ground truth of movement-only identification, Egges 2004 Sec. 5.6): the
+    same body, stance and posture traits, new movement traits; the default generator is unchanged."""
+    from dataclasses import asdict
+
+    base = SUBJECTS[0]
+    (a, sa), (b, sb) = movement_twin(base, 0), movement_twin(base, 1)
+    assert (a, sa) == movement_twin(base, 0)
+    for twin, style in ((a, sa), (b, sb)):
+        same = {k: v for k, v in asdict(twin).items() if k not in MOVEMENT_TRAITS and k != "skeleton"}
+        assert same == {k: v for k, v in asdict(base).items() if k not in MOVEMENT_TRAITS and k != "skeleton"}
+        assert twin.skeleton is base.skeleton
+        assert {k: v for k, v in asdict(style).items() if k not in MOVEMENT_TRAITS} == {
+            k: v for k, v in asdict(idle_style(base)).items() if k not in MOVEMENT_TRAITS
+        }
+    assert all(getattr(a, k, None) != getattr(b, k, None) or getattr(sa, k) != getattr(sb, k) for k in MOVEMENT_TRAITS)
+    m0, _ = _clip(base, seed=2, duration_s=5.0)
+    m1, _ = generate_idle(base, IdleParams(duration_s=5.0), np.random.default_rng(2), idle_style(base))
+    assert np.array_equal(m0.rotations, m1.rotations)
 
 
 @pytest.mark.parametrize(

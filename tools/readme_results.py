@@ -19,8 +19,7 @@ from pathlib import Path
 
 import pandas as pd
 
-from motionvar.report.counts import seed_agreement, shown_verdicts
-from motionvar.report.results_markdown import counts_markdown, results_markdown
+from motionvar.report.results_markdown import readme_counts, results_markdown
 
 ROOT = Path(__file__).resolve().parents[1]
 START, END = "<!-- results:start -->", "<!-- results:end -->"
@@ -62,9 +61,7 @@ def main() -> None:
         print(f"warning: {stability_path} missing: verdicts without their agreement over seeds", file=sys.stderr)
     body = results_markdown(main_claims, args.main, others, args.note, stability)
     replace_between(ROOT / "docs" / "results.md", START, END, body)
-    agreement = seed_agreement(main_claims, stability, args.main) if stability is not None else None
-    counts = counts_markdown(main_claims, shown_verdicts(main_claims, agreement))
-    replace_between(ROOT / "README.md", COUNTS_START, COUNTS_END, counts)
+    replace_between(ROOT / "README.md", COUNTS_START, COUNTS_END, readme_counts(main_claims, args.main, stability))
     print(f"docs/results.md and README.md: Results from {args.main} and {len(others)} further dataset(s)")
 
 

@@ -143,8 +143,15 @@ register_evaluation(
         paper="du2022",
         label="Sec. 4.6.1",
         section="graph",
-        inputs={"models": graph_all_models, "metadata": f"{PREP}/metadata.csv", "dense": graph_dense_metadata},
-        mem_mb=2000,
+        # the clips too: each primitive is refitted to half of its clips (model size at N and 2N clips)
+        inputs={
+            "models": graph_all_models,
+            "metadata": f"{PREP}/metadata.csv",
+            "dense": graph_dense_metadata,
+            "clips": f"{PREP}/clips.npz",
+            "dense_clips": lambda wc: [p.replace("metadata.csv", "clips.npz") for p in graph_dense_metadata(wc)],
+        },
+        mem_mb=4000,
     )
 )
 register_evaluation(

@@ -36,3 +36,12 @@ def model_bytes(paths) -> dict:
         for p in paths
         if str(p).endswith(".npz")
     }
+
+
+def primitive_clips_of(loaded, snakemake) -> dict:
+    """The clips of each loaded primitive (prep stage's, or the dense picks' for ``*_dense``)."""
+    from motionvar.du2022.graph.evaluations.sec4_6_1 import clips_by_primitive
+
+    prep, dense = snakemake.input.clips, list(snakemake.input.dense_clips)
+    dense_data = dataset(dense[0]) if dense else None
+    return clips_by_primitive(list(loaded), dataset(prep), dense_data, prep, dense[0] if dense else "")

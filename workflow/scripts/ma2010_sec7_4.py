@@ -1,13 +1,14 @@
 """Rule ma2010_sec7_4 (Ma 2010 Sec. 7.4): long sequences by ours and every rival method
 from the same few example cycles, their naturalness and variation
-(motionvar.ma2010.evaluations.sec7_4); the GIF shows each method's first sequence."""
+(motionvar.ma2010.evaluations.sec7_4); the GIF shows each method's first sequence (of a
+swept method, at the middle setting of its sweep)."""
 
 
 def main(snakemake) -> None:
     from _ma2010 import load_walks, settings
     from _rule import write_evaluation
 
-    from motionvar.ma2010.comparison import LABELS, METHODS
+    from motionvar.ma2010.comparison import METHODS, family
     from motionvar.ma2010.evaluations.sec7_4 import sec7_4_comparison
     from motionvar.ma2010.figures import draw_sec7_4
     from motionvar.plots import animate_motions
@@ -16,11 +17,13 @@ def main(snakemake) -> None:
     s, report = settings(snakemake), ReportSettings.from_dict(snakemake.params.report)
     result = sec7_4_comparison(load_walks(snakemake, s), s)
     write_evaluation(snakemake, result, draw_sec7_4)
-    first = [result.figure["sequences"][m][0] for m in METHODS]
+    labels = result.figure["labels"]
+    shown = [[v for v in labels if family(v) == m] for m in METHODS]
+    shown = [variants[len(variants) // 2] for variants in shown]
     animate_motions(
         snakemake.output.animation,
-        first,
-        labels=[LABELS[m] for m in METHODS],
+        [result.figure["sequences"][v][0] for v in shown],
+        labels=[labels[v] for v in shown],
         out_fps=report.animation_fps,
         max_seconds=s.animation_seconds,
         panel_px=report.animation_panel_px,

@@ -134,9 +134,9 @@ def plot_identification(ax_bar: Axes, ax_conf: Axes, table, confusion: dict) -> 
         ax_bar.bar_label(bars, fmt="%.2f", fontsize=8)
     ax_bar.axhline(float(table["chance"].iloc[0]), color="k", ls="--", lw=1, label="chance (1/N)")
     ax_bar.set_xticks(x, [s.replace(" (", "\n(") for s in sources], fontsize=8)
-    ax_bar.set_ylim(0, 1.08)
+    ax_bar.set_ylim(0, 1.22)
     ax_bar.set_ylabel("subject named correctly (share of windows)")
-    ax_bar.legend(fontsize=8, loc="upper right")
+    ax_bar.legend(fontsize=8, loc="upper center", ncol=len(sets) + 1)
     m = confusion["confusion"]
     ax_conf.imshow(m, cmap="Blues")
     labels = confusion["labels"]
@@ -161,6 +161,17 @@ def plot_repetition(ax: Axes, pooled: dict[str, np.ndarray]) -> None:
     ax.invert_yaxis()
     ax.set_xlim(0, 1.02)
     ax.set_xlabel("highest normalised cross-correlation with another window (1 = exact repeat)")
+
+
+def plot_spectra(ax: Axes, spectra: dict) -> None:
+    """Power spectra of PC 1 of one subject's variation sequences, one curve per source (log-log)."""
+    styles = {"recorded": dict(color="k", lw=2.0), "white": dict(color="0.6", ls=":")}
+    for name, psd in spectra["psd"].items():
+        style = next((v for k, v in styles.items() if name.startswith(k)), {})
+        ax.loglog(spectra["freqs"], psd, label=name, **{"lw": 1.2, **style})
+    ax.set_xlabel("frequency (Hz)")
+    ax.set_ylabel("power spectral density of PC 1")
+    ax.legend(fontsize=7)
 
 
 def plot_speed(ax: Axes, table) -> None:
@@ -239,12 +250,16 @@ def draw_repetition(result: EvaluationResult) -> Figure:
     """Best-match normalised cross-correlation per source
     (:func:`~motionvar.egges2004.evaluations.repetition.repetition`)."""
     f = result.figure
-    fig, ax = plt.subplots(figsize=(10, 4.6))
-    plot_repetition(ax, f["pooled"])
-    ax.set_title(
+    spectra = f.get("spectra")
+    fig, axes = plt.subplots(1, 2 if spectra else 1, figsize=(16 if spectra else 10, 4.6), squeeze=False)
+    plot_repetition(axes[0, 0], f["pooled"])
+    axes[0, 0].set_title(
         f"Repetition within {f['sequence_s']:g}-s sequences ({f['window_s']:g}-s windows, first {f['n_pcs']} PCs)",
         fontsize=10,
     )
+    if spectra:
+        plot_spectra(axes[0, 1], spectra)
+        axes[0, 1].set_title(f"Structure: spectra of the variations, subject {spectra['subject']}", fontsize=10)
     fig.tight_layout()
     return fig
 
@@ -269,6 +284,7 @@ def draw_speed(result: EvaluationResult) -> Figure:
     (:func:`~motionvar.egges2004.evaluations.speed.speed`)."""
     fig, ax = plt.subplots(figsize=(7, 4))
     plot_speed(ax, result.table)
-    ax.set_title(f"Idle motion generation, {result.figure['sequence_s']:g}-s sequences (one core)", fontsize=10)
+    f = result.figure
+    ax.set_title(f"Idle motion generation, {f['sequence_s']:g}-s sequences, on {f.get('cpu', 'this CPU')}", fontsize=10)
     fig.tight_layout()
     return fig

@@ -55,7 +55,8 @@ class IdentificationSettings(Settings):
     window_s: length (s) of the non-overlapping windows the classifier sees.
     feature_pcs: leading PCs whose window mean and SD are features.
     generated_s: seconds of idle motion generated per subject (and of the Perlin baseline).
-    alpha: significance level of the binomial test of accuracy against chance (1/N).
+    alpha: significance level of each test of the claim: accuracy against chance (1/N) with all
+        and with movement-only features (binomial), generated against Perlin (paired, McNemar).
     """
 
     SECTION = "egges2004.identification"
@@ -68,11 +69,12 @@ class IdentificationSettings(Settings):
 
 @dataclass(frozen=True)
 class RepetitionSettings(Settings):
-    """Repetition (Sec. 6.2) as the best normalised cross-correlation between windows.
+    """Repetition (Sec. 6.2) as the best normalised cross-correlation between windows, and
+    structure as the spectral distance of the variations from the recorded ones.
 
-    sequence_s: length (s) of the generated, looped and Perlin sequences.
-    window_s: window length (s); Sec. 6.2 gives none: 5 s gives each of the ~20-s recorded
-        rests per subject two windows or more.
+    sequence_s: length (s) of the generated, looped, white-noise and Perlin sequences.
+    window_s: window length (s), also of the Welch segments of the spectra; Sec. 6.2 gives
+        none: 5 s gives each of the ~20-s recorded rests per subject two windows or more.
     stride_s: step (s) between the candidate windows compared with each window.
     fps: frame rate (Hz) the sequences are subsampled to before comparing.
     loop_clip_s: length (s) of the recorded clip that is looped.
@@ -117,7 +119,7 @@ class SpeedSettings(Settings):
     """Generation speed (Sec. 8: "generated and played in real-time").
 
     sequence_s: length (s) of each timed sequence.
-    repeats: timings per subject; the best counts.
+    repeats: timed runs per subject; their mean time counts.
     subjects: subjects timed (the first ones); 0 = all.
     """
 

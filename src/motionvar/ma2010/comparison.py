@@ -1,6 +1,7 @@
 """Long sequences from every method of Ma et al. 2010, Sec. 7.4 (ours, Perlin noise, a
-GPLVM along a helix, RBF, style-only Kriging, a DBN: :func:`method_sequences`), and the
-measures that compare them (naturalness, and variation between sequences of one method).
+GPLVM along a helix, RBF, style-only Kriging, a DBN: :func:`method_sequences`; Perlin noise
+and the DBN at each setting of a sweep: :func:`method_variants`), and the measures that
+compare them (naturalness, and variation between sequences of one method).
 
 Every method outputs local rotations; the root of every sequence is then recovered by the
 same footskate cleanup (Sec. 6.3), so that the methods differ only in their poses.
@@ -35,6 +36,7 @@ from .settings import XI_DRAWS, Ma2010Settings
 from .svi import ClipPrediction, StyleVariationModel
 from .synthesis import RootSolver, realtime_clips, sequence_motion, stitch
 
+#: the method families of Sec. 7.4 (Perlin noise and the DBN come at each setting of their sweep)
 METHODS = ("ours", "perlin", "gplvm", "rbf", "kriging", "dbn")
 LABELS = {
     "ours": "ours (Ma 2010)",
@@ -44,6 +46,26 @@ LABELS = {
     "kriging": "Kriging (MK05)",
     "dbn": "DBN (Lau 2009)",
 }
+
+
+def method_variants(settings: Ma2010Settings) -> dict[str, str]:
+    """The methods of Sec. 7.4 at every setting compared (key -> label), in :data:`METHODS`
+    order: Perlin noise at each of ``perlin_amplitude_sweep_rad`` (key ``perlin_<rad>``), the
+    DBN at each of ``dbn_max_parents_sweep`` (key ``dbn_<parents>``), the others once."""
+    out: dict[str, str] = {}
+    for m in METHODS:
+        if m == "perlin":
+            out |= {f"perlin_{a:g}": f"{LABELS[m]} {a:g} rad" for a in settings.perlin_amplitude_sweep_rad}
+        elif m == "dbn":
+            out |= {f"dbn_{p}": f"{LABELS[m]} {p} parents" for p in settings.dbn_max_parents_sweep}
+        else:
+            out[m] = LABELS[m]
+    return out
+
+
+def family(variant: str) -> str:
+    """The method (a key of :data:`METHODS`) of a key of :func:`method_variants`."""
+    return variant.split("_", 1)[0]
 
 
 def clips_for_duration(clips: ClipSet, seconds: float) -> int:
@@ -105,21 +127,25 @@ def interpolation_sequence(
     )
 
 
-def perlin_sequence(
+def perlin_sequences(
     clips: ClipSet,
     n_clips: int,
     solver: RootSolver,
     rng: np.random.Generator,
-    amplitude: float,
+    amplitudes: Sequence[float],
     frequency_hz: float,
     landing_rule: str,
-) -> Motion:
-    """Perlin noise [Per95] on the rotations of the examples concatenated in random order."""
+) -> list[Motion]:
+    """Perlin noise [Per95] on the rotations of the examples concatenated in random order, one
+    motion per amplitude (rad): the same order and the same noise, scaled, so that the
+    amplitudes differ in nothing else."""
     order = rng.integers(0, clips.n_clips, size=n_clips)
     rt = realtime_clips(clips.rotations[order], clips.key_times[order], clips.reference_keys, clips.fps)
     rot, _ = stitch(rt, landing_rule=landing_rule)
-    noisy = add_rotation_noise(rot, clips.fps, amplitude, frequency_hz, seed=int(rng.integers(2**31)))
-    return solver.motion(noisy, clips.fps)
+    seed = int(rng.integers(2**31))
+    return [
+        solver.motion(add_rotation_noise(rot, clips.fps, a, frequency_hz, seed=seed), clips.fps) for a in amplitudes
+    ]
 
 
 def example_pose_sequences(clips: ClipSet) -> list[np.ndarray]:
@@ -159,17 +185,17 @@ def method_sequences(
     examples: ClipSet, groups: Mapping[str, np.ndarray], solver: RootSolver, settings: Ma2010Settings
 ) -> dict[str, list[Motion]]:
     """Sec. 7.4: ``settings.comparison_sequences`` sequences of about
-    ``settings.comparison_seconds`` s per method (method -> list of Motion, methods in
-    :data:`METHODS` order), every method learning from the same ``examples``: ours (the
-    model of Sec. 5-6 with ``settings`` structure and variogram, xi sampled once per
-    sequence or per cycle: ``comparison_xi``), Perlin noise (``perlin_amplitude_rad``,
-    ``perlin_frequency_hz``) on the examples concatenated in random order, the Bayesian
-    GPLVM (``gplvm_latent_dim``, ``gplvm_iterations``; every ``gplvm_frame_step``-th example
-    pose) along a helix, RBF and style-only Kriging at the examples' mean style, and the DBN
-    (``dbn_max_parents``) unrolled (both pose models on :class:`PoseCodec` vectors).
-    Clip-based methods land their transitions by ``comparison_landing``
-    (:func:`.postprocess.landing_frame`). Sequence ``s`` draws from
-    ``numpy.random.default_rng([seed, s])``."""
+    ``settings.comparison_seconds`` s per method and setting (key of :func:`method_variants`
+    -> list of Motion, in that order), every method learning from the same ``examples``: ours
+    (the model of Sec. 5-6 with ``settings`` structure and variogram, xi sampled once per
+    sequence or per cycle: ``comparison_xi``), Perlin noise (each of
+    ``perlin_amplitude_sweep_rad``, ``perlin_frequency_hz``) on the examples concatenated in
+    random order, the Bayesian GPLVM (``gplvm_latent_dim``, ``gplvm_iterations``; every
+    ``gplvm_frame_step``-th example pose) along a helix, RBF and style-only Kriging at the
+    examples' mean style, and the DBN (each of ``dbn_max_parents_sweep``) unrolled (both pose
+    models on :class:`PoseCodec` vectors). Clip-based methods land their transitions by
+    ``comparison_landing`` (:func:`.postprocess.landing_frame`). Sequence ``s`` draws from
+    ``numpy.random.default_rng([seed, s])``; the settings of a swept method share its draws."""
     five, k, seconds, seed = examples, settings.comparison_sequences, settings.comparison_seconds, settings.seed
     xi_per, landing_rule = settings.comparison_xi, settings.comparison_landing
     fps = five.fps
@@ -186,14 +212,16 @@ def method_sequences(
     gplvm = BayesianGPLVM(settings.gplvm_latent_dim, max_iter=settings.gplvm_iterations, random_state=seed).fit(
         np.concatenate([codec.encode(r) for r in seqs])[:: settings.gplvm_frame_step]
     )
-    dbn = LauDBN(settings.dbn_max_parents).fit([codec.encode(r) for r in seqs])
+    dbns = {p: LauDBN(p).fit([codec.encode(r) for r in seqs]) for p in settings.dbn_max_parents_sweep}
     turns = seconds / float(np.mean(five.key_times[:, -1]))
-    perlin = (settings.perlin_amplitude_rad, settings.perlin_frequency_hz)
-    out: dict[str, list[Motion]] = {m: [] for m in METHODS}
+    amplitudes = settings.perlin_amplitude_sweep_rad
+    out: dict[str, list[Motion]] = {v: [] for v in method_variants(settings)}
     for s in range(k):  # n_sequences sequences per method
         rng = np.random.default_rng([seed, s])
         out["ours"].append(trim(ours_sequence(ours, style, n_clips, solver, rng, xi_per, landing_rule), seconds))
-        out["perlin"].append(trim(perlin_sequence(five, n_clips, solver, rng, *perlin, landing_rule), seconds))
+        noisy = perlin_sequences(five, n_clips, solver, rng, amplitudes, settings.perlin_frequency_hz, landing_rule)
+        for a, m in zip(amplitudes, noisy):
+            out[f"perlin_{a:g}"].append(trim(m, seconds))
         out["gplvm"].append(
             gplvm_sequence(
                 gplvm,
@@ -208,18 +236,21 @@ def method_sequences(
         )
         out["rbf"].append(trim(interpolation_sequence(rbf, style, n_clips, solver, fps, landing_rule), seconds))
         out["kriging"].append(trim(interpolation_sequence(krig, style, n_clips, solver, fps, landing_rule), seconds))
-        out["dbn"].append(dbn_sequence(dbn, codec, n_frames, solver, fps, rng))
+        dbn_seed = int(rng.integers(2**31))
+        for p, dbn in dbns.items():
+            out[f"dbn_{p}"].append(dbn_sequence(dbn, codec, n_frames, solver, fps, np.random.default_rng(dbn_seed)))
     return out
 
 
 @dataclass(frozen=True)
 class NaturalnessReference:
-    """What the naturalness measures compare with: the training poses (pose features); the
-    root solver whose feet (ankle and toe of each) and planted heights locate the feet's
-    contact points, for foot skating; the foot joints with the height of each when planted
-    (its 5th height percentile over the examples) and the height tolerance above it, for
-    the earlier height-threshold measure; and the acceleration above which a frame counts
-    as a discontinuity."""
+    """What the naturalness measures compare with: the training poses (pose features) and
+    how far a walker left out of them stands from them (``held_out_pose_distance``, cm:
+    :func:`held_out_pose_distance`); the root solver whose feet (ankle and toe of each) and
+    planted heights locate the feet's contact points, for foot skating; the foot joints with
+    the height of each when planted (its 5th height percentile over the examples) and the
+    height tolerance above it, for the earlier height-threshold measure; and the
+    acceleration above which a frame counts as a discontinuity."""
 
     poses: np.ndarray
     solver: RootSolver
@@ -227,21 +258,39 @@ class NaturalnessReference:
     foot_floor: np.ndarray
     contact_height: float
     acceleration_threshold: float
+    held_out_pose_distance: float
 
     @classmethod
     def from_examples(
         cls, motions: Sequence[Motion], solver: RootSolver, contact_height: float, threshold_factor: float
     ) -> "NaturalnessReference":
-        """From the (root-solved) example motions: their poses, their feet's planted
-        heights, and ``threshold_factor`` times the largest joint acceleration in them."""
+        """From two or more (root-solved) example motions: their poses, their feet's planted
+        heights, ``threshold_factor`` times the largest joint acceleration in them, and the
+        held-out pose distance."""
         positions = [m.positions() for m in motions]
         foot_joints = np.asarray(solver.feet).reshape(-1)
-        poses = np.concatenate([pose_features(p) for p in positions])
+        features = [pose_features(p) for p in positions]
         heights = np.concatenate([p[:, foot_joints, 1] for p in positions])
         peak = max(float(peak_acceleration(p, m.fps).max()) for p, m in zip(positions, motions))
         return cls(
-            poses, solver, foot_joints, np.percentile(heights, 5, axis=0), contact_height, threshold_factor * peak
+            np.concatenate(features),
+            solver,
+            foot_joints,
+            np.percentile(heights, 5, axis=0),
+            contact_height,
+            threshold_factor * peak,
+            held_out_pose_distance(features),
         )
+
+
+def held_out_pose_distance(examples: Sequence[np.ndarray]) -> float:
+    """How far a new walker's poses stand from the examples': the mean over examples of each
+    one's mean nearest-pose distance (cm, RMS per joint) to the poses of the others (pose
+    features, :func:`..metrics.pose_distance.pose_features`; two or more examples)."""
+    if len(examples) < 2:
+        raise ValueError(f"held_out_pose_distance: need poses of 2 or more examples; got {len(examples)}")
+    others = [np.concatenate([e for j, e in enumerate(examples) if j != i]) for i in range(len(examples))]
+    return float(np.mean([nearest_pose_distance(e, o).mean() for e, o in zip(examples, others)]))
 
 
 def naturalness(motion: Motion, ref: NaturalnessReference) -> dict[str, float]:
@@ -285,31 +334,33 @@ NATURALNESS_SCORES = {
     "jerk_vs_examples": "|log(jerk / examples' jerk)|",
     "root_free_jerk_vs_examples": "|log(root-free jerk / examples')|",
     "foot_skating_cm_s": "foot skating (cm/s)",
-    "pose_distance_cm": "distance to the nearest example pose (cm)",
+    "pose_excess_vs_held_out": "max(0, log(distance to the example poses / a held-out example's))",
     "discontinuities_per_min": "discontinuities per minute",
 }
 
 
 def naturalness_scores(
-    measures: Mapping[str, float], example_jerk: float, example_root_free_jerk: float
+    measures: Mapping[str, float], example_jerk: float, example_root_free_jerk: float, held_out_pose_cm: float
 ) -> dict[str, float]:
     """The naturalness scores of one sequence (:data:`NATURALNESS_SCORES`), each lower =
     more natural: whole-body and root-free jerk as their log-ratio to the examples' (too
-    smooth is as unnatural as too jerky), the others as measured."""
+    smooth is as unnatural as too jerky); the mean distance to the nearest example pose as
+    its log-ratio to ``held_out_pose_cm`` (:func:`held_out_pose_distance`), counted only
+    above it, so that a copy of the examples gains nothing over the poses of a new walker;
+    the others as measured."""
+    excess = np.log(max(measures["pose_distance_cm"], 1e-12) / held_out_pose_cm)
     return {
         "jerk_vs_examples": abs(float(np.log(measures["jerk_cm_s3"] / example_jerk))),
         "root_free_jerk_vs_examples": abs(float(np.log(measures["root_free_jerk_cm_s3"] / example_root_free_jerk))),
         "foot_skating_cm_s": measures["foot_skating_cm_s"],
-        "pose_distance_cm": measures["pose_distance_cm"],
+        "pose_excess_vs_held_out": max(float(excess), 0.0),
         "discontinuities_per_min": measures["discontinuities_per_min"],
     }
 
 
-def best_with_variation(
-    scores: Mapping[str, Mapping[str, float]], variation: Mapping[str, float], method: str, min_variation: float = 1e-6
+def at_least_as_natural(
+    scores: Mapping[str, Mapping[str, float]], method: str, rivals: Sequence[str]
 ) -> dict[str, bool]:
-    """For each score, whether ``method`` is at least as good (lower) as every other
-    method whose sequences vary (variation > ``min_variation``). ``scores``: method ->
-    score name -> mean value; ``variation``: method -> variation between its sequences."""
-    rivals = [m for m in scores if m != method and variation[m] > min_variation]
+    """For each score, whether ``method`` is at least as good (lower) as every one of
+    ``rivals``. ``scores``: method -> score name -> mean value."""
     return {k: all(scores[method][k] <= scores[r][k] for r in rivals) for k in scores[method]}

@@ -20,6 +20,7 @@ from ..metrics.stride import footfall_strides
 from ..prep.contacts import detect_foot_contacts
 from .correspondence import movement_direction, reference_key_positions, space_warp, standard_skeleton, time_warp
 from .keyframes import Cycle, KeyframeSignal, find_extrema, keyframe_signal, segment_cycles
+from .postprocess import foot_heights, support_foot
 from .representation import ClipSet, rest_hip_height
 from .settings import ROOT_GROUPS, Ma2010Settings
 from .svi import StyleVariationModel
@@ -116,66 +117,78 @@ def foot_contacts(motion: Motion, solver: RootSolver, positions: np.ndarray | No
     return np.stack([c.left, c.right], axis=1)
 
 
+#: The first and last poses of a measured clip are held this long (s) before its root is recovered:
+#: a foot on the floor at the clip's first or last frame then has a contact there (its footfall, cut
+#: by the key frame) however few of that contact's frames the clip holds (a walking cycle starts as
+#: the trailing foot leaves the floor), and the support at the clip's end passes to the foot that
+#: stays down. At least :data:`MIN_FOOTFALL_S`.
+EDGE_HOLD_S = MIN_FOOTFALL_S
+#: A footfall is located by the ankle unless the toe stands lower than the ankle by more than this
+#: (cm, above their planted heights) at one end of the phase: a heel rolling off rises by several cm
+#: (9 cm at a generator walk's key frame), a planted ankle sits at its planted height.
+JOINT_TOLERANCE_CM = 1.0
+
+
+def stride_root(rotations: np.ndarray, solver: RootSolver, fps: float) -> np.ndarray:
+    """(T, 3) root of ``rotations`` (T, J, 4) at ``fps`` on the solver's skeleton for the stride
+    measure: the footskate cleanup's (Sec. 6.3, :func:`.postprocess.reconstruct_root`: the
+    support foot, the lower one with the solver's minimum contact time, stays put at its lowest
+    joint), except for the step into a frame where the support passes to the other foot. The
+    cleanup lets the new support carry it, but a foot that becomes the lower one in the frame it
+    lands is still moving into it, and the root would absorb that last approach (up to 0.7 cm of
+    a stride on generator walks; on the standard skeleton a foot may slide as it lands). Here the
+    step is carried by whichever foot keeps the root's velocity closest to the frame before's:
+    the foot that is planted over the step. Walking only: no flight phases."""
+    p, joint, low = foot_heights(rotations, solver.skeleton, solver.feet, solver.planted)
+    support = support_foot(low, int(round(solver.min_support_s * fps)))
+    t = np.arange(len(rotations))
+    pinned = p[t[:, None], np.arange(2)[None, :], joint]  # (T, 2, 3): each foot's lowest joint
+    moved = np.zeros_like(pinned)
+    moved[1:] = pinned[1:] - p[t[:-1, None], np.arange(2)[None, :], joint[1:]]  # its step, relative to the root
+    carrier = support.copy()
+    switch = np.flatnonzero(support[1:] != support[:-1]) + 1
+    switch = switch[switch >= 2]
+    before = moved[switch - 1, support[switch - 1]]  # (S, 3): the root's step the frame before
+    carrier[switch] = np.argmin(np.linalg.norm((moved[switch] - before[:, None])[..., [0, 2]], axis=-1), axis=1)
+    step = np.zeros((len(t), 3))
+    step[:, [0, 2]] = -moved[t, carrier][:, [0, 2]]
+    root = np.cumsum(step, axis=0)
+    root[:, 1] = -low[t, support]
+    return root
+
+
 def support_strides(motion: Motion, key_frames: np.ndarray, solver: RootSolver) -> np.ndarray:
-    """Stride length (cm) of the left and the right support phase of one cycle (key
-    frames 0-2 and 2-4, frames of ``motion``), as the horizontal travel of the swing ankle
-    between the swing foot's footfalls (:func:`..metrics.stride.footfall_strides`: at each
-    key frame each foot stands on its nearest contact of at least :data:`MIN_FOOTFALL_S`,
-    from :func:`foot_contacts`). The swing foot's footfall before the phase lies before its
-    first key frame: pass the uncut motion (:func:`uncut_strides`). Checked on the
-    generator's walks: within 0.25 % of their stride (tests/test_ma2010.py)."""
+    """Stride length (cm) of the left and the right support phase of one cycle (key frames 0-2
+    and 2-4, frames of ``motion``, its root recovered): the horizontal travel of the swing foot
+    between its footfalls (:func:`..metrics.stride.footfall_strides`: at each key frame each
+    foot stands on its nearest contact of at least :data:`MIN_FOOTFALL_S` from
+    :func:`foot_contacts`, located by its ankle or, where the heel is up at one end of the
+    phase, its toe: :data:`JOINT_TOLERANCE_CM`)."""
     pos = motion.positions()
-    feet = pos[:, [solver.left_foot, solver.right_foot]]
+    feet = pos[:, np.asarray(solver.feet)]  # (T, 2, 2, 3): ankle and toe of each foot
     bounds = np.asarray(key_frames)[[0, 2, 4]]
-    return footfall_strides(feet, foot_contacts(motion, solver, pos), bounds, int(round(MIN_FOOTFALL_S * motion.fps)))
-
-
-def uncut_strides(motion: Motion, key_frames: Sequence[np.ndarray], solver: RootSolver) -> np.ndarray:
-    """(C, 2) strides of the C cycles of one uncut motion (key frames in its frames), its
-    rotations put on the solver's (standard) skeleton and its root recovered by footskate
-    cleanup once for the whole motion, so that each stride runs between the cycle's own
-    footfalls wherever they lie (the one before a cycle's first key frame lies before the cycle)."""
-    solved = solver.motion(motion.rotations, motion.fps)
-    pos = solved.positions()
-    feet = pos[:, [solver.left_foot, solver.right_foot]]
-    contacts = foot_contacts(solved, solver, pos)
     shortest = int(round(MIN_FOOTFALL_S * motion.fps))
-    return np.stack([footfall_strides(feet, contacts, np.asarray(k)[[0, 2, 4]], shortest) for k in key_frames])
+    contacts = foot_contacts(motion, solver, pos)
+    return footfall_strides(
+        feet, contacts, bounds, shortest, planted=solver.planted, joint_tolerance=JOINT_TOLERANCE_CM
+    )
 
 
 def normalized_strides(rotations: np.ndarray, key_frames: np.ndarray, solver: RootSolver, fps: float) -> np.ndarray:
-    """Strides of one cycle's rotations (a cut or a predicted clip) on the solver's
-    (standard) skeleton, with the root recovered by footskate cleanup (Sec. 1: normalizing
-    to one skeleton "unifies the style parameter spaces").
-
-    A cycle alone holds no footfall before its first key frame: it is measured in the middle
-    of three copies of itself joined end to first frame (its last frame is its first one's
-    phase), the steady walk it would make; the footskate cleanup turns the small pose jump
-    at a joint into a root jump, so the planted feet stay put. (A displacement-mapped
-    transition, Eq. 14-15, would blend that jump over half a cycle and can lower a swing
-    foot, which clears the floor by 1-2 cm in late swing, below the stance foot: on
-    generator cycles of fast walks that halved the stride.)"""
-    rot = np.concatenate([rotations[:-1], rotations[:-1], rotations], axis=0)
-    return support_strides(solver.motion(rot, fps), np.asarray(key_frames) + len(rotations) - 1, solver)
-
-
-def source_strides(
-    sources: Sequence[tuple[Motion, int]],
-    key_frames: Sequence[np.ndarray],
-    solver: RootSolver,
-) -> np.ndarray:
-    """(N, 2) strides of N cycles on their uncut motions (:func:`uncut_strides`):
-    ``sources`` gives each cycle's uncut motion and its first frame there, ``key_frames``
-    its key frames relative to that first frame. Each motion is solved once."""
-    if len(sources) != len(key_frames):
-        raise ValueError(f"source_strides: {len(sources)} sources for {len(key_frames)} cycles")
-    by_motion: dict[int, tuple[Motion, list[int]]] = {}
-    for i, (m, _) in enumerate(sources):  # loop over cycles: group them by motion
-        by_motion.setdefault(id(m), (m, []))[1].append(i)
-    out = np.empty((len(sources), 2))
-    for m, idx in by_motion.values():  # loop over motions
-        out[idx] = uncut_strides(m, [np.asarray(key_frames[i]) + int(sources[i][1]) for i in idx], solver)
-    return out
+    """The style parameter of one walking clip (Sec. 7.2: the strides of its left and right
+    support phases), the one measure of every walking clip here: an example cycle cut from a
+    walk and a synthesized clip retimed to real time alike. Its rotations (T, J, 4) at ``fps``,
+    the first and last poses held :data:`EDGE_HOLD_S`, are put on the solver's (standard)
+    skeleton (Sec. 1: normalizing to one skeleton "unifies the style parameter spaces"), the
+    root recovered (:func:`stride_root`) and the strides measured between the clip's key frames
+    (:func:`support_strides`). On the generator's walks each cycle measured alone on its own
+    skeleton is within 0.25 % of the true stride of each phase whose two footfalls of the swing
+    foot it holds, within 1 % where the foot leaves the standing start or lands a frame after the
+    cycle's last key frame (tests/test_ma2010.py)."""
+    n = int(round(EDGE_HOLD_S * fps))
+    held = np.pad(rotations, ((n, n), (0, 0), (0, 0)), mode="edge")
+    motion = Motion(skeleton=solver.skeleton, root_pos=stride_root(held, solver, fps), rotations=held, fps=fps)
+    return support_strides(motion, np.asarray(key_frames) + n, solver)
 
 
 def build_clipset(
@@ -186,7 +199,6 @@ def build_clipset(
     n_frames: int,
     style: np.ndarray | None = None,
     clip_ids: Sequence[str] | None = None,
-    sources: Sequence[tuple[Motion, int]] | None = None,
 ) -> ClipSet:
     """Aligned examples on the standard ``skeleton`` (Sec. 4.2).
 
@@ -194,9 +206,8 @@ def build_clipset(
     key frames on the common reference positions. Its rotations are used as they are on
     the standard skeleton; its root height is scaled by the ratio of rest hip heights.
     Without ``style`` the style parameters are the cycle's two support-phase strides
-    measured on the standard skeleton: on the uncut motion it was cut from when
-    ``sources`` gives it with the cycle's first frame there (:func:`source_strides`), else
-    on the cycle alone (:func:`normalized_strides`).
+    measured on the standard skeleton by the measure of a synthesized clip
+    (:func:`normalized_strides`, on the cycle alone, in real time).
     """
     if len(cycles) != len(key_frames) or not cycles:
         raise ValueError(f"build_clipset: {len(cycles)} cycles and {len(key_frames)} key-frame sets")
@@ -214,15 +225,9 @@ def build_clipset(
     fps = float(cycles[0].fps)
     if style is None:
         solver = root_solver(skeleton, joint_map)
-        if sources is not None:
-            style = source_strides(sources, key_frames, solver)
-        else:
-            style = np.stack(
-                [
-                    normalized_strides(space_warp(m, joint_map).rotations, k, solver, fps)
-                    for m, k in zip(cycles, key_frames)
-                ]
-            )
+        style = np.stack(
+            [normalized_strides(space_warp(m, joint_map).rotations, k, solver, fps) for m, k in zip(cycles, key_frames)]
+        )
     ids = list(clip_ids) if clip_ids is not None else []
     return ClipSet(
         rotations=rotations,
@@ -296,8 +301,8 @@ def walk_cycles(
     variants of ``settings`` (walk_styles, walk_variants; n_frames, keyframe_prominence,
     keyframe_min_separation_s) cut into gait cycles at their key frames (Eq. 1-4), space- and
     time-warped onto the mean skeleton (Sec. 4.2), with their style parameters (strides of
-    the left and right support phases, Sec. 7.2, measured on the uncut walk between each
-    cycle's own footfalls: :func:`source_strides`). Returns the clips and one table row per
+    the left and right support phases, Sec. 7.2, measured on each cycle as on a synthesized
+    clip: :func:`normalized_strides`). Returns the clips and one table row per
     cycle (:func:`collect_cycles`' columns, the source clip's subject, style, stride and
     speed, the two strides and the duration). ValueError naming ``what`` when no clip
     matches or fewer than 3 cycles come out."""
@@ -321,11 +326,7 @@ def walk_cycles(
             "again: two steps, so a clip needs two foot strikes of each foot, a walk of at least ~2 s"
         )
     sk = standard_skeleton([c.skeleton for c in cycles])
-    by_id = dict(zip(meta["clip_id"].iloc[idx].tolist(), motions))
-    sources = [(by_id[c], int(s)) for c, s in zip(table["source_clip"], table["start_frame"])]  # strides: uncut
-    clips = build_clipset(
-        cycles, keys, sk, joint_map, settings.n_frames, clip_ids=table["clip_id"].tolist(), sources=sources
-    )
+    clips = build_clipset(cycles, keys, sk, joint_map, settings.n_frames, clip_ids=table["clip_id"].tolist())
     src = meta.set_index("clip_id").loc[table["source_clip"]]
     table["subject"] = src["subject"].astype(str).to_numpy()
     for col in ("style", "stride_length_cm", "speed_cm_s"):

@@ -17,7 +17,7 @@ from ..claims import EvaluationResult
 from ..core.motion import Motion
 from ..plots import plot_key_frames
 from ..plots.stick import bone_segments, project
-from .comparison import LABELS, METHODS, NATURALNESS_SCORES
+from .comparison import METHODS, NATURALNESS_SCORES, family
 
 COLOURS = ("tab:blue", "tab:orange", "tab:green", "tab:red", "tab:purple", "tab:brown", "tab:pink", "tab:gray")
 
@@ -64,9 +64,9 @@ def draw_fig3(result: EvaluationResult) -> Figure:
     return fig
 
 
-def _fig6_strides(axes, folds: pd.DataFrame, closing: np.ndarray, reference: str) -> None:
-    """Fig. 6, left panels: per support phase, the validation (or requested) stride against
-    the synthesized one of ours (own, mean and sampled xi) and Kriging; closing cycles ringed."""
+def _fig6_strides(axes, folds: pd.DataFrame, closing: np.ndarray) -> None:
+    """Fig. 6, left panels: per support phase, the requested stride (the held-out cycle's style)
+    against the synthesized one of ours (own, mean and sampled xi) and Kriging; closing cycles ringed."""
     kinds = [
         ("ours_own_xi", "ours, held-out cycle's own xi", "o", "tab:blue"),
         ("ours_mean_xi", "ours, xi at the network's conditional mean", "s", "tab:purple"),
@@ -74,7 +74,7 @@ def _fig6_strides(axes, folds: pd.DataFrame, closing: np.ndarray, reference: str
         ("kriging", "Kriging, style only", "x", "tab:orange"),
     ]
     for ax, side in zip(axes, ("left", "right")):
-        t = folds[f"{'validation' if reference == 'validation' else 'true'}_{side}_cm"].to_numpy()
+        t = folds[f"true_{side}_cm"].to_numpy()
         for name, label, marker, colour in kinds:
             ax.scatter(t, folds[f"{name}_{side}_cm"], s=14, marker=marker, color=colour, label=label)
         ax.scatter(
@@ -90,7 +90,7 @@ def _fig6_strides(axes, folds: pd.DataFrame, closing: np.ndarray, reference: str
         ax.plot([lo, hi], [lo, hi], color="0.5", lw=1)
         ax.set_xlim(lo, hi)
         ax.set_ylim(lo, hi)
-        ax.set_xlabel(f"{'validation cycle' if reference == 'validation' else 'requested'} stride, {side} support (cm)")
+        ax.set_xlabel(f"requested stride (the held-out cycle's), {side} support (cm)")
         ax.set_ylabel("stride of the synthesized cycle (cm)")
         ax.set_title(f"{side} support phase (points beyond the frame not shown)", fontsize=9)
         ax.legend(fontsize=7, loc="upper left")
@@ -147,9 +147,10 @@ def _fig6_methods(ax: Axes, summary: pd.DataFrame, bound: float) -> None:
     ax.axvline(bound, color="tab:red", ls="--", lw=1)
     style_only = {
         "kriging": "Kriging (style only)",
-        "rbf": "RBF (style only)",
+        "rbf": "RBF (style only, one kernel per walk)",
+        "rbf_cycles": "RBF (style only, one kernel per cycle)",
         "least_squares": "least squares (style only)",
-        "validation": "held-out cycle itself vs its style (the measure's floor)",
+        "validation": "held-out cycle's own clip, retimed (diagnostic)",
     }
     labels = {
         m: style_only.get(m, f"ours, {r['xi']} xi, root in {r['root_group']}")
@@ -174,7 +175,7 @@ def draw_fig6(result: EvaluationResult) -> Figure:
     summary = table[table["kind"] == "summary"].reset_index(drop=True)
     closing = folds["closing"].astype(bool).to_numpy()
     fig, axes = plt.subplots(1, 4, figsize=(22, 5), gridspec_kw={"width_ratios": [1, 1, 1.5, 1.3]})
-    _fig6_strides(axes[:2], folds, closing, f.get("stride_reference", "style"))
+    _fig6_strides(axes[:2], folds, closing)
     _fig6_errors(axes[2], folds, closing, f)
     _fig6_methods(axes[3], summary, f["published_max_stride_error_cm"])
     fig.suptitle("Ma 2010 Fig. 6: stride of held-out walking cycles vs the synthesized ones (leave-one-out)")
@@ -183,10 +184,11 @@ def draw_fig6(result: EvaluationResult) -> Figure:
 
 
 def draw_fig7b(result: EvaluationResult) -> Figure:
-    """Fig. 7b: the reliability map over the style grid with the examples, and the stride
-    error against the distance to the nearest example."""
+    """Fig. 7b: the reliability map over the style grid with the examples and their line, and
+    the stride error against the distance to the nearest example, grid points along the
+    examples' line apart from those off it (failed syntheses only on the map)."""
     table, f = result.table, result.figure
-    n, failed, style = f["n_grid"], f["failed"], f["example_style"]
+    n, style = f["n_grid"], f["example_style"]
     gl = table["left_cm"].to_numpy().reshape(n, n)
     gr = table["right_cm"].to_numpy().reshape(n, n)
     err = table["stride_error_cm"].to_numpy().reshape(n, n)
@@ -195,24 +197,40 @@ def draw_fig7b(result: EvaluationResult) -> Figure:
     mesh = axes[0].pcolormesh(gl, gr, np.ma.masked_invalid(err), shading="nearest", cmap=cmap)
     fig.colorbar(mesh, ax=axes[0], label="stride error of the synthesized cycle (cm)")
     axes[0].scatter(style[:, 0], style[:, 1], s=12, facecolor="white", edgecolor="k", label="example cycles")
+    mean, direction = f["line"]
+    reach = np.ptp(gl) + np.ptp(gr)
+    ends = mean[None, :] + np.array([-reach, reach])[:, None] * direction[None, :]
+    axes[0].plot(ends[:, 0], ends[:, 1], color="k", lw=0.8, ls=":", label="the examples' line")
+    axes[0].set_xlim(gl.min(), gl.max())
+    axes[0].set_ylim(gr.min(), gr.max())
     axes[0].set_xlabel("stride, left support (cm)")
     axes[0].set_ylabel("stride, right support (cm)")
     axes[0].set_title("reliability map: blue = reliable, red = unreliable, grey = synthesis failed", fontsize=9)
     axes[0].legend(fontsize=8, loc="upper left")
-    axes[1].scatter(table["nearest_example_cm"], table["stride_error_cm"], s=12)
-    if failed.any():
+    on = table["on_examples_line"].to_numpy(bool)
+    corr = f["correlation"]
+    for mask, label, key, marker in (
+        (on, "along the examples' line", "on_line", "o"),
+        (~on, "off it", "off_line", "x"),
+    ):
+        c = corr[key]
+        text = f"rho = {c['rho']:.2f}" if c["n"] >= 3 else "too few"
         axes[1].scatter(
-            table["nearest_example_cm"][failed],
-            np.full(failed.sum(), np.nanmax(err) * 1.05),
-            marker="x",
-            color="0.35",
+            table["nearest_example_cm"][mask],
+            table["stride_error_cm"][mask],
             s=14,
-            label="synthesis failed (ranked last)",
+            marker=marker,
+            label=f"{label}: {c['n']} syntheses, {text}",
         )
-        axes[1].legend(fontsize=8)
+    axes[1].legend(fontsize=8)
     axes[1].set_xlabel("distance to the nearest example (cm)")
     axes[1].set_ylabel("stride error (cm)")
-    axes[1].set_title(f"Spearman rho = {f['rho']:.2f} (p = {f['p']:.1g}), {len(table)} grid points")
+    c = corr["all"]
+    failed = int(table["failed"].sum())
+    axes[1].set_title(
+        f"Spearman rho = {c['rho']:.2f} (p = {c['p']:.1g}) over {c['n']} syntheses; {failed} of {len(table)} failed",
+        fontsize=9,
+    )
     fig.suptitle("Ma 2010 Fig. 7b: reliability of the style parameters")
     fig.tight_layout()
     return fig
@@ -274,35 +292,37 @@ def draw_fig8(result: EvaluationResult) -> Figure:
 
 
 def draw_sec7_4(result: EvaluationResult) -> Figure:
-    """Sec. 7.4: the naturalness scores and the variation between sequences per method
-    (examples as reference; a diverged method drawn at the top, marked)."""
+    """Sec. 7.4: the naturalness scores and the variation between sequences per method and
+    setting (Perlin noise and the DBN at each setting of their sweeps; examples as reference;
+    a diverged method drawn at the top, marked)."""
     f = result.figure
-    means = f["means"]
+    means, labels = f["means"], f["labels"]
     n_panels = len(NATURALNESS_SCORES) + 1
-    fig, axes = plt.subplots(1, n_panels, figsize=(3.6 * n_panels, 4.2))
-    colours = plt.get_cmap("tab10").colors
-    shown = [*METHODS, "examples"]
+    fig, axes = plt.subplots(1, n_panels, figsize=(3.8 * n_panels, 4.8))
+    palette = dict(zip(METHODS, plt.get_cmap("tab10").colors))
+    shown = [*labels, "examples"]
+    colours = [palette[family(m)] for m in labels] + ["0.75"]
     for ax, key in zip(axes, [*NATURALNESS_SCORES, "variation_between_sequences_cm"]):
         raw = [float(means.loc[m, key]) for m in shown]
         finite = [v for v in raw if np.isfinite(v)]
-        top = 1.5 * max(finite) if finite else 1.0
+        top = 1.5 * max(finite) if finite and max(finite) > 0 else 1.0
         vals = [v if np.isfinite(v) else (top if v > 0 else 0.0) for v in raw]
-        ax.bar(range(len(shown)), vals, color=[*colours[: len(METHODS)], "0.75"], hatch=[""] * len(METHODS) + ["//"])
+        ax.bar(range(len(shown)), vals, color=colours, hatch=[""] * len(labels) + ["//"])
         ax.set_xticks(range(len(shown)))
-        ax.set_xticklabels([LABELS.get(m, "examples (reference)") for m in shown], rotation=40, ha="right", fontsize=8)
+        ax.set_xticklabels([labels.get(m, "examples (reference)") for m in shown], rotation=50, ha="right", fontsize=7)
         for i, v in enumerate(raw):
             if np.isinf(v):
                 ax.text(i, top, "diverged", rotation=90, ha="center", va="top", fontsize=7, color="white")
         ax.set_title(
-            NATURALNESS_SCORES.get(key, f"variation between the {f['n_sequences']} sequences (cm)"), fontsize=9
+            NATURALNESS_SCORES.get(key, f"variation between the {f['n_sequences']} sequences (cm)"), fontsize=8
         )
         positive = sorted(v for v in vals if v > 0)
         if positive and positive[-1] > 20 * positive[0]:  # a method far off the others: log axis
             ax.set_yscale("symlog", linthresh=positive[0])
     fig.suptitle(
-        f"Ma 2010 Sec. 7.4: {f['seconds']:g}-s sequences from {f['n_examples']} example cycles "
+        f"Ma 2010 Sec. 7.4: {f['seconds']:g}-s sequences from {f['n_examples']} example cycles; {f['sweeps']} "
         "(naturalness: lower is better; variation: 0 = identical sequences)",
-        fontsize=11,
+        fontsize=10,
     )
     fig.tight_layout()
     return fig

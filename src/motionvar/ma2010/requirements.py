@@ -6,6 +6,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from ..applicability import Need, Requirement
+from .claims import FIG8_MIN_EXAMPLES, FIG8_MIN_SUBJECTS
 
 if TYPE_CHECKING:
     from .settings import Ma2010Settings
@@ -34,11 +35,13 @@ EVALUATIONS = {
         1,
     ),
     "ma2010_fig7b": ("Fig. 7b", "Strides far outside the examples are synthesized less reliably.", 2, 1),
+    # the variants' spread is compared with that of the example cycles nearest the style, one per subject
+    # (Fig. 1's clips): at least FIG8_MIN_EXAMPLES of them, so as many subjects (and at least FIG8_MIN_SUBJECTS)
     "ma2010_fig8": (
         "Fig. 8a",
         "At a fixed style, variants differ as much as the examples do, at the same stride.",
-        2,
-        1,
+        FIG8_MIN_EXAMPLES,
+        max(FIG8_MIN_EXAMPLES, FIG8_MIN_SUBJECTS),
     ),
     # the example cycles are taken one per subject (Fig. 1's five clips)
     "ma2010_sec7_4": (
@@ -48,6 +51,13 @@ EVALUATIONS = {
         2,
     ),
     "ma2010_sec8": ("Sec. 8", "Synthesis runs faster than real time.", 2, 1),
+}
+
+
+# evaluation -> why it needs more than walking cycles (appended to the requirement's reason)
+WHY = {
+    "ma2010_fig8": f"; Fig. 8a compares the spread of variants at one style with that of the example cycles nearest "
+    f"it, one per subject, and needs at least {FIG8_MIN_EXAMPLES} of them",
 }
 
 
@@ -67,7 +77,7 @@ def requirements(settings: Ma2010Settings) -> list[Requirement]:
             min_subjects=subjects,
             min_seconds=MIN_WALK_S,
             why="Ma 2010 models the gait cycles of walking (Sec. 4; a cycle needs two foot strikes of each "
-            "foot); set ma2010.walk_styles and ma2010.walk_variants to labels your data has",
+            "foot); set ma2010.walk_styles and ma2010.walk_variants to labels your data has" + WHY.get(ev, ""),
         )
         out.append(Requirement(ev, PAPER, source, checks, (need,)))
     return out

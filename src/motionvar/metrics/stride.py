@@ -9,15 +9,17 @@ docs/gait.md). The swing foot is the one that moves more between the phase's bou
 Two ways to find where a foot stands at a boundary:
 
 - :func:`footfall_strides` (what the Ma 2010 evaluations use): the footprint of the foot's
-  last footfall (contact) at or before the boundary, from contact masks. A phase's stride is
-  then the distance between two footfalls of the swing foot, as the generator defines it
-  (tests/test_synth_locomotion.py), wherever those footfalls lie: the motion must reach
-  back to the footfall before the phase (measure on the uncut motion, not the cut cycle).
+  contact nearest to the boundary, from contact masks; a phase's stride is then the
+  distance between two footfalls of the swing foot, as the generator defines it
+  (tests/test_synth_locomotion.py). With two joints per foot (ankle and toe) each footfall
+  is located by the joint that is down at both of the phase's ends: a walking cycle cut at
+  its key frames (legs farthest apart) starts with the trailing foot rolling off its toe,
+  its heel already up, and ends with the leading foot on its heel, its toe not yet down.
 - :func:`stride_lengths`: the foot's stillest frame within a window around the boundary.
-  At the key frames of a walking cycle (legs farthest apart) the trailing foot is already
-  rolling off its toes, and a cycle cut at that key frame has no frames before it: this
-  measure then comes out 2-7 % short (left support 130.6 cm on a cut generator cycle, 137.0
-  on the uncut walk, generator 140.7 cm). Kept for comparison.
+  At the key frames of a walking cycle the trailing foot is already rolling off its toes,
+  and a cycle cut at that key frame has no frames before it: this measure of the ankle then
+  comes out 2-7 % short (left support 130.6 cm on a cut generator cycle, 137.0 on the uncut
+  walk, generator 140.7 cm). Kept for comparison.
 """
 
 from __future__ import annotations
@@ -100,37 +102,76 @@ def footprints(
     return out
 
 
-def footfall_strides(
-    foot_positions: np.ndarray, contacts: np.ndarray, boundaries: np.ndarray, min_contact: int = 1, up_axis: int = 1
-) -> np.ndarray:
-    """Stride of each phase between the footfalls of the swing foot (:func:`footprints`).
+def _contact_runs(contacts: np.ndarray, min_contact: int) -> np.ndarray:
+    """(K, 2) [start, stop) runs of a (T,) contact mask at least ``min_contact`` frames long."""
+    d = np.diff(np.concatenate([[0], np.asarray(contacts, dtype=np.int8), [0]]))
+    runs = np.stack([np.flatnonzero(d == 1), np.flatnonzero(d == -1)], axis=1)
+    return runs[(runs[:, 1] - runs[:, 0]) >= min_contact]
 
-    At each boundary a foot stands on the footprint of its contact nearest to the boundary
-    (the one holding it, else the one with the fewest frames between them: at a walk's
-    key frames, legs farthest apart, the trailing foot has just left or is leaving the
-    ground and the leading foot has just landed or is about to); a phase's stride is the
-    larger displacement of the two feet between its boundaries (the stance foot's is ~0).
-    Contacts shorter than ``min_contact`` frames are no footfalls (a swing foot grazing
-    the floor). NaN for a phase where a foot has no footfall at all.
+
+def footfall_strides(
+    foot_positions: np.ndarray,
+    contacts: np.ndarray,
+    boundaries: np.ndarray,
+    min_contact: int = 1,
+    up_axis: int = 1,
+    planted: np.ndarray | None = None,
+    joint_tolerance: float = 0.0,
+) -> np.ndarray:
+    """Stride of each phase between the footfalls of the swing foot.
+
+    At each boundary a foot stands on its contact nearest to the boundary (the one holding
+    it, else the one with the fewest frames between them: at a walk's key frames, legs
+    farthest apart, the trailing foot has just left or is leaving the ground and the leading
+    foot has just landed or is about to). Within that contact each joint of the foot has a
+    footprint, its horizontal position in the contact's frame where the joint is lowest (a
+    planted heel: the ankle stands still from heel strike to heel-off). A foot's displacement
+    over a phase is that of its first joint (the ankle), unless another joint is down at both
+    ends of the phase and the first is not: the joint whose higher footprint of the two (height
+    above ``planted``) is the lowest, the first one while it is within ``joint_tolerance`` of
+    that (a walking cycle cut at its first key frame starts with the trailing foot on its toe,
+    its heel already up). A phase's stride is the larger displacement of the feet (the stance
+    foot's is ~0). Contacts shorter than ``min_contact`` frames are no footfalls (a swing foot
+    grazing the floor). NaN where a foot has no footfall at all.
 
     Args:
-        foot_positions: (T, F, 3) one joint per foot (F >= 2, e.g. the two ankles).
+        foot_positions: (T, F, 3) one joint per foot (F >= 2, e.g. the two ankles), or
+            (T, F, K, 3) K joints per foot (e.g. ankle and toe).
         contacts: (T, F) boolean contact masks of the feet.
         boundaries: (P + 1,) increasing frame indices of the phases' boundaries.
         min_contact: shortest contact (frames) that counts as a footfall.
+        up_axis: index of the vertical axis.
+        planted: (F, K) height of each joint when its foot stands flat (default 0).
+        joint_tolerance: how much lower (input units) another joint must stand than the first
+            for its footprints to be used.
 
     Returns:
         (P,) stride length of each phase, in the input's units.
     """
-    p, b = _feet_and_boundaries(foot_positions, boundaries, "footfall_strides")
-    at = np.full((len(b), p.shape[1], 2), np.nan)
-    for f, (runs, prints) in enumerate(footprints(p, contacts, up_axis)):  # loop over feet
-        long = (runs[:, 1] - runs[:, 0]) >= min_contact
-        runs, prints = runs[long], prints[long]
-        if len(runs):
-            gap = np.maximum(
-                np.maximum(runs[None, :, 0] - b[:, None], b[:, None] - (runs[None, :, 1] - 1)), 0
-            )  # (B, K)
-            at[:, f] = prints[np.argmin(gap, axis=1)]
-    disp = np.linalg.norm(at[1:] - at[:-1], axis=-1)  # (P, F)
+    p = np.asarray(foot_positions, dtype=float)
+    p = p[:, :, None] if p.ndim == 3 else p
+    if p.ndim != 4:
+        raise ValueError(f"footfall_strides: foot_positions must be (T, F, 3) or (T, F, K, 3); got {p.shape}")
+    _, b = _feet_and_boundaries(p[:, :, 0], boundaries, "footfall_strides")
+    T, F, K = p.shape[:3]
+    c = np.asarray(contacts, dtype=bool)
+    if c.shape != (T, F):
+        raise ValueError(f"footfall_strides: contacts must be (T, F) = {(T, F)}; got {c.shape}")
+    rest = np.zeros((F, K)) if planted is None else np.broadcast_to(np.asarray(planted, dtype=float), (F, K))
+    height = p[..., up_axis] - rest[None]  # (T, F, K)
+    horizontal = p[..., [a for a in range(3) if a != up_axis]]  # (T, F, K, 2)
+    disp = np.full((len(b) - 1, F), np.nan)
+    for f in range(F):  # loop over feet
+        runs = _contact_runs(c[:, f], min_contact)
+        if not len(runs):
+            continue
+        gap = np.maximum(np.maximum(runs[None, :, 0] - b[:, None], b[:, None] - (runs[None, :, 1] - 1)), 0)
+        near = runs[np.argmin(gap, axis=1)]  # (B, 2): the contact each boundary stands on
+        low = np.stack([s + np.argmin(height[s:e, f], axis=0) for s, e in near])  # (B, K), loop over boundaries
+        h = np.take_along_axis(height[:, f], low, axis=0)  # (B, K)
+        prints = horizontal[low, f, np.arange(K)[None, :]]  # (B, K, 2)
+        worst = np.maximum(h[:-1], h[1:])  # (P, K): the higher footprint of each joint
+        joint = np.argmax(worst <= worst.min(axis=1, keepdims=True) + joint_tolerance, axis=1)
+        phase = np.arange(len(joint))
+        disp[:, f] = np.linalg.norm(prints[phase + 1, joint] - prints[phase, joint], axis=-1)
     return disp.max(axis=1)

@@ -11,7 +11,8 @@ from collections.abc import Mapping
 import pandas as pd
 
 from ..claims import CHECKED_VERDICTS, UNDECIDED_VERDICTS
-from .counts import counts_text, kind_counts, seed_agreement, shown_verdicts
+from .counts import UNSTABLE, counts_text, kind_counts, seed_agreement, shown_verdicts
+from .stability import seed_names
 
 PAPER_TITLES = {"ma2010": "Ma et al. 2010", "du2022": "Du 2022", "egges2004": "Egges et al. 2004"}
 
@@ -54,9 +55,12 @@ def paper_results(
     shown: pd.Series,
     agreement: pd.DataFrame | None = None,
     stability: pd.DataFrame | None = None,
+    same_run: bool = True,
 ) -> str:
     """Markdown of one paper's claims: source | kind | claim | verdict | seeds | value over the
-    seeds | measured, ordered by kind (replication, stand-in, consistency), then id."""
+    seeds | measured, ordered by kind (replication, stand-in, consistency), then id. The seeds column
+    says how many seeds give this verdict (``same_run``: this run is one of the seeds) or, for seeds of
+    another configuration, their most common verdict and how many give it."""
     order = {"replication": 0, "stand-in": 1, "consistency": 2}
     rows = claims.assign(shown_verdict=shown.to_numpy(), kind_order=claims["kind"].map(order))
     rows = rows[rows["paper"] == paper].sort_values(["kind_order", "claim_id"], kind="stable")
@@ -64,7 +68,8 @@ def paper_results(
         return "*(no claims)*\n"
     seeds = agreement.set_index("claim_id") if agreement is not None else None
     lines = [
-        "| source | kind | claim | verdict | seeds giving it | value over the seeds [95 %] | measured |",
+        f"| source | kind | claim | verdict | {'seeds: verdict, agreeing' if stability is not None and not same_run else 'seeds giving it'} | "
+        "value over the seeds [95 %] | measured |",
         "|---|---|---|---|---|---|---|",
     ]
     for r in rows.itertuples(index=False):
@@ -72,11 +77,32 @@ def paper_results(
         agree = "-"
         if seeds is not None and int(seeds.loc[r.claim_id, "n_seeds"]):
             agree = f"{int(seeds.loc[r.claim_id, 'n_agree'])}/{int(seeds.loc[r.claim_id, 'n_seeds'])}"
+        elif stability is not None and not same_run and r.claim_id in set(stability["claim_id"]):
+            row = stability.set_index("claim_id").loc[r.claim_id]
+            agree = f"{row['verdict']} {int(row['n_agree'])}/{int(row['n_seeds'])}"
         lines.append(
             f"| {_cell(r.source)} | {r.kind} | {_cell(r.statement)} | {verdict} | {agree} | "
             f"{_cell(_interval(stability, r.claim_id, r.unit))} | {_cell(r.measured)} |"
         )
     return "\n".join(lines) + "\n"
+
+
+def readme_counts(main: pd.DataFrame, main_name: str, stability: pd.DataFrame | None = None) -> str:
+    """The counts of README's Results: ``main`` per paper and kind (``unstable`` where the seeds of
+    ``stability``, ``main_name`` among them, do not share a verdict); for seeds of another
+    configuration, their own counts below (each claim's most common verdict, ``unstable`` where fewer
+    than 4 of 5 give it)."""
+    main = main.reset_index(drop=True)
+    seeds = seed_names(stability) if stability is not None else []
+    agreement = seed_agreement(main, stability, main_name) if main_name in seeds else None
+    text = counts_markdown(main, shown_verdicts(main, agreement))
+    if stability is None or main_name in seeds:
+        return text
+    modal = stability.assign(verdict=stability["verdict"].where(stability["stable"].astype(bool), UNSTABLE))
+    return (
+        f"{text}\nAcross the {len(seeds)} seeds ({', '.join(seeds)}): the most common verdict of each claim, "
+        f"`unstable` where fewer than 4 of {len(seeds)} give it.\n\n{counts_markdown(modal, modal['verdict'])}"
+    )
 
 
 def results_markdown(
@@ -91,24 +117,32 @@ def results_markdown(
     ``main_name`` among its seeds; ``unstable`` where fewer than 4 of 5 give it), then one line per
     dataset of ``others`` (name -> claims)."""
     main = main.reset_index(drop=True)
-    agreement = seed_agreement(main, stability, main_name) if stability is not None else None
+    seeds = seed_names(stability) if stability is not None else []
+    same_run = main_name in seeds
+    agreement = seed_agreement(main, stability, main_name) if same_run else None
     shown = shown_verdicts(main, agreement)
-    seeds_text = (
-        f" Seeds: {len([c for c in stability.columns if c.startswith('verdict_')])} full-size runs "
-        "(config/seeds_full.yaml); a verdict that fewer than 4 of 5 seeds give is counted as unstable."
-        if stability is not None
-        else ""
-    )
+    seeds_text = ""
+    if same_run:
+        seeds_text = (
+            f" Seeds: {len(seeds)} runs of this configuration, this one among them; a verdict that fewer than 4 "
+            f"of {len(seeds)} seeds give is counted as unstable."
+        )
+    elif stability is not None:
+        seeds_text = (
+            f" Seeds: {len(seeds)} runs of another configuration ({', '.join(seeds)}); the per-claim columns give "
+            "their most common verdict, how many seeds give it and their value's interval, and the counts of those "
+            "runs follow below."
+        )
     parts = [
         f"Claims of the last run on `{main_name}`{(' (' + run_note + ')') if run_note else ''}. Reproduction "
         "is counted over replication and stand-in claims, each kind apart; consistency claims are checks "
         f"(true by construction or sanity checks), never counted as reproduction.{seeds_text} The report holds "
         "the figures, tables and notes.",
         "",
-        counts_markdown(main, shown),
+        readme_counts(main, main_name, stability),
     ]
     for paper, title in PAPER_TITLES.items():
-        parts += [f"### {title}", "", paper_results(main, paper, shown, agreement, stability)]
+        parts += [f"### {title}", "", paper_results(main, paper, shown, agreement, stability, same_run)]
     if others:
         parts += ["### Real data sets (`config/real/`)", ""]
         for name, table in others.items():

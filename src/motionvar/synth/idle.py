@@ -35,7 +35,8 @@ the random sequence of rests, small per-rest posture changes and ±1 cm / ±1.5�
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+import zlib
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -151,16 +152,19 @@ def _rest_values(category: str, rng: np.random.Generator) -> np.ndarray:
     return np.array([w, rng.normal(0.0, 1.5), rng.normal(0.0, 4.0), rng.normal(0.0, 2.0), rng.normal(0.0, 4.0)])
 
 
-def sample_rests(subject: Subject, duration: float, first: str, rng: np.random.Generator) -> list[Rest]:
+def sample_rests(
+    subject: Subject, duration: float, first: str, rng: np.random.Generator, style: IdleStyle | None = None
+) -> list[Rest]:
     """Rests and balance shifts until ``duration`` s, starting in category ``first``
     (Egges 2004 Sec. 5.4): dwell ~ Gamma(shape 4, mean ``weight_shift_s``), at least 1 s
     (the clip starts at a random point of the first dwell); the next category is drawn from
     ``idle_foot_preference``, so that is the share of time spent in each (a repeat is a
     re-adjustment to another posture of the same category); shifts last
-    ``transition_s`` × U(0.8, 1.25), kept in [0.5, 1.5] s."""
+    ``transition_s`` × U(0.8, 1.25), kept in [0.5, 1.5] s (``style``: the subject's
+    :class:`IdleStyle` unless given)."""
     if first not in CATEGORIES:
         raise ValueError(f"first category must be one of {CATEGORIES}; got {first!r}")
-    style = idle_style(subject)
+    style = style or idle_style(subject)
     pref = np.asarray(subject.idle_foot_preference, dtype=float)
     rests, t, cat, first_rest = [], 0.0, first, True
     while t < duration:
@@ -333,8 +337,11 @@ def _idle_truth(
     }
 
 
-def generate_idle(subject: Subject, params: IdleParams, rng: np.random.Generator) -> tuple[Motion, dict]:
-    """Idle standing of ``params.duration_s`` seconds with balance shifts and small variations.
+def generate_idle(
+    subject: Subject, params: IdleParams, rng: np.random.Generator, style: IdleStyle | None = None
+) -> tuple[Motion, dict]:
+    """Idle standing of ``params.duration_s`` seconds with balance shifts and small variations,
+    in the subject's :class:`IdleStyle` (or ``style``, e.g. of a :func:`movement_twin`).
 
     Returns the Motion (at ``params.fps``) and its truth: variant ``"standing"``, NaN target,
     ``segments`` (one ``idle`` primitive: idle clips are not segmented), ``idle_phases``
@@ -343,7 +350,7 @@ def generate_idle(subject: Subject, params: IdleParams, rng: np.random.Generator
     """
     params.validate()
     sk = subject.skeleton
-    style = idle_style(subject)
+    style = style or idle_style(subject)
     habit = stance_habit(subject)
     fps = float(params.fps)
     n = int(round(params.duration_s * fps)) + 1
@@ -356,7 +363,7 @@ def generate_idle(subject: Subject, params: IdleParams, rng: np.random.Generator
     width = habit.width_cm + rng.normal(0.0, 1.0)
     toe_out = habit.toe_out_deg + rng.normal(0.0, 1.5)
     feet = plant_feet(sk, width, toe_out)
-    rests = sample_rests(subject, params.duration_s, first, rng)
+    rests = sample_rests(subject, params.duration_s, first, rng, style)
     post = _posture_tracks(rests, t)  # weight, yaw, elbow, head pitch, head yaw offsets
     var = _small_variations(subject, style, n, fps, rng)
 
@@ -368,3 +375,43 @@ def generate_idle(subject: Subject, params: IdleParams, rng: np.random.Generator
     root_w, rot_w = to_world(root_pos, rot, heading, start_xz)
     truth = _idle_truth(rests, fps, n, heading, start_xz, width, toe_out)
     return Motion(skeleton=sk, root_pos=root_w, rotations=rot_w, fps=fps), truth
+
+
+#: the traits of :class:`Subject` and :class:`IdleStyle` that say how a person moves while standing, not which
+#: posture they hold (their window means do not depend on them): sway, breathing rate, how often and how fast the
+#: balance shifts, head and arm movements
+MOVEMENT_TRAITS = (
+    "sway_cm",
+    "weight_shift_s",
+    "breath_rate_hz",
+    "transition_s",
+    "sway_corner_hz",
+    "sway_ml_ratio",
+    "head_rms_deg",
+    "arm_rms_deg",
+)
+
+
+def movement_twin(subject: Subject, key: int) -> tuple[Subject, IdleStyle]:
+    """A person who stands like ``subject`` but moves in their own way: the same body, stance,
+    resting postures, foot preference and breathing depth, the :data:`MOVEMENT_TRAITS` drawn
+    anew (seeded by ``key``) from the ranges of :func:`~motionvar.synth.subjects.make_subjects`
+    and :func:`idle_style`. Pass both to :func:`generate_idle`: twins of one subject are the
+    ground truth of a movement-only identification (Egges 2004 Sec. 5.6: "the way a person
+    changes posture")."""
+    r = np.random.default_rng([key, zlib.crc32(subject.subject_id.encode())])
+    twin = replace(
+        subject,
+        sway_cm=float(r.uniform(0.3, 1.0)),
+        weight_shift_s=float(r.uniform(4.0, 15.0)),
+        breath_rate_hz=float(r.uniform(0.2, 0.33)),
+    )
+    style = replace(
+        idle_style(subject),
+        transition_s=float(r.uniform(0.6, 1.3)),
+        sway_corner_hz=float(r.uniform(0.15, 0.5)),
+        sway_ml_ratio=float(r.uniform(0.5, 0.9)),
+        head_rms_deg=float(r.uniform(1.0, 4.0)),
+        arm_rms_deg=float(r.uniform(0.5, 2.5)),
+    )
+    return twin, style

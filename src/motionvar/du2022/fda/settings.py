@@ -38,7 +38,9 @@ class ReconstructionSettings(Settings):
     """Reconstruction errors against latent dimensions (Fig. 3.10) and latent spaces (Fig. 3.11).
 
     primitives: the primitives compared (Sec. 3.3.5: walk leftStance and two-hand picking reach).
-    pick_primitive: the manipulation primitive of the pick claims (one of ``primitives``).
+    pick_primitive: the manipulation primitive of the pick claims (one of ``primitives``); Fig. 3.9
+        compares its chosen basis size with those of the other ``primitives`` (Table 3.1: two-hand
+        picking reach 25, walk leftStance 10).
     dims: numbers of latent dimensions evaluated (capped at clips - 1)."""
 
     SECTION = "fda.reconstruction"

@@ -12,11 +12,14 @@ Levenberg-Marquardt on the MAP objective (Eq. 4.9). Path following (Sec. 4.5.1):
 step's constraint is the floor position of the hips at the step's last frame, a median
 step length further along the path, and the heading along the path there. The next
 primitive: the thesis "enumerate[s] all optional transitions from the current motion
-primitive looking at a fixed number of steps T ahead" with the mean motions and Eq. 4.2;
-:class:`~.settings.SynthesisSettings` ``look_ahead`` is T (1: the best single transition). With T > 1 the
-step's latent vector is also optimised together with the T - 1 planned steps after it
-(tree seeds, :func:`~.synthesis.optimize_chain`) and only the step itself is kept (a
-receding horizon: the walk starts turning before a corner it cannot take in one step).
+primitive looking at a fixed number of steps T ahead" with the mean motions and Eq. 4.2,
+and selects "the best next motion primitive with minimal error";
+:class:`~.settings.SynthesisSettings` ``look_ahead`` is T (1: the best single transition), and
+the chosen step's latent vector is then optimised on its own constraints (Algorithm 1,
+lines 5-6). Our addition, ``receding_horizon``: with T > 1 the step's latent vector is
+optimised together with the T - 1 planned steps after it (tree seeds,
+:func:`~.synthesis.optimize_chain`) and only the step itself is kept (the walk starts
+turning before a corner it cannot take in one step).
 The walk ends with ``walk_end`` when the end of the path is within a step.
 
 Algorithm 1, line 9 ("optimize all steps of current elementary action"): ``joint_steps``
@@ -102,7 +105,7 @@ class MorphableGraph:
 class StepResult:
     """One synthesised primitive of a graph walk, in world coordinates: its motion, its
     constraints in its aligned frame, the optimisation (``fit``: errors of the tree seed
-    before and the final errors after; with line 9 or the look-ahead, after them) and the
+    before and the final errors after; with line 9 or the receding horizon, after them) and the
     tree search. Path steps also carry their world ``goal`` and ``step_errors``, the errors
     after the step's own optimisation alone (the greedy walk, before line 9)."""
 
@@ -286,8 +289,8 @@ def follow_path(
     settings: SynthesisSettings,
 ) -> list[StepResult]:
     """Graph-walk generation for a floor path (Algorithm 1, one "walk" action; module
-    docstring) with the step, look-ahead and line-9 ``settings``. Returns the steps in world
-    coordinates."""
+    docstring) with the step, look-ahead (receding horizon or not) and line-9 ``settings``.
+    Returns the steps in world coordinates."""
     st = settings
     w = _Walker(graph, trees, path, joint_map, st)
     pos = path.points[0].copy()
@@ -305,7 +308,7 @@ def follow_path(
         cons, found = w.tree_seed(name, goals[0], pos, heading)
         fit = optimize_map(prim, cons, found.latent, st.likelihood_weight, st.method, st.max_nfev)
         step_errors = fit.errors_after.copy()
-        if len(plan) > 1:  # look-ahead: optimise with the planned steps, keep the first
+        if len(plan) > 1 and st.receding_horizon:  # our addition: optimise with the planned steps, keep the first
             seeds, p_k, h_k = [fit.latent], pos, heading
             for k in range(1, len(plan)):
                 p_k, h_k = _step_end(graph.primitives[plan[k - 1]], seeds[-1], p_k, h_k, w.joints)

@@ -53,10 +53,12 @@ class SearchSettings(Settings):
     primitives: primitives evaluated (pick_reach_dense is added where dense picks are made).
     n_samples: latent samples per primitive the trees and brute force are built over (Fig. 4.12: 10,000).
     n_queries: random constraints per constraint type and primitive (Fig. 4.12: 1,000).
-    beam: candidates kept per level for the verdicts: "auto" (the largest of ``beams`` whose mean
-        evaluations per query stay under ``max_evaluations``) or a number (DFKI used 2).
-    beams: beams of the k-means tree measured and tabled (an explicit ``beam`` is added: ``candidates``).
-    max_evaluations: evaluation budget of beam "auto" (Sec. 4.6.2: "less than 120 evaluations").
+    beam: candidates kept per level by the k-means tree (and the GMM and median-means trees) for every
+        verdict, fixed in advance (DFKI's code default, ``n_cluster_search_candidates`` = 4 in
+        morphablegraphs/motion_generator/algorithm_configuration.py; the thesis gives none).
+    beams: further beams of the k-means tree measured and tabled beside it (``candidates``).
+    max_evaluations: evaluation budget of the budget beam reported beside the verdict beam: the largest
+        of ``candidates`` whose mean evaluations per query stay under it (Sec. 4.6.2: "less than 120").
     leaf_size: a tree node with at most this many samples is a leaf.
     n_random: samples of the random-sampling reference (Sec. 4.6.2: 100).
     joints: semantic joint of the position and orientation constraints, per primitive.
@@ -68,7 +70,7 @@ class SearchSettings(Settings):
     primitives: tuple[str, ...] = ("walk_leftStance", "pick_reach", "place_reach")
     n_samples: int = 10000
     n_queries: int = 1000
-    beam: int | str = "auto"
+    beam: int = 4
     beams: tuple[int, ...] = (2, 3, 4)
     max_evaluations: float = THESIS_BUDGET
     leaf_size: int = 16
@@ -96,19 +98,16 @@ class SearchSettings(Settings):
         beams = tuple(self.beams)
         if not beams or any(isinstance(b, bool) or not isinstance(b, Integral) or b < 1 for b in beams):
             raise ValueError(f"graph.search.beams: a non-empty list of beams >= 1; got {list(self.beams)}")
-        if self.beam != "auto" and (
-            isinstance(self.beam, bool) or not isinstance(self.beam, Integral) or self.beam < 1
-        ):
-            raise ValueError(f"graph.search.beam: 'auto' or an integer >= 1; got {self.beam!r}")
+        if isinstance(self.beam, bool) or not isinstance(self.beam, Integral) or self.beam < 1:
+            raise ValueError(f"graph.search.beam: an integer >= 1; got {self.beam!r}")
         if not self.max_evaluations > 0:
             raise ValueError(f"graph.search.max_evaluations must be > 0; got {self.max_evaluations}")
         object.__setattr__(self, "beams", tuple(int(b) for b in beams))
 
     @property
     def candidates(self) -> tuple[int, ...]:
-        """The beams the k-means tree runs at: ``beams`` and an explicit ``beam``, sorted."""
-        extra = () if self.beam == "auto" else (int(self.beam),)
-        return tuple(sorted(set(self.beams + extra)))
+        """The beams the k-means tree runs at: ``beams`` and the verdict ``beam``, sorted."""
+        return tuple(sorted(set(self.beams + (int(self.beam),))))
 
     def joint(self, primitive: str) -> str:
         """The semantic joint of ``primitive``'s position and orientation constraints."""
@@ -141,22 +140,30 @@ class SynthesisSettings(Settings):
     path: floor path (x, z) in cm that the Fig. 4.10 walk follows.
     reach_primitive: primitive of the reaching targets.
     reach_targets: number of reaching targets (training end positions of the hand, shifted).
-    reach_offset_cm: shift (cm) of each reaching target from a training hand position, in a random direction.
+    reach_offset_cm: shift (cm) of each reaching target from a training hand position, in a random direction;
+        a target is kept only inside the variation range (a natural sample of ``reach_range_samples`` ends with
+        the hand within the reach claim's bound of it).
+    reach_range_samples: GMM samples of the reaching primitive whose hand end positions make its reachable
+        area (Sec. 4.6.1: "the diversity of generated motions ... defines a reachable area") and whose
+        log-likelihoods are the reference of a natural reach.
     tree_samples: latent samples of the k-means tree that seeds the optimisation (Sec. 4.4.2: 10,000).
     beam: tree-search candidates per level.
     likelihood_weight: weight of the negative log-likelihood in the MAP residuals (Eq. 4.9).
     method: scipy least_squares method, "lm" (Levenberg-Marquardt, Sec. 4.5.3) or "trf".
     max_nfev: most residual evaluations of one step's optimisation.
     max_steps: most steps of the path-following graph walk.
-    look_ahead: steps T looked ahead (Sec. 4.5.1, no value given): the next primitive by the mean
-        motions of T planned steps; for T > 1 each step optimised together with the T - 1 planned
-        after it (only the step itself kept); 1 is the greedy walk.
+    look_ahead: steps T looked ahead (Sec. 4.5.1, no value given): the next primitive is the first of
+        the T planned steps whose mean motions fit the path best; 1 is the best single transition.
+    receding_horizon: our addition, not the thesis': for T > 1 each step's latent vector is optimised
+        together with the T - 1 planned after it and only the step itself kept (false: the step is
+        optimised on its own constraints, Algorithm 1 lines 5-6).
     joint_steps: Algorithm 1 line 9, the last steps of the walk optimised together after it: "all"
         (Algorithm 1, "optimize all steps"), a number (DFKI 4) or 0 (left out).
     joint_method: least_squares method of the joint optimisations of several steps: "lm" (MINPACK,
         as DFKI's leastsq) or "trf".
     joint_max_nfev: most residual evaluations of one joint optimisation of several steps.
-    compare_variants: also make the greedy walk and line 9 alone (T = 1) for Fig. 4.10's table and figure.
+    compare_variants: also make the greedy walk (T = 1, no line 9) and the receding-horizon walk for Fig. 4.10's
+        table and figure.
 
     The walk's start, stepping and end nodes (``start``, ``cyclic``, ``end``) are the primitive
     names of the prep stage, not config keys."""
@@ -169,7 +176,8 @@ class SynthesisSettings(Settings):
     path: tuple[tuple[float, float], ...] = ((0, 0), (300, 0), (450, 150), (450, 350))
     reach_primitive: str = "pick_reach"
     reach_targets: int = 5
-    reach_offset_cm: float = 5.0
+    reach_offset_cm: float = 15.0
+    reach_range_samples: int = 10000
     tree_samples: int = 10000
     beam: int = 2
     likelihood_weight: float = 1.0
@@ -177,6 +185,7 @@ class SynthesisSettings(Settings):
     max_nfev: int = 100
     max_steps: int = 30
     look_ahead: int = 2
+    receding_horizon: bool = False
     joint_steps: int | str = "all"
     joint_method: str = "lm"
     joint_max_nfev: int = 100
@@ -185,6 +194,8 @@ class SynthesisSettings(Settings):
     def __post_init__(self) -> None:
         if int(self.look_ahead) < 1:
             raise ValueError(f"graph.synthesis.look_ahead must be >= 1; got {self.look_ahead}")
+        if int(self.reach_range_samples) < 100:
+            raise ValueError(f"graph.synthesis.reach_range_samples must be >= 100; got {self.reach_range_samples}")
         js = self.joint_steps
         if not (js == "all" or (isinstance(js, Integral) and not isinstance(js, bool) and js >= 0)):
             raise ValueError(f"graph.synthesis.joint_steps: 'all' or an integer >= 0; got {js!r}")

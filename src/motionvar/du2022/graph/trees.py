@@ -13,20 +13,23 @@ the thesis) and a tree is built over it:
 :class:`SpacePartitioningTree` represents inner nodes by the mean latent vector of their
 samples; leaves hold the samples. Its search (Sec. 4.5.2) descends level by level,
 evaluating the objective of Eq. 4.2 on the means of the children of the current
-candidates and keeping the best ``beam`` of them (DFKI used 2; the n best are taken with
-``heapq.nsmallest``, not ``heap[:n]``, the known bug of DFKI's code); at leaves the
-samples themselves are evaluated. Evaluations are O(l k c) instead of O(N) (levels,
+candidates and keeping the best ``beam`` of them (DFKI's code default keeps 4,
+``n_cluster_search_candidates`` in ``motion_generator/algorithm_configuration.py``; the n
+best are taken with ``heapq.nsmallest``, not ``heap[:n]``, the known bug of DFKI's code); at
+leaves the samples themselves are evaluated. Evaluations are O(l k c) instead of O(N) (levels,
 children, candidates). With ``kind="median"`` this is *our* median-split tree (node means
 and the same beam as the k-means tree).
 
-:class:`MedianKDTree` is the median tree as DFKI built it for the comparison of Fig. 4.12
-(``space_partitioning/kdtree.py`` of the morphablegraphs code): a kd-tree whose every node
-*is* a sample, the median sample along the split dimension (the thesis' dimension of
-maximum variance; DFKI's code cycles the dimensions by depth, ``split="cyclic"``), and a
-greedy descent that evaluates both children of the current node and moves to the better
-one, returning the best sample evaluated on the way (about 2 log2 N evaluations).
-:func:`select_beam` picks the k-means tree's beam from an evaluation budget (the thesis'
-"less than 120 evaluations").
+:class:`MedianKDTree` is the median tree of Fig. 4.12 modelled on DFKI's kd-tree
+(``space_partitioning/kdtree.py`` of the morphablegraphs code, which DFKI's code uses in
+the leaves of its k-means tree, ``cluster_tree_node_builder.py``): every node *is* a
+sample, the median sample along the split dimension (the thesis' dimension of maximum
+variance; DFKI's kd-tree cycles the dimensions by depth, ``split="cyclic"``), and a greedy
+descent that evaluates both children of the current node and moves to the better one,
+returning the best sample evaluated on the way (about 2 log2 N evaluations); with a
+``beam`` > 1 (our option, to give it the k-means tree's evaluation count) the best
+``beam`` children of a level are kept. :func:`select_beam` picks a beam from an evaluation
+budget (the thesis' "less than 120 evaluations").
 
 References (Fig. 4.12): :func:`random_search` (the best of 100 fresh GMM samples) and
 :func:`brute_force` (all samples of the tree). :class:`KeyFramePositionIndex` is our
@@ -232,8 +235,8 @@ class SpacePartitioningTree:
 
 
 class MedianKDTree:
-    """The DFKI kd-tree over latent samples (module docstring): every node is the median
-    sample of its subset along the split dimension, the samples below it form the left
+    """A kd-tree over latent samples modelled on DFKI's (module docstring): every node is the
+    median sample of its subset along the split dimension, the samples below it form the left
     subtree, those above it the right one.
 
     Args:
@@ -286,17 +289,23 @@ class MedianKDTree:
         """The latent vectors a search evaluates (the rows of :meth:`search_many`): the samples."""
         return self.samples
 
-    def search(self, objective: Callable[[np.ndarray], np.ndarray]) -> SearchResult:
+    def search(self, objective: Callable[[np.ndarray], np.ndarray], beam: int = 1) -> SearchResult:
         """Greedy descent (DFKI's ``find_best_example``): evaluate the root's sample, then
         at every node the samples of its children, moving to the child with the lower
-        objective (the right one on a tie, as DFKI); the best sample evaluated wins."""
-        return self.search_many(lambda query, rows: objective(self.samples[rows]), 1)[0]
+        objective (the right one on a tie, as DFKI); the best sample evaluated wins. With
+        ``beam`` > 1 (our option) the best ``beam`` children of all nodes kept at a level
+        are kept for the next one."""
+        return self.search_many(lambda query, rows: objective(self.samples[rows]), 1, beam)[0]
 
-    def search_many(self, evaluate: BatchObjective, n_queries: int) -> list[SearchResult]:
+    def search_many(self, evaluate: BatchObjective, n_queries: int, beam: int = 1) -> list[SearchResult]:
         """:meth:`search` for ``n_queries`` queries in lockstep: at every level the children of
         all queries' current nodes are evaluated in one call ``evaluate(query, rows)`` -> (B,)
         (rows: sample indices; :meth:`SpacePartitioningTree.search_many`); every query gets
         what :meth:`search` gives it alone."""
+        if int(beam) < 1:
+            raise ValueError(f"kd-tree search: beam must be >= 1; got {beam}")
+        if int(beam) > 1:
+            return self._beam_search(evaluate, int(n_queries), int(beam))
         q_all = np.arange(int(n_queries))
         node = np.zeros(len(q_all), dtype=np.int64)
         best = np.full(len(q_all), self.point[0], dtype=np.int64)
@@ -314,6 +323,29 @@ class MedianKDTree:
             node = np.where(active, kids[q_all, side], node)
             better = active & (err[q_all, side] < best_err)
             best_err[better], best[better] = err[better, side[better]], self.point[node[better]]
+        return _results(self.samples, best, best_err, n_evals)
+
+    def _beam_search(self, evaluate: BatchObjective, n_queries: int, beam: int) -> list[SearchResult]:
+        """:meth:`search_many` keeping the best ``beam`` children per level (each node's right
+        child before its left one, so that ties go right as in the greedy descent); the best
+        sample evaluated wins."""
+        q_all = np.arange(n_queries)
+        frontier = np.zeros((n_queries, 1), dtype=np.int64)  # node ids of each query's beam, -1: none
+        best = np.full(n_queries, self.point[0], dtype=np.int64)
+        best_err = np.array(evaluate(q_all, best), dtype=float)
+        n_evals = np.ones(n_queries, dtype=np.int64)
+        while (frontier >= 0).any():
+            live = frontier >= 0
+            node = np.where(live, frontier, 0)
+            kids = np.where(live[..., None], np.stack([self.right[node], self.left[node]], axis=-1), -1)
+            kids = kids.reshape(n_queries, -1)
+            err = _evaluate_padded(evaluate, np.where(kids >= 0, self.point[np.maximum(kids, 0)], -1))
+            n_evals += (kids >= 0).sum(axis=1)
+            i = np.argmin(err, axis=1)
+            better = err[q_all, i] < best_err
+            best_err[better], best[better] = err[better, i[better]], self.point[kids[better, i[better]]]
+            order = np.lexsort((err, kids < 0), axis=-1)[:, :beam]
+            frontier = np.take_along_axis(kids, order, axis=1)
         return _results(self.samples, best, best_err, n_evals)
 
 

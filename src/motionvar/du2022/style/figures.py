@@ -65,8 +65,8 @@ def diversity_figure(table: pd.DataFrame, measures: Sequence[str] = ("pose_sd", 
     """Tables 5.2-5.3 as bars relative to the training data (so that our centimetres and
     the thesis' rig units compare): one panel per primitive and measure, measured and
     published bars per model. ``table`` has columns primitive, model, the measures and
-    ``published_<measure>``; where it has them, ``training_<measure>`` (each model's own
-    training data) and ``posterior_mean_<measure>`` are drawn as markers on the measured bars."""
+    ``published_<measure>``; where it has them, ``training_<measure>`` (the clips of each
+    model's own style: the neutral clips for the neutral VAE, the style's clips for a CVAE) and ``posterior_mean_<measure>`` are drawn as markers on the measured bars."""
     prims = list(dict.fromkeys(table["primitive"]))
     fig, axes = plt.subplots(len(prims), len(measures), figsize=(4.2 * len(measures), 3.0 * len(prims)), squeeze=False)
     for r, prim in enumerate(prims):
@@ -82,7 +82,7 @@ def diversity_figure(table: pd.DataFrame, measures: Sequence[str] = ("pose_sd", 
                 ok = pub.notna().to_numpy()  # the thesis has no row for our baselines
                 ax.bar(x[ok] + 0.2, (pub / pub.loc["training data"])[ok], 0.4, label="published", color="#ff7f0e")
             for col, marker, label in (
-                (f"training_{m}", "_", "own training data"),
+                (f"training_{m}", "_", "own style's clips"),
                 (f"posterior_mean_{m}", ".", "at the posterior means"),
             ):
                 if col in t and t[col].notna().any():

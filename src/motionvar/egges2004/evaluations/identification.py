@@ -28,7 +28,7 @@ from ..pipeline import IdleModel
 from ..settings import Egges2004Settings, IdentificationSettings
 from .common import perlin_sds, perlin_sequence, subject_rng
 
-FEATURE_SETS = ("all", "dynamics")
+FEATURE_SETS = ("all", "posture", "dynamics")
 SWAY_BANDS_HZ = ((0.05, 0.3), (0.3, 1.0), (1.0, 3.0))
 
 
@@ -55,8 +55,9 @@ def window_features(
     (mean, SD, share of frames on the left foot / right foot / both, with ``margin`` as
     in :func:`~motionvar.egges2004.categories.name_by_support`), and sway spectra: the log
     Welch power of the first ``n_spectral_pcs`` PCs in the bands of ``SWAY_BANDS_HZ``.
-    ``dynamics``: only what describes movement, not the posture held: the PC SDs, the
-    support-ratio SD and the sway spectra.
+    ``posture``: only the posture held (the PC means, the support-ratio mean and shares).
+    ``dynamics``: only what describes movement, the posture means removed (Sec. 5.6: "the
+    way a person changes posture"): the PC SDs, the support-ratio SD and the sway spectra.
     """
     if feature_set not in FEATURE_SETS:
         raise ValueError(f"feature_set must be one of {FEATURE_SETS}, got {feature_set!r}")
@@ -67,16 +68,26 @@ def window_features(
         )
     w = _windows(np.asarray(pcs)[:, :n_pcs], length)
     lam = _windows(np.asarray(support), length)
+    shares = np.stack([lam > 0.5 + margin, lam < 0.5 - margin, np.abs(lam - 0.5) <= margin], axis=2).mean(axis=1)
+    posture = np.concatenate([w.mean(axis=1), lam.mean(axis=1, keepdims=True), shares], axis=1)
+    if feature_set == "posture":
+        return posture
     freqs, power = welch(
         w[:, :, :n_spectral_pcs], fs=fps, nperseg=min(length, int(round(8 * fps))), axis=1, detrend="linear"
     )
     bands = np.stack([power[:, (freqs >= lo) & (freqs < hi)].mean(axis=1) for lo, hi in SWAY_BANDS_HZ], axis=2)
     spectra = np.log10(np.maximum(bands, 1e-20)).reshape(len(w), -1)
-    dynamics = [w.std(axis=1), lam.std(axis=1, keepdims=True), spectra]
-    if feature_set == "dynamics":
-        return np.concatenate(dynamics, axis=1)
-    shares = np.stack([lam > 0.5 + margin, lam < 0.5 - margin, np.abs(lam - 0.5) <= margin], axis=2).mean(axis=1)
-    return np.concatenate([w.mean(axis=1), lam.mean(axis=1, keepdims=True), shares, *dynamics], axis=1)
+    dynamics = np.concatenate([w.std(axis=1), lam.std(axis=1, keepdims=True), spectra], axis=1)
+    return dynamics if feature_set == "dynamics" else np.concatenate([posture, dynamics], axis=1)
+
+
+def feature_subset(features: np.ndarray, feature_set: str, n_pcs: int) -> np.ndarray:
+    """The columns of ``feature_set`` among the ``all`` features of :func:`window_features`
+    (which puts the posture columns, ``n_pcs`` + 4 of them, first)."""
+    if feature_set not in FEATURE_SETS:
+        raise ValueError(f"feature_set must be one of {FEATURE_SETS}, got {feature_set!r}")
+    cut = n_pcs + 4
+    return {"all": features, "posture": features[:, :cut], "dynamics": features[:, cut:]}[feature_set]
 
 
 def make_identifier(seed: int) -> Pipeline:
@@ -124,26 +135,31 @@ def identification_table(
 ) -> tuple[pd.DataFrame, dict[str, Any]]:
     """Per feature set, a classifier trained on the windows of ``train`` names the subject of the
     windows of each source's ``sequences``: the accuracy table (accuracy, chance and the binomial
-    p-value against it per source and feature set) and, for the generated windows with all
+    p-value against it per source and feature set; on the generated rows, the paired comparison
+    with the Perlin windows, :func:`mcnemar_greater`) and, for the generated windows with all
     features, ``labels`` and ``confusion`` (empty without a generated source)."""
     params = settings.identification
 
-    def features(items, fs):
+    def features(items):
         blocks = [
-            (window_features(p, lam, fps, params.window_s, params.feature_pcs, settings.analysis.support_margin, fs), s)
+            (window_features(p, lam, fps, params.window_s, params.feature_pcs, settings.analysis.support_margin), s)
             for s, p, lam in items
         ]
         return np.concatenate([b for b, _ in blocks]), np.concatenate([[s] * len(b) for b, s in blocks])
 
+    n_pcs = min(params.feature_pcs, train[0][1].shape[1])
+    X_all, y = features(train)
+    tests = {source: features(items) for source, items in sequences.items()}
     rows, confusion = [], {}
     chance = 1.0 / len(subjects)
     for fs in FEATURE_SETS:
-        X, y = features(train, fs)
-        clf = make_identifier(settings.seed).fit(X, y)
-        for source, items in sequences.items():
-            Xs, ys = features(items, fs)
+        clf = make_identifier(settings.seed).fit(feature_subset(X_all, fs, n_pcs), y)
+        correct = {}
+        for source, (Xs_all, ys) in tests.items():
+            Xs = feature_subset(Xs_all, fs, n_pcs)
             pred = clf.predict(Xs)
-            n_ok = int(np.sum(pred == ys))
+            correct[source] = pred == ys
+            n_ok = int(np.sum(correct[source]))
             rows.append(
                 {
                     "source": source,
@@ -155,9 +171,27 @@ def identification_table(
                     "p_value": binomtest(n_ok, len(ys), chance, alternative="greater").pvalue,
                 }
             )
-            if fs == "all" and source == GEN:
-                confusion = {"labels": subjects, "confusion": confusion_matrix(ys, pred, labels=subjects)}
+            if source == GEN:
+                generated_row = rows[-1]
+                if fs == "all":
+                    confusion = {"labels": subjects, "confusion": confusion_matrix(ys, pred, labels=subjects)}
+        if GEN in correct and PERLIN in correct:
+            better, worse, p = mcnemar_greater(correct[GEN], correct[PERLIN])
+            generated_row.update(better_than_perlin=better, worse_than_perlin=worse, p_vs_perlin=p)
     return pd.DataFrame(rows), confusion
+
+
+def mcnemar_greater(a_ok: np.ndarray, b_ok: np.ndarray) -> tuple[int, int, float]:
+    """Exact one-sided McNemar test that method A names windows correctly more often than B, on
+    paired windows (``a_ok``, ``b_ok``: correct or not, one entry per pair): the pairs where only A
+    is right, those where only B is, and the binomial p-value of the first among the discordant
+    pairs against 1/2 (1 without discordant pairs)."""
+    a_ok, b_ok = np.asarray(a_ok, dtype=bool), np.asarray(b_ok, dtype=bool)
+    if a_ok.shape != b_ok.shape:
+        raise ValueError(f"mcnemar_greater: paired windows must match; got {a_ok.shape} and {b_ok.shape}")
+    better, worse = int(np.sum(a_ok & ~b_ok)), int(np.sum(~a_ok & b_ok))
+    p = binomtest(better, better + worse, 0.5, alternative="greater").pvalue if better + worse else 1.0
+    return better, worse, float(p)
 
 
 def _test_sequences(
@@ -197,16 +231,28 @@ SOURCE_KEYS = {REC: "recorded", GEN: "generated", PERLIN: "perlin"}
 
 
 def identification_measurements(table: pd.DataFrame, params: IdentificationSettings) -> dict[str, Any]:
-    """What Sec. 8's claim is judged on, from the accuracy table: the accuracy per source and
-    feature set, the binomial p-value of the generated windows (all features), the number of
-    subjects, and the significance level and window length used."""
+    """What Sec. 5.6 and 8's claim is judged on, from the accuracy table: the accuracy and binomial
+    p-value (against chance) per source and feature set; per feature set the paired comparison of the
+    generated with the Perlin windows (windows only the generated / only the Perlin one names right,
+    McNemar p-value); the number of subjects, and the significance level and window length used."""
 
-    def get(source: str, fs: str, col: str = "accuracy") -> float:
+    def get(source: str, fs: str, col: str) -> float:
         return float(table.loc[(table.source == source) & (table.features == fs), col].iloc[0])
 
+    def per_source(col: str) -> dict[str, dict[str, float]]:
+        return {key: {fs: get(source, fs, col) for fs in FEATURE_SETS} for source, key in SOURCE_KEYS.items()}
+
     return {
-        "accuracy": {key: {fs: get(source, fs) for fs in FEATURE_SETS} for source, key in SOURCE_KEYS.items()},
-        "p_value_generated": get(GEN, "all", "p_value"),
+        "accuracy": per_source("accuracy"),
+        "p_value": per_source("p_value"),
+        "vs_perlin": {
+            fs: {
+                "better": int(get(GEN, fs, "better_than_perlin")),
+                "worse": int(get(GEN, fs, "worse_than_perlin")),
+                "p_value": get(GEN, fs, "p_vs_perlin"),
+            }
+            for fs in FEATURE_SETS
+        },
         "subjects": int(table["subjects"].iloc[0]),
         "alpha": params.alpha,
         "window_s": params.window_s,

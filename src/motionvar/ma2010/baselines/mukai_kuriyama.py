@@ -37,16 +37,21 @@ class StyleClipInterpolation:
         self.flight = flight
         self.trend_rcond = trend_rcond  # cut-off of the hyperplane's pseudo-inverse (both methods)
 
-    def fit(self, clips: ClipSet) -> "StyleClipInterpolation":
+    def fit(self, clips: ClipSet, groups: np.ndarray | None = None) -> "StyleClipInterpolation":
+        """Fit to ``clips``. For RBF, ``groups`` (N,) labels clips that are one example (the cycles
+        of one walk: one kernel at their mean style, :meth:`.rbf.RBFInterpolation.fit`); Kriging
+        takes every clip as it is."""
         self.codec_ = ClipCodec.fit(clips, np.arange(clips.skeleton.n_joints), timing=True, root_height=self.flight)
         self.n_keys_ = len(clips.reference_keys)
         self.reference_keys_ = clips.reference_keys
-        interp = (
-            UniversalKriging(self.variogram_model, variogram_scale=self.variogram_scale, trend_rcond=self.trend_rcond)
-            if self.method == "kriging"
-            else RBFInterpolation(linear_rcond=self.trend_rcond)
-        )
-        self.interpolator_ = interp.fit(clips.style, self.codec_.encode(clips))
+        y = self.codec_.encode(clips)
+        if self.method == "kriging":
+            kriging = UniversalKriging(
+                self.variogram_model, variogram_scale=self.variogram_scale, trend_rcond=self.trend_rcond
+            )
+            self.interpolator_ = kriging.fit(clips.style, y)
+        else:
+            self.interpolator_ = RBFInterpolation(linear_rcond=self.trend_rcond).fit(clips.style, y, groups)
         return self
 
     def predict(self, c: np.ndarray) -> ClipPrediction:

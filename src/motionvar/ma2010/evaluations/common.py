@@ -34,9 +34,9 @@ def prediction_key_frames(key_times: np.ndarray, fps: float, n_frames: int) -> n
 
 
 def predicted_strides(pred: ClipPrediction, reference_keys: np.ndarray, solver: RootSolver, fps: float) -> np.ndarray:
-    """(M, 2) support-phase strides of predicted clips: each is retimed to real time, its
-    root recovered by footskate cleanup, and the swing ankle's travel measured. NaN for a
-    clip whose predicted key times leave no frames between its key frames (a failed
+    """(M, 2) support-phase strides of predicted clips: each is retimed to real time and
+    measured as every example cycle's style is (:func:`..examples.normalized_strides`). NaN for
+    a clip whose predicted key times leave no frames between its key frames (a failed
     synthesis, far outside the examples)."""
     out = np.full((len(pred), 2), np.nan)
     for m in range(len(pred)):  # loop over clips

@@ -2,7 +2,10 @@
 left and of the right support phase). At every point of a grid around the examples the
 model synthesizes a cycle (xi at the network's conditional mean) whose strides are
 measured; the error against the requested strides is the map, and its rank correlation
-with the distance to the nearest example is the claim."""
+with the distance to the nearest example, over the syntheses that succeed, is the claim
+("a strong correlation"). Grid points along the line the examples lie on (a symmetric gait:
+left = right stride) are reported apart from those off it, where a model that learnt only
+symmetric walks errs by at least half the asymmetry asked for."""
 
 from __future__ import annotations
 
@@ -21,13 +24,26 @@ from ..synthesis import RootSolver
 from .common import predicted_strides
 
 
+def examples_line(style: np.ndarray) -> tuple[np.ndarray, np.ndarray, float]:
+    """The line the example styles (N, 2) lie along: their mean, the unit direction of their
+    first principal axis, and the largest distance of an example from it (cm)."""
+    mean = style.mean(axis=0)
+    _, _, vt = np.linalg.svd(style - mean, full_matrices=False)
+    direction = vt[0]
+    off = (style - mean) @ np.array([-direction[1], direction[0]])
+    return mean, direction, float(np.abs(off).max(initial=0.0))
+
+
 def reliability_map(
     model: StyleVariationModel, clips: ClipSet, solver: RootSolver, n_grid: int, margin: float
 ) -> pd.DataFrame:
     """Fig. 7b: over a grid of the 2-D style space (the examples' range widened by
     ``margin`` times its extent on each side), the stride error of the synthesized clip
-    (xi at the network's conditional mean; NaN where the synthesis fails) and the distance
-    to the nearest example (cm)."""
+    (xi at the network's conditional mean; NaN where the synthesis fails: ``failed``), the
+    distance to the nearest example (cm), the distance from the examples' line
+    (:func:`examples_line`) and whether the point lies along it (``on_examples_line``: within
+    the band the examples occupy about the line, at least half a grid step wide, so that the
+    grid cells the line crosses count)."""
     lo, hi = clips.style.min(axis=0), clips.style.max(axis=0)
     ext = np.maximum(hi - lo, 1.0)
     axes = [np.linspace(lo[k] - margin * ext[k], hi[k] + margin * ext[k], n_grid) for k in range(2)]
@@ -36,6 +52,9 @@ def reliability_map(
     pred, _ = model.synthesize_clips(grid, noise=False)
     measured = predicted_strides(pred, model.reference_keys_, solver, clips.fps)
     dist, _ = cKDTree(clips.style).query(grid)
+    mean, direction, band = examples_line(clips.style)
+    off_line = np.abs((grid - mean) @ np.array([-direction[1], direction[0]]))
+    step = 0.5 * np.mean([np.ptp(a) / max(n_grid - 1, 1) for a in axes])
     return pd.DataFrame(
         {
             "left_cm": grid[:, 0],
@@ -43,31 +62,58 @@ def reliability_map(
             "measured_left_cm": measured[:, 0],
             "measured_right_cm": measured[:, 1],
             "stride_error_cm": np.max(np.abs(measured - grid), axis=1),
+            "failed": np.isnan(measured).any(axis=1),
             "nearest_example_cm": dist,
+            "examples_line_cm": off_line,
+            "on_examples_line": off_line <= max(band, step),
         }
     )
 
 
-def reliability_correlation(table: pd.DataFrame) -> tuple[float, float, np.ndarray]:
+def rank_correlation(table: pd.DataFrame) -> dict:
     """Spearman's rho and its p-value between the stride error and the distance to the nearest
-    example over the points of a reliability map (:func:`reliability_map`), a failed synthesis
-    (NaN error) ranking last; and the mask of failed points."""
-    failed = table["stride_error_cm"].isna().to_numpy()
-    ranked = np.where(failed, np.inf, table["stride_error_cm"].to_numpy())  # a failed synthesis ranks last
-    rho, p = spearmanr(ranked, table["nearest_example_cm"])
-    return float(rho), float(p), failed
+    example over the points of (a part of) a reliability map whose synthesis succeeded, with
+    their number (rho and p NaN with fewer than 3)."""
+    ok = table[~table["failed"].to_numpy(bool)]
+    if len(ok) < 3:
+        return {"rho": float("nan"), "p": float("nan"), "n": len(ok)}
+    rho, p = spearmanr(ok["stride_error_cm"], ok["nearest_example_cm"])
+    return {"rho": float(rho), "p": float(p), "n": len(ok)}
+
+
+def reliability_correlation(table: pd.DataFrame) -> dict:
+    """Fig. 7b's measurements from a reliability map (:func:`reliability_map`): the rank
+    correlation (:func:`rank_correlation`) over every point whose synthesis succeeded
+    (``all``), over those along the examples' line and those off it; the numbers of grid
+    points and of failed syntheses (all, along the line)."""
+    on = table["on_examples_line"].to_numpy(bool)
+    failed = table["failed"].to_numpy(bool)
+    return {
+        "all": rank_correlation(table),
+        "on_line": rank_correlation(table[on]),
+        "off_line": rank_correlation(table[~on]),
+        "grid_points": len(table),
+        "on_line_points": int(on.sum()),
+        "failed": int(failed.sum()),
+        "failed_on_line": int((failed & on).sum()),
+    }
 
 
 def fig7b_reliability(walks: WalkCycles, model: StyleVariationModel, settings: Ma2010Settings) -> EvaluationResult:
     """Fig. 7b for ``model`` fitted to ``walks``: the reliability map on an ``n_grid`` x
     ``n_grid`` grid (``settings.reliability_grid``; the examples' range widened by
-    ``settings.reliability_margin``) and the claim that the stride error grows with the distance to the
-    nearest example (:func:`reliability_correlation`; measurements ``rho``, ``p``, ``grid_points``,
-    ``failed``, ``margin``). Figure: ``n_grid``, ``example_style`` (N, 2), ``rho``, ``p``, ``failed``
-    (mask over the table)."""
+    ``settings.reliability_margin``) and the claim that the stride error grows strongly with the
+    distance to the nearest example (:func:`reliability_correlation`, with ``margin``). Figure:
+    ``n_grid``, ``example_style`` (N, 2), ``line`` (the examples' mean and direction), the
+    correlations."""
     n_grid, margin = settings.reliability_grid, settings.reliability_margin
     table = reliability_map(model, walks.clips, walks.solver, n_grid, margin)
-    rho, p, failed = reliability_correlation(table)
-    measurements = {"rho": rho, "p": p, "grid_points": len(table), "failed": int(failed.sum()), "margin": margin}
-    figure = {"n_grid": n_grid, "example_style": walks.clips.style, "rho": rho, "p": p, "failed": failed}
+    measurements = reliability_correlation(table) | {"margin": margin}
+    mean, direction, _ = examples_line(walks.clips.style)
+    figure = {
+        "n_grid": n_grid,
+        "example_style": walks.clips.style,
+        "line": (mean, direction),
+        "correlation": {k: measurements[k] for k in ("all", "on_line", "off_line")},
+    }
     return EvaluationResult(table, judge_claims(CLAIMS, "ma2010_fig7b", measurements), figure, measurements)

@@ -131,15 +131,15 @@ def fixed_style_measurements(
     data_name: str,
     errors: np.ndarray,
     ceil_errors: np.ndarray,
-    n_near: int,
+    near_subjects: list[str],
     settings: Ma2010Settings,
     root_group: str,
 ) -> dict:
     """What Fig. 8a's claims are judged on: the spread per joint group of every source
     (``spread_cm``: :data:`SPREAD_KEYS`, the nearest examples' ``data_name`` as ``data``), the
     groups, the variants' largest stride error and how many exceed 1.2 cm, the ceiling's largest,
-    the numbers of variants and of nearest examples, ``settings.spread_ratio_bounds`` and the root
-    rotation's group."""
+    the numbers of variants, of nearest examples and of their subjects (``near_subjects``: each
+    nearest example's), ``settings.spread_ratio_bounds`` and the root rotation's group."""
     spread = {SPREAD_KEYS.get(name, "data" if name == data_name else name): dict(s) for name, s in spreads.items()}
     return {
         "spread_cm": spread,
@@ -148,7 +148,8 @@ def fixed_style_measurements(
         "over_bound": int(np.sum(errors > PUBLISHED_MAX_STRIDE_ERROR_CM)),
         "variants": len(errors),
         "ceiling_max_stride_error_cm": float(ceil_errors.max()),
-        "examples": n_near,
+        "examples": len(near_subjects),
+        "subjects": len(set(near_subjects)),
         "spread_ratio_bounds": list(settings.spread_ratio_bounds),
         "root_group": root_group,
     }
@@ -162,7 +163,8 @@ def fig8_fixed_style(walks: WalkCycles, model: StyleVariationModel, settings: Ma
     subject; also with each clip's mean posture removed), of RBF and of style-only Kriging
     (:func:`fixed_style_spreads`). Claims, judged on :func:`fixed_style_measurements`: the
     variants differ within ``settings.spread_ratio_bounds`` times the data's spread while
-    keeping the stride; RBF and Kriging do not vary. Figure: ``motions`` and ``key_frames`` of the variants in real
+    keeping the stride (not testable with too few nearest examples or subjects); RBF and
+    Kriging do not vary. Figure: ``motions`` and ``key_frames`` of the variants in real
     time, ``style``, ``errors``, ``spreads``, ``ceiling_errors``, ``data_name`` (the key of
     the data's spread)."""
     clips, solver = walks.clips, walks.solver
@@ -182,8 +184,9 @@ def fig8_fixed_style(walks: WalkCycles, model: StyleVariationModel, settings: Ma
     ]
     rows += [{"kind": "spread_cm", "name": name, **s} for name, s in spreads.items()]
     motions, keys = variant_motions(model, pred, solver, clips.fps)
+    near_subjects = [walks.subjects[i] for i in near]
     measurements = fixed_style_measurements(
-        spreads, data_name, errors, ceil_errors, len(near), settings, walks.root_group
+        spreads, data_name, errors, ceil_errors, near_subjects, settings, walks.root_group
     )
     figure = {
         "motions": motions,

@@ -1,9 +1,10 @@
 """Ma et al. 2010 Sec. 7.4: long sequences from a few example cycles of about one stride
 length (one per subject, as Fig. 1) by every method (:func:`..comparison.method_sequences`:
-ours, Perlin noise, a Bayesian GPLVM along a helix, RBFs, style-only Kriging, a DBN),
-all root-solved by the same footskate cleanup. Measured: naturalness (whole-body and
-root-free jerk against the examples', foot skating at real contacts, distance to the
-nearest example pose, discontinuities) and the variation between a method's sequences."""
+ours, Perlin noise at each amplitude of a sweep, a Bayesian GPLVM along a helix, RBFs,
+style-only Kriging, a DBN at each parent limit of a sweep), all root-solved by the same
+footskate cleanup. Measured: naturalness (whole-body and root-free jerk against the
+examples', foot skating at real contacts, distance to the example poses beyond a held-out
+example's, discontinuities) and the variation between a method's sequences."""
 
 from __future__ import annotations
 
@@ -16,15 +17,15 @@ from ...claims import EvaluationResult, NotApplicable, judge_claims
 from ...core.motion import Motion
 from ...core.threads import fixed_threads
 from ...metrics.jerk import mean_jerk, root_free_jerk
-from ..claims import CLAIMS
+from ..claims import CLAIMS, NO_VARIATION_CM
 from ..comparison import (
-    LABELS,
-    METHODS,
     NATURALNESS_SCORES,
     NaturalnessReference,
-    best_with_variation,
+    at_least_as_natural,
     example_pose_sequences,
+    family,
     method_sequences,
+    method_variants,
     naturalness,
     naturalness_scores,
     variation_between,
@@ -46,24 +47,26 @@ RIVAL_THREADS = 2
 def sequence_rows(
     out: dict[str, list[Motion]], examples: list[Motion], ref: NaturalnessReference, full: float
 ) -> list[dict]:
-    """One table row per sequence (method, number, length, :func:`..comparison.naturalness`,
-    :func:`..comparison.naturalness_scores`, variation between the method's sequences), then
-    the examples as reference. A sequence shorter than ``full`` s stopped early (diverged):
-    its scores and its method's variation are infinite."""
+    """One table row per sequence (method and setting, its family, number, length,
+    :func:`..comparison.naturalness`, :func:`..comparison.naturalness_scores`, variation
+    between the method's sequences), then the examples as reference. A sequence shorter than
+    ``full`` s stopped early (diverged): its scores and its method's variation are infinite."""
     example_jerk = float(np.mean([mean_jerk(m.positions(), m.fps) for m in examples]))
     example_root_free_jerk = float(np.mean([root_free_jerk(m.positions(), m.fps) for m in examples]))
+    held_out = ref.held_out_pose_distance
     rows = []
     for method, motions in out.items():
         diverged = any(m.duration < full for m in motions)
         var = np.inf if diverged else variation_between(motions)
         for s, m in enumerate(motions):
             meas = naturalness(m, ref)
-            scores = naturalness_scores(meas, example_jerk, example_root_free_jerk)
+            scores = naturalness_scores(meas, example_jerk, example_root_free_jerk, held_out)
             if m.duration < full:  # the sequence broke down before its end: unusable, least natural
                 scores = {k: np.inf for k in scores}
             rows.append(
                 {
                     "method": method,
+                    "family": family(method),
                     "sequence": s + 1,
                     "seconds": m.duration,
                     **meas,
@@ -77,10 +80,11 @@ def sequence_rows(
         rows.append(
             {
                 "method": "examples",
+                "family": "examples",
                 "sequence": s + 1,
                 "seconds": m.duration,
                 **meas,
-                **naturalness_scores(meas, example_jerk, example_root_free_jerk),
+                **naturalness_scores(meas, example_jerk, example_root_free_jerk, held_out),
                 "variation_between_sequences_cm": np.nan,
             }
         )
@@ -88,44 +92,60 @@ def sequence_rows(
 
 
 def comparison_measurements(
-    means: pd.DataFrame, out: dict[str, list[Motion]], full: float, n_examples: int, settings: Ma2010Settings
+    means: pd.DataFrame,
+    out: dict[str, list[Motion]],
+    full: float,
+    n_examples: int,
+    held_out_pose_cm: float,
+    settings: Ma2010Settings,
 ) -> dict:
     """What Sec. 7.4's claim is judged on, from the per-method means of the table: every method's
-    naturalness scores (:data:`NATURALNESS_SCORES`, lower is more natural) and variation between its
-    sequences, on which scores ours is at least as good as every method that varies
-    (:func:`..comparison.best_with_variation`), the labels, the methods whose sequences stopped before
-    ``full`` s (the shortest one's length), the number of example cycles, and the settings of ours
-    (xi draws, transition landing) and of the Perlin noise."""
-    scores = {m: {k: float(means.loc[m, k]) for k in NATURALNESS_SCORES} for m in METHODS}
-    variation = {m: float(means.loc[m, "variation_between_sequences_cm"]) for m in METHODS}
+    (and setting's: :func:`..comparison.method_variants`) naturalness scores
+    (:data:`NATURALNESS_SCORES`, lower is more natural) and variation between its sequences; on which
+    scores ours is at least as natural as every rival (``ours_best``: RBF and Kriging included) and as
+    every rival that varies (``ours_best_varying``), the best rival per score, the labels and
+    families, the methods whose sequences stopped before ``full`` s (the shortest one's length), the
+    number of example cycles, the held-out pose distance (cm), and the settings of ours (xi draws,
+    transition landing) and of the swept rivals."""
+    labels = method_variants(settings)
+    scores = {m: {k: float(means.loc[m, k]) for k in NATURALNESS_SCORES} for m in labels}
+    variation = {m: float(means.loc[m, "variation_between_sequences_cm"]) for m in labels}
+    rivals = [m for m in labels if m != "ours"]
+    varying = [m for m in rivals if variation[m] > NO_VARIATION_CM]
     return {
         "scores": scores,
         "variation_cm": variation,
-        "ours_best": best_with_variation(scores, variation, "ours"),
-        "labels": {m: LABELS[m] for m in METHODS},
+        "ours_best": at_least_as_natural(scores, "ours", rivals),
+        "ours_best_varying": at_least_as_natural(scores, "ours", varying),
+        "best_rival": {k: min(rivals, key=lambda m: scores[m][k]) for k in NATURALNESS_SCORES},
+        "labels": labels,
+        "families": {m: family(m) for m in labels},
         "score_labels": dict(NATURALNESS_SCORES),
-        "diverged_s": {m: min(x.duration for x in out[m]) for m in METHODS if any(x.duration < full for x in out[m])},
+        "diverged_s": {m: min(x.duration for x in out[m]) for m in labels if any(x.duration < full for x in out[m])},
         "examples": n_examples,
+        "held_out_pose_cm": held_out_pose_cm,
         "xi_per": settings.comparison_xi,
         "landing": settings.comparison_landing,
-        "perlin_amplitude_rad": settings.perlin_amplitude_rad,
+        "perlin_amplitude_sweep_rad": list(settings.perlin_amplitude_sweep_rad),
         "perlin_frequency_hz": settings.perlin_frequency_hz,
+        "dbn_max_parents_sweep": list(settings.dbn_max_parents_sweep),
     }
 
 
 def sec7_4_comparison(walks: WalkCycles, settings: Ma2010Settings, threads: int = RIVAL_THREADS) -> EvaluationResult:
     """Sec. 7.4 from the ``settings.comparison_examples`` cycles nearest the median stride
     (one per subject): every method's sequences (:func:`..comparison.method_sequences`,
-    with ``settings``), their naturalness (:func:`..comparison.naturalness`: foot skating
-    at detected contacts; the height-threshold measure with ``settings.contact_height_cm``
-    beside it; a discontinuity is an acceleration above ``settings.discontinuity_factor`` x
-    the examples' peak) and variation, one table row per sequence plus the examples as
-    reference (:func:`sequence_rows`); a sequence that stops early (diverged) scores
-    infinite. Claim: ours is the most natural of the methods that vary (judged on
-    :func:`comparison_measurements`). Figure: ``means``
-    (per-method means of the table), ``n_examples``, ``seconds``, ``n_sequences``,
-    ``sequences`` (method -> motions). The sequences are made on ``threads`` torch and BLAS
-    threads (:data:`RIVAL_THREADS`)."""
+    with ``settings``: Perlin noise and the DBN at every setting of their sweeps), their
+    naturalness (:func:`..comparison.naturalness`: foot skating at detected contacts; the
+    height-threshold measure with ``settings.contact_height_cm`` beside it; a discontinuity
+    is an acceleration above ``settings.discontinuity_factor`` x the examples' peak) and
+    variation, one table row per sequence plus the examples as reference
+    (:func:`sequence_rows`); a sequence that stops early (diverged) scores infinite. Claim:
+    ours varies and is at least as natural as every rival at every setting, RBF and Kriging
+    included (judged on :func:`comparison_measurements`). Figure: ``means`` (per-method means
+    of the table), ``labels`` (method -> label), ``n_examples``, ``seconds``, ``n_sequences``,
+    ``sweeps`` (text), ``sequences`` (method -> motions). The sequences are made on
+    ``threads`` torch and BLAS threads (:data:`RIVAL_THREADS`)."""
     style = np.median(walks.clips.style, axis=0)
     near = nearest_clips(walks.clips, style, settings.comparison_examples, walks.subjects)
     if len(near) < 2:
@@ -147,10 +167,19 @@ def sec7_4_comparison(walks: WalkCycles, settings: Ma2010Settings, threads: int 
     means = table.groupby("method", sort=False).mean(numeric_only=True)
     figure = {
         "means": means,
+        "labels": method_variants(settings),
         "n_examples": len(near),
         "seconds": seconds,
         "n_sequences": settings.comparison_sequences,
+        "sweeps": sweeps_text(settings),
         "sequences": out,
     }
-    measurements = comparison_measurements(means, out, full, len(near), settings)
+    measurements = comparison_measurements(means, out, full, len(near), ref.held_out_pose_distance, settings)
     return EvaluationResult(table, judge_claims(CLAIMS, "ma2010_sec7_4", measurements), figure, measurements)
+
+
+def sweeps_text(settings: Ma2010Settings) -> str:
+    """The rivals' swept settings, in words (figure title)."""
+    amplitudes = ", ".join(f"{a:g}" for a in settings.perlin_amplitude_sweep_rad)
+    parents = ", ".join(str(p) for p in settings.dbn_max_parents_sweep)
+    return f"Perlin noise at {amplitudes} rad; DBN with at most {parents} parents"

@@ -1,7 +1,11 @@
 """Du 2022 Fig. 4.9: do random motions sampled from the primitives cover the variation
 of the training data? End-effector positions at the last frame of sampled motions of
 walk leftStance (left foot) and pick reach (both hands) against the training clips, as
-2-D kernel densities in three projections, with a coverage number per projection.
+2-D kernel densities in three projections, with a coverage number per projection both
+ways: the training points inside the samples' ``level`` region (the samples reach the
+training's variation) and the samples inside the training points' ``level`` region (they do
+not spread beyond it). A region is the highest-density region holding ``level`` of a binned
+kernel density's mass, as a probability contour of a kde2d plot.
 """
 
 from __future__ import annotations
@@ -56,30 +60,67 @@ def _lookup(dens: np.ndarray, xc: np.ndarray, yc: np.ndarray, pts: np.ndarray) -
     return out
 
 
+def hdr_threshold(density: np.ndarray, x: np.ndarray, y: np.ndarray, level: float) -> float:
+    """The density value whose superlevel set holds ``level`` of the mass of a gridded density
+    (cell centres ``x``, ``y``): the boundary of its ``level`` highest-density region."""
+    d = np.sort(np.asarray(density, float).ravel())[::-1]
+    mass = np.cumsum(d) * (x[1] - x[0]) * (y[1] - y[0])
+    return float(d[min(int(np.searchsorted(mass, level * mass[-1])), len(d) - 1)])
+
+
+def _grid_bounds(a: np.ndarray, b: np.ndarray, margin: float) -> np.ndarray:
+    both = np.concatenate([a, b])
+    lo, hi = both.min(axis=0), both.max(axis=0)
+    pad = margin * np.maximum(hi - lo, 1e-6)
+    return np.stack([lo - pad, hi + pad], axis=1)
+
+
+def _share_inside(region_points: np.ndarray, points: np.ndarray, bounds: np.ndarray, level: float, n_grid: int):
+    """Share of ``points`` inside the ``level`` highest-density region of ``region_points``'
+    binned KDE; with the region's density threshold and the density grid."""
+    dens, xc, yc = binned_kde(region_points, bounds, n_grid)
+    threshold = hdr_threshold(dens, xc, yc, level)
+    return float(np.mean(_lookup(dens, xc, yc, points) >= threshold)), threshold, (dens, xc, yc)
+
+
 def coverage(
     samples_2d: np.ndarray, training_2d: np.ndarray, level: float, n_grid: int, margin: float = 0.25
 ) -> tuple[float, float, dict]:
-    """Share of training points inside the samples' ``level`` highest-density region
-    (the region holding ``level`` of the samples, by the binned KDE). Returns
-    (coverage, density threshold, plotting data: density, centres, bounds)."""
+    """Share of training points inside the samples' ``level`` highest-density region (by
+    the binned KDE, :func:`hdr_threshold`). Returns (coverage, density threshold, plotting
+    data: density, centres, bounds)."""
     s, t = np.asarray(samples_2d, float), np.asarray(training_2d, float)
-    both = np.concatenate([s, t])
-    lo, hi = both.min(axis=0), both.max(axis=0)
-    pad = margin * np.maximum(hi - lo, 1e-6)
-    bounds = np.stack([lo - pad, hi + pad], axis=1)
-    dens, xc, yc = binned_kde(s, bounds, n_grid)
-    threshold = float(np.quantile(_lookup(dens, xc, yc, s), 1.0 - level))
-    cov = float(np.mean(_lookup(dens, xc, yc, t) >= threshold))
+    bounds = _grid_bounds(s, t, margin)
+    cov, threshold, (dens, xc, yc) = _share_inside(s, t, bounds, level, n_grid)
     return cov, threshold, dict(density=dens, x=xc, y=yc, bounds=bounds)
 
 
+def coverage_both_ways(
+    samples_2d: np.ndarray, training_2d: np.ndarray, level: float, n_grid: int, margin: float = 0.25
+) -> tuple[float, float, dict]:
+    """:func:`coverage` and the share of the samples inside the training points' ``level``
+    highest-density region (on the same grid). Returns (coverage, samples inside, plotting
+    data: :func:`coverage`'s with ``threshold``, ``training_density`` and
+    ``training_threshold``)."""
+    s, t = np.asarray(samples_2d, float), np.asarray(training_2d, float)
+    cov, threshold, data = coverage(s, t, level, n_grid, margin)
+    inside, t_threshold, (t_dens, _, _) = _share_inside(t, s, data["bounds"], level, n_grid)
+    return cov, inside, dict(data, threshold=threshold, training_density=t_dens, training_threshold=t_threshold)
+
+
 def fig4_9_measurements(table: pd.DataFrame, level: float, threshold: float, n_samples: int) -> dict[str, Any]:
-    """What the Fig. 4.9 claim is judged on: the coverage per primitive, joint and projection
-    (rows of ``table``), the density ``level``, the coverage ``threshold``
-    (``diversity.coverage_threshold``) and the number of sampled motions."""
+    """What the Fig. 4.9 claim is judged on: the coverage both ways per primitive, joint and
+    projection (rows of ``table``: ``coverage``, ``samples_inside``), the density ``level``, the
+    coverage ``threshold`` (``diversity.coverage_threshold``) and the number of sampled motions."""
     return {
         "coverage": [
-            {"primitive": r.primitive, "joint": r.joint, "view": r.view, "coverage": float(r.coverage)}
+            {
+                "primitive": r.primitive,
+                "joint": r.joint,
+                "view": r.view,
+                "coverage": float(r.coverage),
+                "samples_inside": float(r.samples_inside),
+            }
             for r in table.itertuples()
         ],
         "level": level,
@@ -99,9 +140,9 @@ def evaluate_fig4_9(
     :data:`CASES` (primitive, semantic joint), the joint's last-frame position in
     ``d.n_samples`` motions sampled from ``models[primitive]`` against the training clips
     of that primitive in ``dataset`` (``source`` names its file in errors), in each
-    projection of :data:`VIEWS`: coverage of the training points by the samples'
-    ``d.level`` density region (binned KDE on a ``d.grid`` x ``d.grid`` grid); the claim
-    (motionvar.du2022.claims) is judged from :func:`fig4_9_measurements`."""
+    projection of :data:`VIEWS`: coverage both ways (:func:`coverage_both_ways`, binned
+    KDE on a ``d.grid`` x ``d.grid`` grid); the claim (motionvar.du2022.claims) is judged
+    from :func:`fig4_9_measurements`."""
     d, seed = settings.diversity, settings.seed
     n_samples, level, grid = d.n_samples, d.level, d.grid
     rows, panels = [], []
@@ -118,9 +159,17 @@ def evaluate_fig4_9(
         motions, _ = primitive_clips(dataset, prim, source)
         train = np.stack([m.positions()[-1, j] for m in motions])
         for view, a, b in VIEWS:
-            cov, thr, data = coverage(pos[:, [a, b]], train[:, [a, b]], level, grid)
+            cov, inside, data = coverage_both_ways(pos[:, [a, b]], train[:, [a, b]], level, grid)
             rows.append(
-                dict(primitive=prim, joint=sem, view=view, coverage=cov, n_training=len(train), n_samples=len(pos))
+                dict(
+                    primitive=prim,
+                    joint=sem,
+                    view=view,
+                    coverage=cov,
+                    samples_inside=inside,
+                    n_training=len(train),
+                    n_samples=len(pos),
+                )
             )
             panels.append(
                 dict(
@@ -129,8 +178,8 @@ def evaluate_fig4_9(
                     view=view,
                     axes=(a, b),
                     training=train,
-                    threshold=thr,
                     coverage=cov,
+                    samples_inside=inside,
                     **data,
                 )
             )

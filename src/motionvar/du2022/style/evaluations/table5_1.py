@@ -64,8 +64,9 @@ def evaluate_table5_1(
     ``settings.canonical_frames`` timeline). ``settings.distance_samples`` samples a model
     (seed ``settings.seed``). Table: model, style_example_clip, D per example,
     row_minimum_at, published_row_minimum_at (rounded to 6 decimals). Figure: the
-    measured and published tables. Measurements (:func:`table5_1_measurements`): the distances,
-    judged in :mod:`motionvar.du2022.claims` (rows whose minimum is on the diagonal)."""
+    measured and published tables. Measurements (:func:`table5_1_measurements`): the distances
+    and the latent dimensions each model uses, judged in :mod:`motionvar.du2022.claims` (rows
+    whose minimum is on the diagonal; not testable when a model's posterior collapsed)."""
     primitive, n_frames, n_samples = settings.distance_primitive, settings.canonical_frames, settings.distance_samples
     models = {"neutral": (neutral[0], neutral[1])}
     _, neutral_feats = primitive_features(dataset, layout, primitive, "neutral", n_frames)
@@ -83,7 +84,8 @@ def evaluate_table5_1(
     out["published_row_minimum_at"] = published.loc[table.index, table.columns].idxmin(axis=1)
     log.info("style distances (%d samples a model):\n%s", n_samples, table.round(4).to_string())
 
-    measurements = table5_1_measurements(table, primitive, n_samples, [info for *_, info in cvaes])
+    infos = [neutral[2], *(info for *_, info in cvaes)]
+    measurements = table5_1_measurements(table, primitive, n_samples, infos, neutral[0].latent)
     return EvaluationResult(
         table=out.round(6).reset_index(),
         claims=judge_claims(CLAIMS, "du2022_table5_1", measurements),
@@ -93,17 +95,21 @@ def evaluate_table5_1(
 
 
 def table5_1_measurements(
-    table: pd.DataFrame, primitive: str, n_samples: int, cvae_infos: Sequence[Mapping[str, Any]]
+    table: pd.DataFrame, primitive: str, n_samples: int, infos: Sequence[Mapping[str, Any]], latent_dims: int
 ) -> dict[str, Any]:
     """What the Table 5.1 claim is judged on: D(m, s) by model and style example (``table``
-    of :func:`style_distance_matrix`), the primitive, the samples a model, and from the CVAEs'
-    saved info their training regimes and the latent dimensions each uses."""
+    of :func:`style_distance_matrix`), the primitive, the samples a model, the CVAEs' training
+    regimes and, from every model's saved ``infos`` (the neutral VAE's and the CVAEs'), the latent
+    dimensions each uses after training (:func:`~..model.active_units` on the neutral clips) of
+    ``latent_dims``."""
+    cvaes = [info for info in infos if info.get("style") != "neutral"]
     return {
         "primitive": str(primitive),
         "samples": int(n_samples),
         "distances": {str(r): {str(c): float(table.loc[r, c]) for c in table.columns} for r in table.index},
-        "cvae_regimes": list(dict.fromkeys(str(info["regime"]) for info in cvae_infos if "regime" in info)),
-        "cvae_active_units": {
-            str(info["style"]): int(info["active_units"]) for info in cvae_infos if "active_units" in info
+        "cvae_regimes": list(dict.fromkeys(str(info["regime"]) for info in cvaes if "regime" in info)),
+        "active_units": {
+            str(info["style"]): int(info["active_units"]) for info in infos if {"style", "active_units"} <= set(info)
         },
+        "latent_dims": int(latent_dims),
     }
