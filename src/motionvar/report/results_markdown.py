@@ -31,7 +31,12 @@ def _cell(text: str) -> str:
 def counts_markdown(claims: pd.DataFrame, shown: pd.Series, titles: Mapping[str, str] = PAPER_TITLES) -> str:
     """A table paper | kind | claims | verdicts (:func:`motionvar.report.counts.kind_counts`)."""
     lines = ["| paper | kind | claims | verdicts |", "|---|---|---|---|"]
-    for row in kind_counts(claims, shown).to_dict("records"):
+    counts = kind_counts(claims, shown)
+    order = {paper: i for i, paper in enumerate(titles)}
+    counts = counts.assign(order=counts["paper"].map(lambda p: order.get(p, len(order)))).sort_values(
+        "order", kind="stable"
+    )
+    for row in counts.to_dict("records"):
         title = titles.get(row["paper"], row["paper"])
         lines.append(f"| {title} | {row['kind']} | {row['claims']} | {counts_text(row)} |")
     return "\n".join(lines) + "\n"
@@ -88,19 +93,21 @@ def paper_results(
 
 
 def readme_counts(main: pd.DataFrame, main_name: str, stability: pd.DataFrame | None = None) -> str:
-    """The counts of README's Results: ``main`` per paper and kind (``unstable`` where the seeds of
-    ``stability``, ``main_name`` among them, do not share a verdict); for seeds of another
-    configuration, their own counts below (each claim's most common verdict, ``unstable`` where fewer
-    than 4 of 5 give it)."""
+    """The counts of README's Results: ``main`` per paper and kind, ``unstable`` where the seeds of
+    ``stability`` (``main_name`` among them) do not share a verdict."""
     main = main.reset_index(drop=True)
     seeds = seed_names(stability) if stability is not None else []
     agreement = seed_agreement(main, stability, main_name) if main_name in seeds else None
-    text = counts_markdown(main, shown_verdicts(main, agreement))
-    if stability is None or main_name in seeds:
-        return text
+    return counts_markdown(main, shown_verdicts(main, agreement))
+
+
+def seeds_counts(stability: pd.DataFrame) -> str:
+    """The counts of a stability run of its own: each claim's most common verdict over the seeds,
+    ``unstable`` where fewer than 4 of 5 give it."""
+    seeds = seed_names(stability)
     modal = stability.assign(verdict=stability["verdict"].where(stability["stable"].astype(bool), UNSTABLE))
     return (
-        f"{text}\nAcross the {len(seeds)} seeds ({', '.join(seeds)}): the most common verdict of each claim, "
+        f"Across the {len(seeds)} seeds ({', '.join(seeds)}): the most common verdict of each claim, "
         f"`unstable` where fewer than 4 of {len(seeds)} give it.\n\n{counts_markdown(modal, modal['verdict'])}"
     )
 
@@ -141,6 +148,8 @@ def results_markdown(
         "",
         readme_counts(main, main_name, stability),
     ]
+    if stability is not None and not same_run:
+        parts += [seeds_counts(stability)]
     for paper, title in PAPER_TITLES.items():
         parts += [f"### {title}", "", paper_results(main, paper, shown, agreement, stability, same_run)]
     if others:
