@@ -172,7 +172,7 @@ def check_xi(xi: Mapping[str, float], model: StyleVariationModel, margin: float 
 #: again (:func:`generate_walks`): at some draws the predicted swing foot dips below the
 #: stance foot for longer than the cleanup's minimum contact (0.1 s), the cleanup then
 #: stands on the swinging foot and the walk steps back every cycle (strides of 60 and 110
-#: cm for 137 asked; the failure :func:`.examples.normalized_strides` describes).
+#: cm for 137 asked).
 STRIDE_TOLERANCE = 0.05
 MAX_DRAWS = 10
 

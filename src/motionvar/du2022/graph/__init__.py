@@ -13,8 +13,9 @@ synthesis by Levenberg-Marquardt and graph-walk generation.
   :class:`Objective` (Eq. 4.2, counts evaluations), :class:`ConstraintStack` (Eq. 4.2 for
   many queries at once), :func:`random_constraints` (Sec. 4.6.2).
 - :mod:`.trees`: :class:`SpacePartitioningTree` (k-means, GMM, median; beam search,
-  Sec. 4.4.2/4.5.2), :class:`MedianKDTree` (the median tree as DFKI's kd-tree: median-sample
-  nodes, greedy descent), :func:`select_beam` (beam from an evaluation budget),
+  Sec. 4.4.2/4.5.2), :class:`MedianKDTree` (the median tree as a kd-tree split by depth, as DFKI
+  uses in its k-means tree's leaves: median-sample nodes, greedy or beam descent), :func:`select_beam` (the
+  beam an evaluation budget allows, reported beside the fixed verdict beam),
   :func:`brute_force`, :func:`random_search`, :class:`KeyFramePositionIndex` (exact search
   and batch objectives on precomputed key-frame poses); ``search_many`` of the trees and
   :func:`random_search_many` answer many queries in lockstep (Fig. 4.12).
