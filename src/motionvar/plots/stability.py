@@ -9,7 +9,7 @@ import pandas as pd
 from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 
-from ..report.stability import seed_names
+from ..report.counts import seed_names
 from ..report.summary import VERDICT_COLOURS
 
 _EDGE = {

@@ -15,14 +15,19 @@ from ..claims import CHECKED_VERDICTS, EVIDENCE_KINDS, KINDS, UNDECIDED_VERDICTS
 UNSTABLE = "unstable"
 #: the columns of :func:`kind_counts`, in the order they are shown
 COUNT_COLUMNS = (*CHECKED_VERDICTS, UNSTABLE, *UNDECIDED_VERDICTS)
-STABLE_SHARE = 0.8
+STABLE_SHARE = 0.8  # 4 of 5 seeds
+
+
+def seed_names(stability: pd.DataFrame) -> list[str]:
+    """The seeds of a :func:`motionvar.report.stability.claims_stability` table, in column order."""
+    return [c[len("verdict_") :] for c in stability.columns if c.startswith("verdict_")]
 
 
 def seed_agreement(table: pd.DataFrame, stability: pd.DataFrame, dataset: str) -> pd.DataFrame:
     """Per claim of ``table`` (one run's merged claims, the run on ``dataset``): ``n_agree``, how
     many seeds of ``stability`` give this run's verdict, and ``n_seeds``; a claim the stability run
     lacks gets 0 of 0."""
-    seeds = [c[len("verdict_") :] for c in stability.columns if c.startswith("verdict_")]
+    seeds = seed_names(stability)
     if dataset not in seeds:
         raise ValueError(f"the stability run's seeds {seeds} do not include dataset {dataset!r}")
     per_seed = stability.set_index("claim_id")[[f"verdict_{s}" for s in seeds]]

@@ -11,8 +11,7 @@ from collections.abc import Mapping
 import pandas as pd
 
 from ..claims import CHECKED_VERDICTS, UNDECIDED_VERDICTS
-from .counts import UNSTABLE, counts_text, kind_counts, seed_agreement, shown_verdicts
-from .stability import seed_names
+from .counts import UNSTABLE, counts_text, kind_counts, seed_agreement, seed_names, shown_verdicts
 
 PAPER_TITLES = {"ma2010": "Ma et al. 2010", "du2022": "Du 2022", "egges2004": "Egges et al. 2004"}
 

@@ -20,8 +20,9 @@ import numpy as np
 import pandas as pd
 from scipy import stats
 
+from .counts import STABLE_SHARE, seed_names
+
 MISSING = "missing"
-STABLE_SHARE = 0.8  # 4 of 5 seeds
 #: columns of the stability table before the per-seed verdict and value columns
 STABILITY_COLUMNS = (
     "claim_id",
@@ -113,11 +114,6 @@ def claims_stability(tables: Mapping[str, pd.DataFrame], stable_share: float = S
         row.update({f"value_{s}": v for s, v in zip(seeds, values)})
         rows.append(row)
     return pd.DataFrame(rows).sort_values("claim_id", kind="stable").reset_index(drop=True)
-
-
-def seed_names(table: pd.DataFrame) -> list[str]:
-    """The seeds of a :func:`claims_stability` table, in column order."""
-    return [c[len("verdict_") :] for c in table.columns if c.startswith("verdict_")]
 
 
 def stability_html(table: pd.DataFrame, title: str = "Verdicts across seeds") -> str:
