@@ -746,12 +746,12 @@ def test_fig4_10_training_latents_and_targets(clips, dataset):
     """The training clips' latent vectors are the scores of the fit (the model keeps no data);
     other clips are refused. Each reaching target lies reach_offset_cm from a training hand
     position and within the reach bound of a natural sample's hand (inside the range)."""
-    from motionvar.du2022.graph.evaluations.fig4_10 import _reach_targets, training_latents
+    from motionvar.du2022.graph.evaluations.fig4_10 import _reach_targets
 
     pick = MotionPrimitive.fit(clips[8:], "pick_reach", OPT)
-    assert np.allclose(training_latents(pick, clips[8:]), pick.training_latent_, atol=1e-9)
+    assert np.allclose(pick.training_latents(clips[8:]), pick.training_latent_, atol=1e-9)
     with pytest.raises(ValueError, match="toy.npz: the 8 clips of pick_reach are not the ones"):
-        training_latents(pick, clips[:8], "toy.npz")
+        pick.training_latents(clips[:8], "toy.npz")
     rng = np.random.default_rng(0)
     ends = rng.normal(size=(5, 3)) * 10.0
     grid = np.stack(np.meshgrid(*[np.arange(-40.0, 41.0, 1.0)] * 3), -1).reshape(-1, 3)

@@ -188,6 +188,23 @@ def primitive_clips(
     return [m for _, m in pairs], dataset.metadata[mask].reset_index(drop=True)
 
 
+def functional_clips(
+    motions: Sequence[Motion], n_basis: int, window: int | None, clip_ids: Sequence[str], name: str
+) -> tuple[FunctionalMotions, np.ndarray]:
+    """Steps 1-2 of :meth:`MotionPrimitive.fit`: the clips warped to the median-length clip by DTW
+    (``window``) and fitted by ``n_basis`` B-splines, and (N, K, D + 1) coefficients of
+    Y'(t) = {p(t), q_1(t), ..., q_m(t), f(t)}, the warping function f(t) (source frame per
+    canonical frame) on the same basis. ``clip_ids`` name the clips in errors."""
+    ref, warps = warp_to_median(motions, window=window, clip_ids=clip_ids)
+    n_ref = motions[ref].n_frames
+    if n_ref < n_basis:
+        raise ValueError(f"primitive {name}: the canonical clip has {n_ref} frames, fewer than n_basis = {n_basis}")
+    warped = [apply_warp(m, w, clip_id=c) for m, w, c in zip(motions, warps, clip_ids)]
+    fd = FunctionalMotions.from_motions(warped, n_basis, n_frames=n_ref)
+    time_coefs = fd.basis.fit(np.stack(warps)[..., None])  # (N, K, 1): f(t) in source frames
+    return fd, np.concatenate([fd.coefs, time_coefs], axis=-1)
+
+
 def _gmm_from_arrays(weights: np.ndarray, means: np.ndarray, covariances: np.ndarray) -> GaussianMixture:
     """A fitted GaussianMixture from its parameters (for :meth:`MotionPrimitive.load`)."""
     from sklearn.mixture import GaussianMixture
@@ -269,14 +286,8 @@ class MotionPrimitive:
         if len(motions) < 3:
             raise ValueError(f"primitive {name}: need at least 3 clips to model; got {len(motions)}")
         ids = [f"{name} #{i}" for i in range(len(motions))] if clip_ids is None else list(clip_ids)
-        ref, warps = warp_to_median(motions, window=opt.dtw_window, clip_ids=ids)
-        n_ref = motions[ref].n_frames
-        if n_ref < opt.n_basis:
-            raise ValueError(
-                f"primitive {name}: the canonical clip has {n_ref} frames, fewer than n_basis = {opt.n_basis}"
-            )
-        warped = [apply_warp(m, w, clip_id=c) for m, w, c in zip(motions, warps, ids)]
-        fd = FunctionalMotions.from_motions(warped, opt.n_basis, n_frames=n_ref)
+        fd, coefs = functional_clips(motions, opt.n_basis, opt.dtw_window, ids, name)
+        n_ref = fd.n_frames
         n = int(min(opt.n_components, len(motions) - 1, fd.coefs.shape[1] * fd.coefs.shape[2]))
         sfpca = SFPCA(
             n_components=n,
@@ -284,8 +295,6 @@ class MotionPrimitive:
             weight_groups=opt.sfpca_weight_groups,
             n_eval_frames=opt.sfpca_eval_frames,
         ).fit(fd)
-        time_coefs = fd.basis.fit(np.stack(warps)[..., None])  # (N, K, 1): f(t) in source frames
-        coefs = np.concatenate([fd.coefs, time_coefs], axis=-1)  # Y'(t)
         w_sp = sfpca.function_weights_
         gram_sqrt, _ = fd.basis.gram_sqrt()
         centred = np.einsum("kl,nld->nkd", gram_sqrt, coefs - coefs.mean(axis=0))
@@ -322,6 +331,28 @@ class MotionPrimitive:
     @property
     def n_latent(self) -> int:
         return self.components_.shape[0]
+
+    def training_latents(self, motions: Sequence[Motion], source: str = "dataset") -> np.ndarray:
+        """(N, d) latent vectors of the clips this primitive was fitted to, recomputed from them
+        (steps 1-3 of :meth:`fit` with the model's mean, weights and principal axes): the model
+        keeps no data (Sec. 4.6.1). ValueError naming ``source`` when the clips are not the
+        model's (their canonical length differs, or their scores are not centred)."""
+        ids = [f"{source}: {self.name} #{i}" for i in range(len(motions))]
+        fd, coefs = functional_clips(motions, self.basis.n_basis, self.options.dtw_window, ids, self.name)
+        if fd.n_frames != self.n_frames:
+            raise ValueError(
+                f"{source}: the {len(motions)} clips of {self.name} are not the ones its model was fitted to "
+                f"(median-length clip {fd.n_frames} frames, the model's canonical timeline {self.n_frames})"
+            )
+        gram_sqrt, _ = self.basis.gram_sqrt()
+        scaled = np.einsum("kl,nld->nkd", gram_sqrt, coefs - self.mean_) * self.weights_
+        latent = scaled.reshape(len(coefs), -1) @ self.components_.T
+        if np.abs(latent.mean(axis=0)).max() > 1e-6 * max(float(latent.std()), 1.0):
+            raise ValueError(
+                f"{source}: the {len(motions)} clips of {self.name} are not the ones its model was fitted to "
+                "(their latent scores are not centred on the model's mean)"
+            )
+        return latent
 
     @property
     def n_spatial(self) -> int:

@@ -15,7 +15,7 @@ log-likelihood.
 
 from __future__ import annotations
 
-from collections.abc import Mapping, Sequence
+from collections.abc import Mapping
 from typing import Any
 
 import numpy as np
@@ -24,11 +24,8 @@ from scipy.spatial import cKDTree
 
 from ....claims import EvaluationResult, judge_claims
 from ....core.joint_map import JointMap
-from ....core.motion import Motion
 from ....io.dataset import MotionDataset
-from ....prep import apply_warp, warp_to_median
 from ...claims import CLAIMS, FIG4_10_NATURAL_PERCENTILE, FIG4_10_REACH_CLOSE_CM
-from ...fda import FunctionalMotions
 from ..constraints import Constraint
 from ..morphable_graph import MorphableGraph, Path2D, concatenate_steps, follow_path, synthesize_step
 from ..primitive import MotionPrimitive, primitive_clips
@@ -196,33 +193,6 @@ def _path_walks(
     return steps, rows, figure, summary, variants
 
 
-def training_latents(model: MotionPrimitive, motions: Sequence[Motion], source: str = "dataset") -> np.ndarray:
-    """(N, d) latent vectors of the clips ``model`` was fitted to (steps 1-3 of
-    :meth:`MotionPrimitive.fit`: DTW to their median-length clip, B-splines of the warped clips
-    and of the warping functions, the SFPCA weights and principal axes): the model keeps no
-    data (Sec. 4.6.1). ValueError naming ``source`` when the clips are not the model's (their
-    canonical length differs, or their scores are not centred)."""
-    ref, warps = warp_to_median(motions, window=model.options.dtw_window)
-    n_ref = motions[ref].n_frames
-    if n_ref != model.n_frames:
-        raise ValueError(
-            f"{source}: the {len(motions)} clips of {model.name} are not the ones its model was fitted to "
-            f"(median-length clip {n_ref} frames, the model's canonical timeline {model.n_frames})"
-        )
-    warped = [apply_warp(m, w) for m, w in zip(motions, warps)]
-    fd = FunctionalMotions.from_motions(warped, model.basis.n_basis, n_frames=n_ref, degree=model.basis.degree)
-    coefs = np.concatenate([fd.coefs, fd.basis.fit(np.stack(warps)[..., None])], axis=-1)
-    gram_sqrt, _ = model.basis.gram_sqrt()
-    scaled = np.einsum("kl,nld->nkd", gram_sqrt, coefs - model.mean_) * model.weights_
-    latent = scaled.reshape(len(coefs), -1) @ model.components_.T
-    if np.abs(latent.mean(axis=0)).max() > 1e-6 * max(float(latent.std()), 1.0):
-        raise ValueError(
-            f"{source}: the {len(motions)} clips of {model.name} are not the ones its model was fitted to "
-            "(their latent scores are not centred on the model's mean)"
-        )
-    return latent
-
-
 def _reach_targets(
     hand_ends: np.ndarray, range_ends: np.ndarray, st: SynthesisSettings, rng: np.random.Generator
 ) -> tuple[np.ndarray, int]:
@@ -255,7 +225,7 @@ def _reaches(
     hand = semantic_index(joint_map, reach.skeleton, REACH_JOINT, "graph.synthesis (reach joint)")
     clips, _ = primitive_clips(dataset, st.reach_primitive, source)
     hand_ends = np.stack([c.positions()[-1, hand] for c in clips])
-    train_lp = reach.log_prob(training_latents(reach, clips, source))
+    train_lp = reach.log_prob(reach.training_latents(clips, source))
     samples = reach.sample(st.reach_range_samples, rng)
     sample_lp = reach.log_prob(samples)
     natural = float(np.percentile(sample_lp, FIG4_10_NATURAL_PERCENTILE))
