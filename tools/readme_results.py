@@ -45,11 +45,20 @@ def replace_between(path: Path, start: str, end: str, body: str) -> None:
 
 
 def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--main", default="synthetic")
-    parser.add_argument("--others", nargs="*", default=["xia", "bandai_ds1", "dfki_markerless"])
-    parser.add_argument("--stability", default="results/stability_full/claims_stability.csv")
-    parser.add_argument("--note", default="")
+    parser = argparse.ArgumentParser(description=" ".join(__doc__.split("\n\n")[0].split()))
+    parser.add_argument("--main", default="synthetic", help="the dataset whose claims README counts")
+    parser.add_argument(
+        "--others",
+        nargs="*",
+        default=["xia", "bandai_ds1", "dfki_markerless"],
+        help="further datasets listed in docs/results.md",
+    )
+    parser.add_argument(
+        "--stability",
+        default="results/stability_full/claims_stability.csv",
+        help="the five-seed claims_stability table (relative to the repository)",
+    )
+    parser.add_argument("--note", default="", help="what the runs were (configs, commit), printed above the counts")
     args = parser.parse_args()
     main_claims = read(args.main)
     if main_claims is None:
