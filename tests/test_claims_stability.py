@@ -102,3 +102,30 @@ def test_page_and_figure(five):
     assert "not stable" in page and "3/5" in page
     fig = stability_figure(t)
     assert len(fig.axes) == 3  # the claims that carry a value
+
+
+def test_a_bound_measured_per_seed_is_kept_per_seed(five):
+    """A bound measured on each seed's data (a recorded reference) is kept per seed; the figure
+    draws each seed's bound beside its dot instead of one line, and the unstable claims' table
+    gives it in each seed's cell."""
+    from motionvar.report.counts import seed_bounds
+    from motionvar.report.results_markdown import unstable_markdown
+
+    for k, t in five.items():
+        t.loc[t["claim_id"] == "ma2010.b", "bound"] = str(1.0 + 0.1 * int(k[1:]))
+    st = claims_stability(five)
+    rows = st.set_index("claim_id")
+    assert [rows.loc["ma2010.b", f"bound_s{k}"] for k in range(5)] == pytest.approx([1.0, 1.1, 1.2, 1.3, 1.4])
+    assert rows.loc["ma2010.b", "bound"] == 1.0  # the first seed's
+    seeds = [f"s{k}" for k in range(5)]
+    assert seed_bounds(rows.loc["ma2010.b"], seeds) == pytest.approx([1.0, 1.1, 1.2, 1.3, 1.4])
+    assert seed_bounds(rows.loc["ma2010.a"], seeds) is None  # one bound for all
+    fig = stability_figure(st)
+    b_axis = fig.axes[[i for i, r in enumerate(st.dropna(subset=["value_mean"]).claim_id) if r == "ma2010.b"][0]]
+    ticks = [ln for ln in b_axis.lines if ln.get_color() == "tab:red"]
+    assert sorted(ln.get_xdata()[0] for ln in ticks) == pytest.approx([1.0, 1.1, 1.2, 1.3, 1.4])
+    assert "&lt;= measured per seed" in stability_html(st) and "1.1 (&lt;= 1.1)" in stability_html(st)
+    md = unstable_markdown(st, ["ma2010.b"])
+    assert (
+        "| `ma2010.b` | replication | <= measured per seed cm | 1 reproduced (<= 1) | 1.1 reproduced (<= 1.1) |" in md
+    )

@@ -122,10 +122,14 @@ def test_fig3_step_phases_and_key_frames(tmp_path):
     result = fig3_keyframes(data, JM, TOY.replace(fig3_max_clips=1))
     assert set(result.table["behaviour"]) == {"walk"} and set(result.figure["shown"]) == {"walk"}
     assert set(result.table["extremum"]) == {"max", "min"} and (result.table["part"] == "lower").all()
-    # no run clips: no run claim (nothing to judge), and the walk's claim judged on its own scan
-    assert [c.claim_id for c in result.claims] == ["ma2010.fig3.walk_keyframes_at_one_gait_phase"]
+    # no run clips: the run claim is not applicable, and the walk's claim judged on its own scan
+    claims = {c.claim_id: c for c in result.claims}
+    run = claims.pop("ma2010.fig3.run_keyframes_at_one_gait_phase")
+    assert run.verdict == "not applicable" and run.note == "no run clips in the dataset"
+    assert list(claims) == ["ma2010.fig3.walk_keyframes_at_one_gait_phase"]
+    assert claims["ma2010.fig3.walk_keyframes_at_one_gait_phase"].verdict != "not applicable"
     assert set(result.measurements["behaviours"]) == {"walk"} and result.measurements["max_clips"] == 1
-    check(result, figures.draw_fig3, "fig3.walk_keyframes")
+    check(result, figures.draw_fig3, "fig3.")
 
 
 def test_fig6_leave_one_out(walks):

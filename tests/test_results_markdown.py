@@ -52,6 +52,11 @@ def test_a_verdict_that_fewer_than_four_of_five_seeds_give_is_unstable():
     md = results_markdown(MAIN, "s0", None, "", stability)
     assert "| Ma et al. 2010 | replication | 1 | 0 reproduced, 0 partial, 0 not reproduced, 1 unstable |" in md
     assert "| unstable (reproduced) | 3/5 | 1.1 [0.904, 1.3] cm |" in md
+    assert "Unstable claims (1 of 4), per seed: value and verdict." in md
+    assert (
+        "| `ma2010.a` | replication | 1.2 cm | 0.9 reproduced | 1 reproduced | 1.1 reproduced | 1.2 partial | 1.3 partial |"
+        in md
+    )
     assert "| Ma et al. 2010 | stand-in | 1 | 0 reproduced, 1 partial, 0 not reproduced |" in md
 
 
@@ -67,3 +72,14 @@ def test_seeds_of_another_configuration_are_counted_apart():
     assert "Across the 5 seeds (ci_s0, ci_s1, ci_s2, ci_s3, ci_s4)" in md
     assert "| Ma et al. 2010 | stand-in | 1 | 0 reproduced, 0 partial, 0 not reproduced, 1 unstable |" in md
     assert "| partial | partial 3/5 |" in md and "seeds: verdict, agreeing" in md
+    assert "Unstable claims (1 of 4), per seed: value and verdict." in md and "| `ma2010.b` | stand-in |" in md
+
+
+def test_a_run_whose_verdict_the_other_seeds_do_not_give_is_listed_unstable():
+    """Four seeds agree with one another, not with this run: its verdict is unstable (1 of 5)."""
+    seeds = {f"s{i}": MAIN.astype(str) for i in range(5)}
+    seeds["s0"] = seeds["s0"].assign(verdict=lambda t: t["verdict"].where(t.claim_id != "du2022.b", "not reproduced"))
+    main = MAIN.assign(verdict=lambda t: t["verdict"].where(t.claim_id != "du2022.b", "not reproduced"))
+    md = results_markdown(main, "s0", None, "", claims_stability(seeds))
+    assert "| Du 2022 | replication | 1 | 0 reproduced, 0 partial, 0 not reproduced, 1 unstable |" in md
+    assert "Unstable claims (1 of 4)" in md and "| `du2022.b` | replication |" in md

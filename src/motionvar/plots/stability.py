@@ -9,7 +9,7 @@ import pandas as pd
 from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 
-from ..report.counts import seed_names
+from ..report.counts import seed_bounds, seed_names
 from ..report.summary import VERDICT_COLOURS
 
 _EDGE = {
@@ -25,7 +25,8 @@ _EDGE = {
 def stability_figure(table: pd.DataFrame) -> Figure:
     """One small panel per claim that carries a value (each on its own scale: units
     differ): the seeds' values as dots coloured by their verdict, the mean with its 95 %
-    interval as a bar, the bound as a red dashed line; the claim id and whether it is
+    interval as a bar, the bound as a red dashed line (a red tick beside each seed's dot where
+    the bound is measured on the data and differs between seeds); the claim id and whether it is
     stable at the left. Claims without values are listed in the title count."""
     seeds = seed_names(table)
     rows = table[np.isfinite(table["value_mean"].astype(float))].reset_index(drop=True)
@@ -47,9 +48,14 @@ def stability_figure(table: pd.DataFrame) -> Figure:
         if np.isfinite(r["value_ci_low"]):
             ax.plot([r["value_ci_low"], r["value_ci_high"]], [0.45, 0.45], color="0.3", lw=2)
         ax.plot([r["value_mean"]], [0.45], marker="|", color="0.1", ms=8)
-        if np.isfinite(r["bound"]):
+        per_seed = seed_bounds(r, seeds)
+        if per_seed is not None:  # each seed's own bound, beside its dot
+            for b, y in zip(per_seed, jitter):
+                ax.plot([b, b], [y - 0.12, y + 0.12], color="tab:red", lw=1.2)
+        elif np.isfinite(r["bound"]):
             ax.axvline(r["bound"], color="tab:red", ls="--", lw=1)
-        extent = np.append(vals, [r["bound"], r["value_ci_low"], r["value_ci_high"]])
+        bounds = per_seed if per_seed is not None else [r["bound"]]
+        extent = np.concatenate([vals, bounds, [r["value_ci_low"], r["value_ci_high"]]])
         lo, hi = np.nanmin(extent), np.nanmax(extent)
         pad = 0.08 * (hi - lo) if hi > lo else max(abs(hi), 1.0) * 0.1
         ax.set_xlim(lo - pad, hi + pad)
@@ -80,9 +86,10 @@ def stability_figure(table: pd.DataFrame) -> Figure:
     ]
     handles += [
         Line2D([], [], color="tab:red", ls="--", label="bound"),
+        Line2D([], [], color="tab:red", marker="|", ls="", ms=8, label="bound of that seed (measured)"),
         Line2D([], [], color="0.3", lw=2, label="mean, 95 % interval"),
     ]
-    fig.legend(handles=handles, loc="upper center", ncol=6, fontsize=7, frameon=False, bbox_to_anchor=(0.5, 1.0))
+    fig.legend(handles=handles, loc="upper center", ncol=7, fontsize=7, frameon=False, bbox_to_anchor=(0.5, 1.0))
     fig.suptitle(
         f"Claim values across {len(seeds)} seeds ({len(rows)} of {len(table)} claims carry a value)",
         fontsize=9,

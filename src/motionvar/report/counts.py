@@ -7,7 +7,9 @@ the seeds share is counted as ``unstable`` instead."""
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping, Sequence
 
+import numpy as np
 import pandas as pd
 
 from ..claims import CHECKED_VERDICTS, EVIDENCE_KINDS, KINDS, UNDECIDED_VERDICTS
@@ -21,6 +23,16 @@ STABLE_SHARE = 0.8  # 4 of 5 seeds
 def seed_names(stability: pd.DataFrame) -> list[str]:
     """The seeds of a :func:`motionvar.report.stability.claims_stability` table, in column order."""
     return [c[len("verdict_") :] for c in stability.columns if c.startswith("verdict_")]
+
+
+def seed_bounds(row: Mapping, seeds: Sequence[str]) -> np.ndarray | None:
+    """(S,) the bound of each seed of a stability-table row where the seeds' bounds differ (a bound
+    measured on the data, e.g. a recorded reference); None where they share one."""
+    bounds = np.array([float(row.get(f"bound_{s}", np.nan)) for s in seeds])
+    finite = bounds[np.isfinite(bounds)]
+    if len(finite) < 2 or np.all(finite == finite[0]):
+        return None
+    return bounds
 
 
 def seed_agreement(table: pd.DataFrame, stability: pd.DataFrame, dataset: str) -> pd.DataFrame:

@@ -1,17 +1,17 @@
 """docs/results.md and README's Results counts (tools/readme_results.py) from merged claims tables:
 per paper and kind of evidence, the verdict counts (``unstable`` where a stability run's seeds do not
-share the verdict); per paper one line per claim (source, kind, verdict, how many seeds give it, the
+share the verdict) and the unstable claims' value and verdict per seed; per paper one line per claim (source, kind, verdict, how many seeds give it, the
 value's interval over the seeds, the measured value); per further dataset, one line of counts."""
 
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 
 import pandas as pd
 
 from ..claims import CHECKED_VERDICTS, UNDECIDED_VERDICTS
-from .counts import UNSTABLE, counts_text, kind_counts, seed_agreement, seed_names, shown_verdicts
+from .counts import UNSTABLE, counts_text, kind_counts, seed_agreement, seed_bounds, seed_names, shown_verdicts
 
 PAPER_TITLES = {"ma2010": "Ma et al. 2010", "du2022": "Du 2022", "egges2004": "Egges et al. 2004"}
 
@@ -91,6 +91,34 @@ def paper_results(
     return "\n".join(lines) + "\n"
 
 
+def unstable_markdown(stability: pd.DataFrame, claim_ids: Sequence[str]) -> str:
+    """The unstable claims ``claim_ids`` of the seeds of ``stability``: per seed, the value and
+    the verdict (empty without any)."""
+    rows = stability.set_index("claim_id").reindex([c for c in claim_ids if c in set(stability["claim_id"])])
+    if rows.empty:
+        return ""
+    seeds = seed_names(stability)
+    lines = [
+        f"Unstable claims ({len(rows)} of {len(stability)}), per seed: value and verdict.",
+        "",
+        "| claim | kind | bound | " + " | ".join(seeds) + " |",
+        "|---|---|---|" + "---|" * len(seeds),
+    ]
+    for claim_id, r in rows.iterrows():
+        values = [float(r[f"value_{s}"]) for s in seeds]
+        cells = [
+            f"{v:.3g} {r[f'verdict_{s}']}" if math.isfinite(v) else r[f"verdict_{s}"] for v, s in zip(values, seeds)
+        ]
+        direction, unit = (r[c] if isinstance(r[c], str) else "" for c in ("direction", "unit"))  # CSV: NaN for ""
+        per_seed = seed_bounds(r, seeds)
+        if per_seed is not None:  # a bound measured on each seed's data
+            cells = [f"{c} ({direction} {b:.3g})".replace("( ", "(") for c, b in zip(cells, per_seed)]
+        bound = "measured per seed" if per_seed is not None else f"{float(r['bound']):.4g}"
+        bound = f"{direction} {bound} {unit}".strip()
+        lines.append(f"| `{claim_id}` | {r['kind']} | {_cell(bound)} | " + " | ".join(cells) + " |")
+    return "\n".join(lines) + "\n"
+
+
 def readme_counts(main: pd.DataFrame, main_name: str, stability: pd.DataFrame | None = None) -> str:
     """The counts of README's Results: ``main`` per paper and kind, ``unstable`` where the seeds of
     ``stability`` (``main_name`` among them) do not share a verdict."""
@@ -149,6 +177,14 @@ def results_markdown(
     ]
     if stability is not None and not same_run:
         parts += [seeds_counts(stability)]
+    if stability is not None:
+        # this run's verdict shared by fewer than 4 of 5 seeds, or (seeds of another configuration) no verdict that is
+        unstable = (
+            main["claim_id"][(shown == UNSTABLE).to_numpy()]
+            if same_run
+            else stability["claim_id"][~stability["stable"].astype(bool)]
+        )
+        parts += [unstable_markdown(stability, list(unstable))] if len(unstable) else []
     for paper, title in PAPER_TITLES.items():
         parts += [f"### {title}", "", paper_results(main, paper, shown, agreement, stability, same_run)]
     if others:

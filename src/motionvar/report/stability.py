@@ -20,7 +20,7 @@ import numpy as np
 import pandas as pd
 from scipy import stats
 
-from .counts import STABLE_SHARE, seed_names
+from .counts import STABLE_SHARE, seed_bounds, seed_names
 
 MISSING = "missing"
 #: columns of the stability table before the per-seed verdict and value columns
@@ -63,8 +63,9 @@ def _mean_interval(values: np.ndarray, level: float = 0.95) -> tuple[float, floa
 
 def claims_stability(tables: Mapping[str, pd.DataFrame], stable_share: float = STABLE_SHARE) -> pd.DataFrame:
     """One row per claim seen in any of ``tables`` (seed name -> merged claims table): the
-    columns of :data:`STABILITY_COLUMNS`, then ``verdict_<seed>`` and ``value_<seed>`` per
-    seed in the order given. ``verdict`` is the most common verdict (ties: the first seed's
+    columns of :data:`STABILITY_COLUMNS`, then ``verdict_<seed>``, ``value_<seed>`` and
+    ``bound_<seed>`` per seed in the order given (``bound`` is the first seed's; a bound measured
+    on the data, such as a recorded reference, differs between seeds). ``verdict`` is the most common verdict (ties: the first seed's
     order), ``stable`` whether at least ``stable_share`` of the seeds give it."""
     if not tables:
         raise ValueError("claims_stability: no claims tables")
@@ -91,7 +92,8 @@ def claims_stability(tables: Mapping[str, pd.DataFrame], stable_share: float = S
         counts = pd.Series(verdicts).value_counts(sort=False)
         top = max(counts.index, key=lambda v: (counts[v], -verdicts.index(v)))
         mean, sd, low, high = _mean_interval(values)
-        bounds = [float(r["bound"]) for r in present if np.isfinite(r["bound"])]
+        seed_bounds = [indexed[s].loc[cid, "bound"] if cid in indexed[s].index else np.nan for s in seeds]
+        bounds = [float(b) for b in seed_bounds if np.isfinite(b)]
         row = {
             "claim_id": cid,
             "paper": first["paper"],
@@ -112,6 +114,7 @@ def claims_stability(tables: Mapping[str, pd.DataFrame], stable_share: float = S
         }
         row.update({f"verdict_{s}": v for s, v in zip(seeds, verdicts)})
         row.update({f"value_{s}": v for s, v in zip(seeds, values)})
+        row.update({f"bound_{s}": float(b) for s, b in zip(seeds, seed_bounds)})
         rows.append(row)
     return pd.DataFrame(rows).sort_values("claim_id", kind="stable").reset_index(drop=True)
 
@@ -151,12 +154,16 @@ def stability_html(table: pd.DataFrame, title: str = "Verdicts across seeds") ->
                 f" {unit}"
             )
         direction = r["direction"] if isinstance(r["direction"], str) else ""
+        per_seed = seed_bounds(r, seeds)
         bound = "-" if not np.isfinite(r["bound"]) else f"{esc(direction)} {r['bound']:.3g}"
+        if per_seed is not None:  # measured on each seed's data: given in each seed's cell
+            bound = f"{esc(direction)} measured per seed"
         cells = "".join(
             f"<td>{esc(str(r[f'verdict_{s}']))}"
             + (f"<br>{r[f'value_{s}']:.3g}" if np.isfinite(r[f"value_{s}"]) else "")
+            + (f" ({esc(direction)} {b:.3g})" if per_seed is not None and np.isfinite(b) else "")
             + "</td>"
-            for s in seeds
+            for s, b in zip(seeds, per_seed if per_seed is not None else [np.nan] * len(seeds))
         )
         parts.append(
             f"<tr><td>{esc(r['source'])}<br><small>{esc(r['claim_id'])}</small></td>"

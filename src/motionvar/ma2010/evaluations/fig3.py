@@ -15,7 +15,7 @@ from ...core.joint_map import JointMap
 from ...core.motion import Motion
 from ...prep.contacts import detect_foot_contacts
 from ...prep.intervals import parse_intervals
-from ..claims import CLAIMS, fig3_claim_id
+from ..claims import CLAIMS
 from ..examples import extract_cycles, rows_matching
 from ..settings import Ma2010Settings
 
@@ -143,9 +143,9 @@ def fig3_keyframes(dataset, joint_map: JointMap, settings: Ma2010Settings, what:
     and per behaviour a claim on the circular SD of the maxima's phase within the step over
     its first ``settings.fig3_max_clips`` clips (0: all), reproduced at most
     ``settings.fig3_phase_sd`` (measurements: :func:`behaviour_measurements` per behaviour).
-    ``what`` names the metadata in errors. A behaviour without clips has no claim; one whose
-    clips hold no maximum between two foot strikes gets its claim with verdict ``not
-    applicable`` and the reason. Figure: ``shown`` (behaviour -> clip id, motion, its
+    ``what`` names the metadata in errors. A behaviour without clips, or whose clips hold no
+    maximum between two foot strikes, gets its claim with verdict ``not applicable`` and the
+    reason. Figure: ``shown`` (behaviour -> clip id, motion, its
     :class:`CycleExtraction`, foot strikes) and ``strike_source`` (behaviour -> "ground
     truth" or "detected": the shown clip's strikes)."""
     meta = dataset.metadata
@@ -164,7 +164,6 @@ def fig3_keyframes(dataset, joint_map: JointMap, settings: Ma2010Settings, what:
         "phase_sd_bound": settings.fig3_phase_sd,
         "max_clips": settings.fig3_max_clips,
     }
-    present = {fig3_claim_id(b) for b in behaviours}
-    claims = [c for c in judge_claims(CLAIMS, "ma2010_fig3", measurements) if c.claim_id in present]
+    claims = judge_claims(CLAIMS, "ma2010_fig3", measurements)
     figure = {"shown": shown, "strike_source": shown_source}
     return EvaluationResult(pd.DataFrame(rows), claims, figure, measurements)
