@@ -1,7 +1,8 @@
 """docs/results.md and README's Results counts (tools/readme_results.py) from merged claims tables:
 per paper and kind of evidence, the verdict counts (``unstable`` where a stability run's seeds do not
-share the verdict) and the unstable claims' value and verdict per seed; per paper one line per claim (source, kind, verdict, how many seeds give it, the
-value's interval over the seeds, the measured value); per further dataset, one line of counts."""
+share the verdict) and the unstable claims' value and verdict per seed; per paper one line per claim
+(source, kind, verdict, how many seeds give it, the value's interval over the seeds, the measured
+value); per further dataset, one line of counts."""
 
 from __future__ import annotations
 

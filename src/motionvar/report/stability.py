@@ -65,8 +65,9 @@ def claims_stability(tables: Mapping[str, pd.DataFrame], stable_share: float = S
     """One row per claim seen in any of ``tables`` (seed name -> merged claims table): the
     columns of :data:`STABILITY_COLUMNS`, then ``verdict_<seed>``, ``value_<seed>`` and
     ``bound_<seed>`` per seed in the order given (``bound`` is the first seed's; a bound measured
-    on the data, such as a recorded reference, differs between seeds). ``verdict`` is the most common verdict (ties: the first seed's
-    order), ``stable`` whether at least ``stable_share`` of the seeds give it."""
+    on the data, such as a recorded reference, differs between seeds). ``verdict`` is the most
+    common verdict (ties: the first seed's order), ``stable`` whether at least ``stable_share``
+    of the seeds give it."""
     if not tables:
         raise ValueError("claims_stability: no claims tables")
     if not 0.0 < stable_share <= 1.0:
@@ -92,8 +93,8 @@ def claims_stability(tables: Mapping[str, pd.DataFrame], stable_share: float = S
         counts = pd.Series(verdicts).value_counts(sort=False)
         top = max(counts.index, key=lambda v: (counts[v], -verdicts.index(v)))
         mean, sd, low, high = _mean_interval(values)
-        seed_bounds = [indexed[s].loc[cid, "bound"] if cid in indexed[s].index else np.nan for s in seeds]
-        bounds = [float(b) for b in seed_bounds if np.isfinite(b)]
+        per_seed = [indexed[s].loc[cid, "bound"] if cid in indexed[s].index else np.nan for s in seeds]
+        bounds = [float(b) for b in per_seed if np.isfinite(b)]
         row = {
             "claim_id": cid,
             "paper": first["paper"],
@@ -114,7 +115,7 @@ def claims_stability(tables: Mapping[str, pd.DataFrame], stable_share: float = S
         }
         row.update({f"verdict_{s}": v for s, v in zip(seeds, verdicts)})
         row.update({f"value_{s}": v for s, v in zip(seeds, values)})
-        row.update({f"bound_{s}": float(b) for s, b in zip(seeds, seed_bounds)})
+        row.update({f"bound_{s}": float(b) for s, b in zip(seeds, per_seed)})
         rows.append(row)
     return pd.DataFrame(rows).sort_values("claim_id", kind="stable").reset_index(drop=True)
 
