@@ -409,6 +409,27 @@ def test_stride_of_a_generator_cycle_matches_its_true_strides(generator_walks):
     assert n_seen >= 12
 
 
+def test_planted_carrier_changes_the_root_only_at_a_change_of_support(toy_clips):
+    """With ``planted_carrier`` the root's step into a frame where the support passes to the other
+    foot may be carried by the other foot (cycles on the standard skeleton, where a landing foot may
+    slide); every other frame's step, and the height, are the support foot's as without it."""
+    from motionvar.ma2010.postprocess import foot_heights, support_foot
+
+    solver = root_solver(toy_clips.skeleton, JM)
+    frames = int(round(solver.min_support_s * toy_clips.fps))
+    moved = 0
+    for rot in toy_clips.rotations:  # loop over clips
+        args = (rot, toy_clips.skeleton, solver.feet, solver.planted)
+        plain = reconstruct_root(*args, min_support_frames=frames)
+        carried = reconstruct_root(*args, min_support_frames=frames, planted_carrier=True)
+        support = support_foot(foot_heights(*args)[2], frames)
+        own_step = np.r_[False, support[1:] == support[:-1]]  # frames whose support is the frame before's
+        assert np.allclose(np.diff(plain, axis=0)[own_step[1:]], np.diff(carried, axis=0)[own_step[1:]])
+        assert np.allclose(plain[:, 1], carried[:, 1])
+        moved += not np.allclose(plain, carried)
+    assert moved  # some landing foot carried a step
+
+
 def test_flight_phases_follow_the_predicted_root_height():
     m = toy_walk(n_cycles=1)
     solver = root_solver(m.skeleton, JM)

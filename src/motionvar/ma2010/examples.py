@@ -20,7 +20,7 @@ from ..metrics.stride import footfall_strides
 from ..prep.contacts import detect_foot_contacts
 from .correspondence import movement_direction, reference_key_positions, space_warp, standard_skeleton, time_warp
 from .keyframes import Cycle, KeyframeSignal, find_extrema, keyframe_signal, segment_cycles
-from .postprocess import foot_heights, support_foot
+from .postprocess import reconstruct_root
 from .representation import ClipSet, rest_hip_height
 from .settings import ROOT_GROUPS, Ma2010Settings
 from .svi import StyleVariationModel
@@ -133,28 +133,17 @@ def stride_root(rotations: np.ndarray, solver: RootSolver, fps: float) -> np.nda
     """(T, 3) root of ``rotations`` (T, J, 4) at ``fps`` on the solver's skeleton for the stride
     measure: the footskate cleanup's (Sec. 6.3, :func:`.postprocess.reconstruct_root`: the
     support foot, the lower one with the solver's minimum contact time, stays put at its lowest
-    joint), except for the step into a frame where the support passes to the other foot. The
-    cleanup lets the new support carry it, but a foot that becomes the lower one in the frame it
-    lands is still moving into it, and the root would absorb that last approach (up to 0.7 cm of
-    a stride on generator walks; on the standard skeleton a foot may slide as it lands). Here the
-    step is carried by whichever foot keeps the root's velocity closest to the frame before's:
-    the foot that is planted over the step. Walking only: no flight phases."""
-    p, joint, low = foot_heights(rotations, solver.skeleton, solver.feet, solver.planted)
-    support = support_foot(low, int(round(solver.min_support_s * fps)))
-    t = np.arange(len(rotations))
-    pinned = p[t[:, None], np.arange(2)[None, :], joint]  # (T, 2, 3): each foot's lowest joint
-    moved = np.zeros_like(pinned)
-    moved[1:] = pinned[1:] - p[t[:-1, None], np.arange(2)[None, :], joint[1:]]  # its step, relative to the root
-    carrier = support.copy()
-    switch = np.flatnonzero(support[1:] != support[:-1]) + 1
-    switch = switch[switch >= 2]
-    before = moved[switch - 1, support[switch - 1]]  # (S, 3): the root's step the frame before
-    carrier[switch] = np.argmin(np.linalg.norm((moved[switch] - before[:, None])[..., [0, 2]], axis=-1), axis=1)
-    step = np.zeros((len(t), 3))
-    step[:, [0, 2]] = -moved[t, carrier][:, [0, 2]]
-    root = np.cumsum(step, axis=0)
-    root[:, 1] = -low[t, support]
-    return root
+    joint), with the step into a frame where the support passes to the other foot carried by the
+    foot that is planted over it (``planted_carrier``; on the standard skeleton a foot may slide
+    as it lands). Walking only: no flight phases."""
+    return reconstruct_root(
+        rotations,
+        solver.skeleton,
+        solver.feet,
+        solver.planted,
+        min_support_frames=int(round(solver.min_support_s * fps)),
+        planted_carrier=True,
+    )
 
 
 def support_strides(motion: Motion, key_frames: np.ndarray, solver: RootSolver) -> np.ndarray:
