@@ -359,6 +359,7 @@ def default_outputs(dataset):
     return [
         f"results/{dataset}/prep/metadata.csv",
         f"results/{dataset}/figures/dataset_overview.png",
+        f"results/{dataset}/figures/dataset_realism.png",
         f"results/{dataset}/figures/dataset_animation.gif",
         *[p.format(dataset=dataset) for p in DATASET_MODELS],
         *evaluation_outputs(dataset),

@@ -29,6 +29,37 @@ rule dataset_overview:
         "../scripts/dataset_overview.py"
 
 
+rule dataset_realism:
+    input:
+        clips=f"{DATA}/clips.npz",
+        metadata=f"{DATA}/metadata.csv",
+        joint_map=joint_map_input,
+    output:
+        table="results/{dataset}/tables/dataset_realism.csv",
+        joints="results/{dataset}/tables/dataset_realism_joints.csv",
+        figure=in_report(
+            "results/{dataset}/figures/dataset_realism.png",
+            "data",
+            "../report/dataset_realism.rst",
+            figure="realism statistics against captured data",
+        ),
+    params:
+        prep=config["prep"],
+        settings=config.get("realism", {}),
+        joint_map=lambda wc: joint_map_path(wc.dataset),
+    log:
+        ev_log("dataset_realism"),
+    benchmark:
+        ev_benchmark("dataset_realism")
+    threads: 1
+    resources:
+        mem_mb=3000,
+    conda:
+        ENV
+    script:
+        "../scripts/dataset_realism.py"
+
+
 rule dataset_animation:
     input:
         clips=f"{DATA}/clips.npz",

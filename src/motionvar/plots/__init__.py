@@ -8,6 +8,7 @@
   (e.g. a model's output).
 - :mod:`.page`: :func:`gif_page` (an HTML page playing a GIF, for the report).
 - :mod:`.overview`: :func:`dataset_overview`, key frames per behaviour and per walk style.
+- :mod:`.realism`: :func:`realism_figure`, a dataset's realism statistics against their bands.
 """
 
 from ..core.lazy import lazy_exports
@@ -17,6 +18,7 @@ _EXPORTS = {
     ".animation": ["animate_motions", "render_frames", "write_gif"],
     ".page": ["gif_page"],
     ".overview": ["dataset_overview", "overview_clips"],
+    ".realism": ["realism_figure"],
     ".stick": [
         "KeyFrameRow",
         "draw_pose",
@@ -38,6 +40,7 @@ __all__ = [
     "evenly_spaced_frames",
     "key_frame_grid",
     "overview_clips",
+    "realism_figure",
     "plot_key_frames",
     "project",
     "render_frames",

@@ -1,0 +1,35 @@
+"""Rule dataset_realism: the dataset's realism statistics against the bands that captured
+data gives them (motionvar.realism), a table, a per-joint channel table and a figure."""
+
+
+def main(snakemake) -> None:
+    from pathlib import Path
+
+    import matplotlib.pyplot as plt
+
+    from motionvar.core import cmu_joint_map
+    from motionvar.io import load_dataset
+    from motionvar.io.joint_map_file import load_joint_map
+    from motionvar.plots import realism_figure
+    from motionvar.prep import PrepOptions
+    from motionvar.realism import RealismSettings, dataset_realism, judge
+
+    path = snakemake.params.joint_map
+    table, joints = dataset_realism(
+        load_dataset(Path(snakemake.input.clips).parent),
+        load_joint_map(path) if path else cmu_joint_map(),
+        PrepOptions.from_dict(snakemake.params.prep),
+        RealismSettings.from_dict(snakemake.params.settings),
+    )
+    table = judge(table)
+    table.to_csv(snakemake.output.table, index=False, float_format="%.6g")
+    joints.to_csv(snakemake.output.joints, index=False, float_format="%.6g")
+    fig = realism_figure(table, joints, f"Dataset '{snakemake.wildcards.dataset}': how it varies, against captured data")
+    fig.savefig(snakemake.output.figure, dpi=110)
+    plt.close(fig)
+
+
+if "snakemake" in globals():
+    from _rule import run
+
+    run(snakemake, main)  # noqa: F821
