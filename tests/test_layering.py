@@ -28,6 +28,7 @@ LEVELS = {
     "ma2010": 3,
     "du2022": 3,
     "egges2004": 3,
+    "realism": 3,  # a dataset's realism table: metrics over the preprocessing's contacts
     "cli": 4,  # the `motionvar` command: glue over the papers and shared parts; nothing imports it
     "config_sections": 4,  # config section -> settings class of each paper (rule scripts, tests)
     "claim_catalog": 4,  # every paper's claim declarations (rule scripts, report, tests)

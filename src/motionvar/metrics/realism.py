@@ -9,9 +9,10 @@ preprocessing rule, :func:`motionvar.prep.contacts.detect_foot_contacts`), its l
 Gait events of a walk (:func:`walk_events`): every contact of either foot that starts after
 the clip's first frame and ends before its last is a footfall, located at its ankle's
 footprint (the ankle's horizontal position at its lowest frame of the contact, as
-:func:`motionvar.metrics.stride.footfall_strides` locates it). The first and the last footfall
-of a clip (gait initiation and termination) are left out of every step and stride; steps
-join successive footfalls of alternating feet, strides successive footfalls of one foot.
+:func:`motionvar.metrics.stride.footfall_strides` locates it); contacts cut by the clip's ends
+are standing, not footfalls. ``trim`` more footfalls at either end can be left out (gait
+initiation and termination). Steps join successive footfalls of alternating feet, strides
+successive footfalls of one foot.
 """
 
 from __future__ import annotations
@@ -57,8 +58,9 @@ def walk_events(
     ankles: tuple[int, int],
     fps: float,
     up_axis: int = 1,
+    trim: int = 0,
 ) -> WalkEvents:
-    """The footfalls of a walk between its first and last (module docstring).
+    """The footfalls of a walk (module docstring), less ``trim`` at either end.
 
     Args:
         positions: (T, J, 3) global joint positions in cm.
@@ -77,7 +79,7 @@ def walk_events(
             low = a + int(np.argmin(positions[a:b, joint, up_axis]))
             rows.append((a, b, side, positions[low, joint, horizontal]))
     rows.sort(key=lambda r: r[0])
-    rows = rows[1:-1]  # initiation and termination
+    rows = rows[trim : len(rows) - trim]
     if not rows:
         empty = np.zeros(0, dtype=np.int64)
         return WalkEvents(empty, empty, empty, np.zeros((0, 2)), fps)

@@ -1,0 +1,201 @@
+"""The realism statistics (motionvar.metrics.realism, motionvar.realism): each measure on
+inputs whose answer is known, the generator's ground truth, and the bands' bookkeeping."""
+
+from __future__ import annotations
+
+import tempfile
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+import pytest
+import yaml
+
+from motionvar.core import cmu_joint_map
+from motionvar.core.quaternions import quat_about_axis
+from motionvar.metrics import realism as rm
+from motionvar.realism import BANDS, Band, judge
+from motionvar.realism.bands import CMU_CAPTURED_CHANNELS
+
+FPS = 100.0
+
+
+def _events(sides, footprints, starts, stance=50):
+    starts = np.asarray(starts)
+    return rm.WalkEvents(
+        side=np.asarray(sides), start=starts, stop=starts + stance, footprint=np.asarray(footprints, float), fps=FPS
+    )
+
+
+def test_walk_cycles_steps_strides_and_asymmetry():
+    # left steps 72 cm, right steps 68 cm along +x; steps every 0.55 s
+    x = np.cumsum([0, 72, 68, 72, 68, 72, 68, 72])
+    sides = [0, 1, 0, 1, 0, 1, 0, 1]  # footfall i+1 ends step i: steps end on 1, 0, 1, ...
+    ev = _events(sides, np.stack([x, np.zeros_like(x)], axis=1), 55 * np.arange(8))
+    cyc = rm.walk_cycles(ev)
+    np.testing.assert_allclose(cyc.step_length, np.diff(x))
+    np.testing.assert_allclose(cyc.stride_length, 140.0)
+    np.testing.assert_allclose(cyc.step_time, 0.55)
+    np.testing.assert_allclose(cyc.stride_time, 1.1)
+    np.testing.assert_allclose(cyc.stance_fraction, 0.5 / 1.1)
+    assert rm.step_asymmetry(cyc) == pytest.approx(4.0)
+    assert rm.coefficient_of_variation(cyc.stride_length) == pytest.approx(0.0)
+
+
+def test_walk_cycles_skip_a_missed_contact():
+    # two left footfalls in a row (a right contact missed): no step and no stride across it
+    ev = _events([0, 1, 0, 0, 1, 0], [[0, 0], [70, 0], [140, 0], [280, 0], [350, 0], [420, 0]], 55 * np.arange(6))
+    cyc = rm.walk_cycles(ev)
+    assert len(cyc.step_length) == 4
+    np.testing.assert_allclose(cyc.stride_length, [140.0, 140.0])
+
+
+def test_coefficient_of_variation():
+    assert rm.coefficient_of_variation([100.0, 110.0, 90.0]) == pytest.approx(0.1)
+    assert np.isnan(rm.coefficient_of_variation([100.0, 110.0]))
+
+
+def test_toe_clearance_at_mid_swing():
+    t = np.arange(100)
+    contact = (t < 30) | (t >= 70)
+    height = np.where(contact, 2.0, 2.0 + 1.5 + 5.0 * np.sin(np.pi * (t - 30) / 40) ** 2)
+    height[50] = 2.0 + 1.2  # the minimum, at mid-swing
+    np.testing.assert_allclose(rm.toe_clearance(height, contact), [1.2])
+
+
+def test_high_frequency_rms_sees_noise_not_motion():
+    t = np.arange(0, 10, 1 / FPS)
+    slow = np.zeros((len(t), 2, 3))
+    slow[:, 1, 0] = 20.0 * np.sin(2 * np.pi * 1.0 * t)  # a 1 Hz swing of 20 cm
+    noisy = slow.copy()
+    noisy[:, 1, 1] = 0.1 * np.sin(2 * np.pi * 11.0 * t)  # 1 mm at 11 Hz
+    assert rm.high_frequency_rms(slow, FPS, (8.0, 14.0)) < 1e-3
+    # one of six coordinates carries amplitude 0.1: RMS 0.1 / sqrt(2) / sqrt(6)
+    assert rm.high_frequency_rms(noisy, FPS, (8.0, 14.0)) == pytest.approx(0.1 / np.sqrt(12), rel=0.05)
+
+
+def test_rotation_channel_sd():
+    T = 2000
+    angle = np.radians(np.random.default_rng(0).normal(0.0, 3.0, T))
+    q = np.zeros((T, 2, 4))
+    q[:, 0] = quat_about_axis([1.0, 0.0, 0.0], angle)
+    q[:, 1] = [1.0, 0.0, 0.0, 0.0]
+    sd = rm.rotation_channel_sd(q)
+    assert sd[0, 0] == pytest.approx(3.0, rel=0.05)
+    assert sd[0, 1:].max() < 1e-6 and sd[1].max() < 1e-6
+    np.testing.assert_array_equal(rm.channel_classes(sd[0], 1e-3, 0.5), ["moving", "static", "static"])
+
+
+def test_speed_peaks_and_path_ratio():
+    t = np.linspace(0, 1, 200)
+    bell = np.exp(-(((t - 0.4) / 0.1) ** 2))
+    corrected = bell + 0.3 * np.exp(-(((t - 0.8) / 0.05) ** 2))
+    assert rm.speed_peaks(bell, 0.1) == 1
+    assert rm.speed_peaks(corrected, 0.1) == 2
+    line = np.stack([t, 0 * t, 0 * t], axis=1)
+    arc = np.stack([np.sin(np.pi * t / 2), 1 - np.cos(np.pi * t / 2), 0 * t], axis=1)
+    assert rm.path_ratio(line) == pytest.approx(1.0)
+    assert rm.path_ratio(arc) == pytest.approx((np.pi / 2) / np.sqrt(2), rel=1e-3)
+
+
+def test_within_between_ratio():
+    rng = np.random.default_rng(1)
+    groups = np.repeat(np.arange(400), 5)
+    subject = rng.normal(0.0, 10.0, 400)[groups]
+    values = subject + rng.normal(0.0, 2.0, len(groups))
+    assert rm.within_between_ratio(values, groups) == pytest.approx(0.2, abs=0.03)
+    assert np.isnan(rm.within_between_ratio(values, np.zeros(len(values))))  # one group
+
+
+def test_band_rules_and_judge():
+    assert Band("factor2", "x", {"a": 2.0, "b": 4.0}).limits == (1.0, 8.0)
+    assert Band("share", "x", {"a": 0.05, "b": 0.5}).limits == pytest.approx((0.0, 0.6))
+    assert Band("literature", "x", lo=0.1, hi=0.9).limits == (0.1, 0.9)
+    with pytest.raises(ValueError):
+        Band("factor2", "x")
+    table = pd.DataFrame(
+        {
+            "statistic": ["stride_cv_pct", "stride_cv_pct", "strides"],
+            "behaviour": ["walk"] * 3,
+            "value": [0.0, 2.0, 9.0],
+        }
+    )
+    judged = judge(table)
+    assert judged["in_band"].tolist()[:2] == [False, True]
+    assert pd.isna(judged["in_band"].iloc[2])  # no band
+
+
+def test_every_band_has_a_source_and_a_statistic_of_the_table():
+    from motionvar.realism.table import _walk_rows, _WalkStats
+
+    walk_stats = {row[0] for row in _walk_rows(_WalkStats())}
+    channels = {f"channels_{c}_share" for c in ("static", "near_static", "moving")}
+    cmu = {"cmu_captured_moving_kept_share", "cmu_captured_static_kept_share"}
+    spread = {"stride_within_between", "posture_within_between"}
+    reach = {"reach_multi_peak_share", "reach_path_ratio"}
+    known = walk_stats | channels | cmu | spread | reach
+    for (stat, _), band in BANDS.items():
+        assert stat in known and band.source
+    assert set(CMU_CAPTURED_CHANNELS) == set(cmu_joint_map_names())
+
+
+def cmu_joint_map_names():
+    from motionvar.core.skeleton import cmu_skeleton
+
+    return cmu_skeleton().names[1:]
+
+
+def test_measures_on_generator_ground_truth():
+    """A generated walk: the footfalls found from detected contacts are the generator's heel
+    strikes, their strides its footprints' (stride_length_cm, the plan's truth)."""
+    from motionvar.prep.contacts import detect_foot_contacts
+    from motionvar.synth import SynthSpec, generate_dataset
+
+    spec = SynthSpec(
+        subjects=1, walks_per_style=1, turning_walks=0, runs=0, sidesteps=0, picks=0, places=0, idle_clips=0
+    )
+    motions, meta = generate_dataset(spec)
+    jm = cmu_joint_map()
+    for motion, (_, row) in zip(motions, meta.iterrows()):
+        pos = motion.positions()
+        contacts = detect_foot_contacts(motion, jm, None, pos)
+        ankles = tuple(int(i) for i in jm.indices(motion.skeleton, ["left_ankle", "right_ankle"]))
+        cyc = rm.walk_cycles(rm.walk_events(pos, (contacts.left, contacts.right), ankles, motion.fps))
+        assert len(cyc.stride_length) >= 2, row["clip_id"]
+        assert np.mean(cyc.stride_length) == pytest.approx(row["stride_length_cm"], rel=0.01), row["clip_id"]
+        toes = jm.indices(motion.skeleton, ["left_toe", "right_toe"])
+        clear = rm.toe_clearance(pos[:, toes[0], 1], contacts.left)
+        assert clear.min() > 0.5, row["clip_id"]  # the generator's toe clears the floor in every swing
+
+
+ROOT = Path(__file__).resolve().parents[1]
+REAL = ROOT.parent / "shared" / "data" / "real"
+
+
+def _real_table(name: str) -> pd.DataFrame:
+    """The realism table of a shared real set, imported as its config/real file says and
+    packed as the data rule packs it (float32 rotations)."""
+    from motionvar.io import import_bvh_folder, load_dataset, load_joint_map, save_dataset
+    from motionvar.realism import dataset_realism
+
+    entry = yaml.safe_load((ROOT / "config" / "real" / f"{name}.yaml").read_text())["datasets"][name]
+    jm = load_joint_map(ROOT / entry["joint_map"]) if entry.get("joint_map") else cmu_joint_map()
+    keys = ("drop_first_frame", "behaviour_aliases", "style_aliases", "neutral_style", "primitive_labels")
+    motions, meta = import_bvh_folder(
+        REAL / name, entry["labels"], entry["unit_cm"], joint_map=jm, **{k: entry[k] for k in keys if k in entry}
+    )
+    with tempfile.TemporaryDirectory() as tmp:
+        save_dataset(tmp, motions, meta)
+        table, _ = dataset_realism(load_dataset(tmp), jm)
+    return table.set_index(["statistic", "behaviour"])["value"]
+
+
+@pytest.mark.skipif(not REAL.is_dir(), reason=f"{REAL} absent")
+@pytest.mark.parametrize("name", ["xia", "bandai_ds1", "dfki_markerless"])
+def test_bands_record_what_the_captured_sets_give(name):
+    """Every captured value a band is derived from is what the measure gives on that set."""
+    values = _real_table(name)
+    recorded = {key: band.captured[name] for key, band in BANDS.items() if name in band.captured}
+    assert recorded
+    for key, value in recorded.items():
+        assert values[key] == pytest.approx(value, abs=1e-3), key
