@@ -199,3 +199,28 @@ def test_bands_record_what_the_captured_sets_give(name):
     assert recorded
     for key, value in recorded.items():
         assert values[key] == pytest.approx(value, abs=1e-3), key
+
+
+CMU_WALK = ROOT.parent / "shared" / "data" / "bvh" / "cmu" / "02_01.bvh"
+
+
+@pytest.mark.skipif(not (REAL.is_dir() and CMU_WALK.is_file()), reason="the shared captured walks are absent")
+def test_cmu_captured_channels_are_where_xia_and_cmu_agree():
+    from motionvar.io import import_bvh_folder
+    from motionvar.io.bvh import read_bvh
+    from motionvar.realism import RealismSettings
+
+    s = RealismSettings()
+
+    def classes(rotations):
+        return rm.channel_classes(rm.rotation_channel_sd(rotations[:, 1:]), s.static_deg, s.near_static_deg)
+
+    xia, meta = import_bvh_folder(REAL / "xia", "labels.csv", 5.644444, style_aliases={"sexy": "female"})
+    walks = [m for m, b in zip(xia, meta["behaviour"]) if b == "walk"]
+    xia_classes = classes(np.concatenate([m.rotations.astype(np.float32) for m in walks]))
+    cmu = read_bvh(CMU_WALK, scale=5.644444)
+    cmu_classes = classes(cmu.rotations[1:].astype(np.float32))  # frame 0 of a cgspeed CMU file: a T-pose
+    still = lambda c: "moving" if c == "moving" else "still"  # noqa: E731
+    for j, name in enumerate(cmu.skeleton.names[1:]):
+        expected = tuple(still(a) if still(a) == still(b) else "either" for a, b in zip(xia_classes[j], cmu_classes[j]))
+        assert CMU_CAPTURED_CHANNELS[name] == expected, name

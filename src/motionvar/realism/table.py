@@ -193,12 +193,15 @@ def _channel_rows(motions: list[Motion], behaviour: str, s: RealismSettings) -> 
 
 
 def _cmu_rows(classes: dict[str, np.ndarray], behaviour: str) -> list[tuple]:
-    """On the CMU rig: the shares of the channels captured walks move (hold constant) that
-    this data moves (holds static or near-static), against :data:`CMU_CAPTURED_CHANNELS`."""
+    """On the CMU rig: the shares of the channels captured walks move (hold still) that this
+    data moves (holds static or near-static), against :data:`CMU_CAPTURED_CHANNELS`."""
     moved, kept = [], []
     for joint, captured in CMU_CAPTURED_CHANNELS.items():
         for mine, theirs in zip(classes[joint], captured):
-            (moved if theirs == "moving" else kept).append(mine == "moving" if theirs == "moving" else mine != "moving")
+            if theirs == "moving":
+                moved.append(mine == "moving")
+            elif theirs == "still":
+                kept.append(mine != "moving")
     return [
         (
             "cmu_captured_moving_kept_share",
@@ -214,7 +217,7 @@ def _cmu_rows(classes: dict[str, np.ndarray], behaviour: str) -> list[tuple]:
             float(np.mean(kept)),
             "share",
             len(kept),
-            "CMU rig: share of the channels captured walks hold (near-)static that are (near-)static here",
+            "CMU rig: share of the channels captured walks hold still that are (near-)static here",
         ),
     ]
 
