@@ -21,6 +21,7 @@ from motionvar.io import (
     save_dataset,
     write_bvh,
 )
+from motionvar.io.bvh_dataset import bvh_files
 
 MAPS = Path(__file__).resolve().parents[1] / "config/joint_maps"
 
@@ -183,6 +184,42 @@ def test_bad_bvh_in_folder_names_file_and_line(folder):
     (folder / "a.bvh").write_text("HIERARCHY\nROOT Hips\n{\n")
     with pytest.raises(ValueError, match=rf"{folder / 'a.bvh'}:3: unbalanced braces"):
         import_bvh_folder(folder, "labels.csv", unit_cm=CMU_UNIT_CM)
+
+
+@pytest.mark.parametrize("entry", ["../x.bvh", "sub/../../x.bvh", "absolute"])
+def test_labelled_file_outside_the_folder_is_refused(folder, entry):
+    """The data rule tracks the folder's files only: a row naming one outside it would be
+    imported and never rerun when edited. One line naming the CSV, its line and the path."""
+    outside = folder.parent / "x.bvh"
+    write_bvh(outside, cmu_motion(4), scale=CMU_UNIT_CM)
+    name = str(outside) if entry == "absolute" else entry
+    csv = _labels(folder, f"file,subject,behaviour,style\na.bvh,02,walk,x\n{name},02,walk,x\n")
+    with pytest.raises(DatasetError) as info:
+        import_bvh_folder(folder, csv, unit_cm=CMU_UNIT_CM)
+    assert str(info.value) == (
+        f"{csv}:3: labelled file {name!r} lies outside the dataset folder {folder}: move it into the "
+        f"folder (the run tracks only the folder's files)"
+    )
+
+
+def test_labelled_file_that_is_not_bvh_is_refused(folder):
+    (folder / "notes.txt").write_text("HIERARCHY\n")
+    csv = _labels(folder, "file,subject,behaviour,style\na.bvh,02,walk,x\nnotes.txt,02,walk,x\n")
+    with pytest.raises(DatasetError, match=r"labels.csv:3: labelled file 'notes.txt' is not a .bvh file"):
+        import_bvh_folder(folder, csv, unit_cm=CMU_UNIT_CM)
+
+
+def test_bvh_suffix_in_any_case_imports(tmp_path):
+    """A folder of N.BVH files (as some capture software writes them) imports; clip ids drop the suffix."""
+    d = tmp_path / "caps"
+    (d / "sub").mkdir(parents=True)
+    for seed, rel in enumerate(["1.BVH", "2.BVH", "sub/3.Bvh"]):
+        write_bvh(d / rel, cmu_motion(seed), scale=CMU_UNIT_CM)
+    (d / "notes.txt").write_text("not motion\n")
+    (d / "labels.csv").write_text("file,subject,behaviour,style\n1.BVH,a,walk,x\n2.BVH,a,walk,x\nsub/3.Bvh,b,run,x\n")
+    motions, meta = import_bvh_folder(d, "labels.csv", unit_cm=CMU_UNIT_CM)
+    assert meta["clip_id"].tolist() == ["1", "2", "3"] and len(motions) == 3
+    assert bvh_files(d) == [d / "1.BVH", d / "2.BVH", d / "sub/3.Bvh"]
 
 
 # ---------------------------------------------------------------- real files

@@ -9,6 +9,7 @@ from pathlib import Path
 
 import pytest
 import yaml
+from jsonschema import Draft202012Validator
 from snakemake.utils import validate
 
 from motionvar.prep import PrepOptions
@@ -109,6 +110,113 @@ def test_synthetic_dataset_entry_matches_synth_spec():
     assert {k: v["default"] for k, v in props.items() if k != "source"} == defaults
 
 
+def schema_errors(config):
+    schema = yaml.safe_load(Path(SCHEMA).read_text())
+    return [
+        f"{'.'.join(map(str, e.absolute_path))}: {e.message}" for e in Draft202012Validator(schema).iter_errors(config)
+    ]
+
+
+def schema_nodes(node, where="schema"):
+    """(dotted place, subschema) of every dict in the schema."""
+    if isinstance(node, dict):
+        yield where, node
+        for k, v in node.items():
+            yield from schema_nodes(v, f"{where}.{k}")
+    elif isinstance(node, list):
+        for i, v in enumerate(node):
+            yield from schema_nodes(v, f"{where}.{i}")
+
+
+def bvh_entry(**keys):
+    return {"datasets": {"mine": {"source": "bvh", "path": "x", "unit_cm": 1.0, **keys}}}
+
+
+@pytest.mark.parametrize(
+    "unit_cm, error",
+    [
+        (1e300, "1e+300 is greater than the maximum of 1000.0"),
+        (1e-4, "0.0001 is less than the minimum of 0.001"),
+        (0.0, "0.0 is less than the minimum of 0.001"),
+        (1e-3, None),
+        (1e3, None),
+    ],
+)
+def test_unit_cm_is_a_physical_unit(unit_cm, error):
+    """cm per BVH unit from 0.001 to 1000 (10 micrometres to 10 m): 1e300 would pass a bare > 0."""
+    assert schema_errors(bvh_entry(unit_cm=unit_cm)) == ([f"datasets.mine.unit_cm: {error}"] if error else [])
+
+
+def test_unit_cm_bounds_are_the_librarys():
+    """The schema writes the numbers of motionvar.io.units, which the CLI's --unit-cm takes."""
+    from motionvar.io.units import UNIT_CM_MAX, UNIT_CM_MIN
+
+    unit_cm = yaml.safe_load(Path(SCHEMA).read_text())["$defs"]["bvh_dataset"]["properties"]["unit_cm"]
+    assert (unit_cm["minimum"], unit_cm["maximum"]) == (UNIT_CM_MIN, UNIT_CM_MAX)
+
+
+def test_every_seed_is_non_negative():
+    schema = yaml.safe_load(Path(SCHEMA).read_text())
+    seeds = [where for where, node in schema_nodes(schema) if "seed" in node.get("properties", {})]
+    assert len(seeds) == 6, seeds
+    for where, node in schema_nodes(schema):
+        if "seed" in node.get("properties", {}):
+            assert node["properties"]["seed"]["minimum"] == 0, where
+    errors = schema_errors({"ma2010": {"seed": -1}, "datasets": {"synthetic": {"source": "synthetic", "seed": -1}}})
+    assert errors == [
+        "datasets.synthetic.seed: -1 is less than the minimum of 0",
+        "ma2010.seed: -1 is less than the minimum of 0",
+    ]
+
+
+def test_patterns_end_at_the_end_of_the_text():
+    """jsonschema matches `pattern` with Python's re.search, whose `$` also matches before a final
+    newline: every pattern ends with `(?!\\n)$`, and a name with a trailing newline is refused."""
+    schema = yaml.safe_load(Path(SCHEMA).read_text())
+    patterns = {where: node["pattern"] for where, node in schema_nodes(schema) if isinstance(node.get("pattern"), str)}
+    assert len(patterns) >= 7
+    assert [w for w, p in patterns.items() if not (p.startswith("^") and p.endswith("(?!\\n)$"))] == []
+    for name, ok in (("ab", True), ("ab\n", False), ("a/b", False), ("..", False), ("-a", False)):
+        assert (schema_errors({"datasets": {name: {"source": "synthetic"}}}) == []) == ok, name
+    assert schema_errors({"style": {"styles": ["old\n"]}, "graph": {"primitives": ["walk\n"]}}) != []
+
+
+@pytest.mark.parametrize(
+    "folder, ok",
+    [
+        ("results/stability_b", True),
+        ("results/..", False),
+        ("results/.", False),
+        ("results/a/../..", False),
+        ("/tmp/stability", False),
+        ("results/s\n", False),
+        ("stability", False),
+    ],
+)
+def test_stability_folder_is_a_folder_of_results(folder, ok):
+    assert (schema_errors({"stability": {"folder": folder}}) == []) == ok
+
+
+def test_primitives_that_name_files_are_names():
+    """graph, fda and style primitives become file names under results/<dataset>/models/."""
+    config = {
+        "graph": {
+            "primitives": ["../../x"],
+            "search": {"primitives": ["/abs"]},
+            "synthesis": {"reach_primitive": "a/b"},
+        },
+        "fda": {"reconstruction": {"primitives": ["a.b"]}},
+        "style": {"distance_primitive": "../x"},
+    }
+    assert sorted(e.split(":")[0] for e in schema_errors(config)) == [
+        "fda.reconstruction.primitives.0",
+        "graph.primitives.0",
+        "graph.search.primitives.0",
+        "graph.synthesis.reach_primitive",
+        "style.distance_primitive",
+    ]
+
+
 def run_dry(tmp_path, config_text):
     (tmp_path / "bad.yaml").write_text(config_text)
     return subprocess.run(
@@ -147,6 +255,8 @@ def run_dry(tmp_path, config_text):
         ("stability: {datasets: [s0, synthetic]}\n", "stability.datasets names ['s0'], not in datasets"),
         ("stability: {datasets: [synthetic]}\n", "stability.datasets needs at least 2 datasets"),
         ("idle: {seed: 1}\n", "config key idle is now egges2004"),
+        ('datasets:\n  "ab\\n": {source: synthetic}\n', "config key datasets: 'ab\\n' does not match"),
+        ("stability: {folder: results/..}\n", "config key stability.folder: 'results/..' does not match"),
     ],
 )
 def test_bad_config_stops_the_run_naming_the_key(tmp_path, text, expected):

@@ -171,7 +171,12 @@ def dataset_pattern():
 def data_input(wildcards):
     """Input function of the data rule: a BVH dataset's files (labels, BVH files, joint map),
     so that edits rerun the import; nothing for the synthetic generator (its config
-    entry is a param)."""
+    entry is a param). The BVH files are those the import may read: every file in the
+    folder and its subfolders whose name ends in .bvh in any case, linked subfolders not
+    followed: the files of motionvar.io.bvh_dataset.bvh_files, whose import refuses labels
+    naming any other file (written again here: the Snakemake process does not import the
+    package, which conda deployment puts in the jobs' environment only; a test holds the two
+    equal)."""
     entry = dataset_config(wildcards.dataset)
     if entry["source"] != "bvh":
         return []

@@ -3,7 +3,10 @@ single clips as BVH (docs/design.md, "Datasets"; README, "Your own BVH data").
 
 The labels CSV has one row per clip with the columns ``file`` (path relative to the
 folder), ``subject``, ``behaviour`` and ``style``; any further columns (``variant``,
-``primitive``, ...) are carried into the metadata.
+``primitive``, ...) are carried into the metadata. A labelled file lies inside the folder
+and its name ends in ``.bvh`` in any case (:func:`is_bvh_name`): the workflow's data rule
+takes the folder's BVH files (:func:`bvh_files`, matched the same way) as its inputs, so
+that editing one reruns the import.
 
 Labels as users write them: ``behaviour_aliases`` maps the source's behaviour words to
 ours (optionally with a variant: ``sidestep_left -> sidestep, variant left``),
@@ -34,6 +37,7 @@ release, e.g. 131_*.bvh, has none). No heuristic tries to detect it.
 from __future__ import annotations
 
 import logging
+import os
 from collections import Counter
 from collections.abc import Mapping
 from pathlib import Path
@@ -65,10 +69,23 @@ METADATA_COLUMNS = (
 #: tests check that the two agree).
 BEHAVIOURS = ("idle", "pick", "place", "run", "sidestep", "walk")
 MIXED_RIGS = ("error", "skip_minority")
+#: The file name suffix of BVH files, matched without regard to case (``N.BVH``).
+BVH_SUFFIX = ".bvh"
 #: A behaviour alias: a behaviour, or {"behaviour": ..., "variant": ...}.
 BehaviourAlias = str | Mapping[str, str]
 #: Labels of clips that are one primitive each: {"column": labels column, "names": {label value: primitive}}.
 PrimitiveLabels = Mapping[str, object]
+
+
+def is_bvh_name(name: str) -> bool:
+    """Whether a file name ends in :data:`BVH_SUFFIX`, in any case."""
+    return name.lower().endswith(BVH_SUFFIX)
+
+
+def bvh_files(folder: str | Path) -> list[Path]:
+    """The BVH files (:func:`is_bvh_name`) in ``folder`` and its subfolders, sorted;
+    linked subfolders are not followed."""
+    return sorted(Path(root, f) for root, _, files in os.walk(folder) for f in files if is_bvh_name(f))
 
 
 def _read_labels(labels_csv: Path) -> pd.DataFrame:
@@ -234,12 +251,28 @@ def _describe_difference(a: Skeleton, b: Skeleton) -> str:
     return "another channel layout"
 
 
+def _outside(name: str) -> bool:
+    """Whether a labels ``file`` entry names a path outside the folder (absolute, or up
+    through ``..`` beyond it)."""
+    return os.path.isabs(name) or os.path.normpath(name).split(os.sep)[0] == os.pardir
+
+
 def _check_files(labels: pd.DataFrame, folder: Path, labels_csv: Path) -> list[Path]:
     """Paths of the labelled files; errors name the CSV line (the index of ``labels``)."""
     paths = []
     for line, name in labels["file"].str.strip().items():
         if not name:
             raise DatasetError(f"{labels_csv}:{line}: empty 'file' entry")
+        if _outside(name):
+            raise DatasetError(
+                f"{labels_csv}:{line}: labelled file {name!r} lies outside the dataset folder {folder}: "
+                f"move it into the folder (the run tracks only the folder's files)"
+            )
+        if not is_bvh_name(name):
+            raise DatasetError(
+                f"{labels_csv}:{line}: labelled file {name!r} is not a .bvh file (the run tracks only "
+                f"files whose name ends in .bvh, in any case)"
+            )
         path = folder / name
         if not path.is_file():
             raise DatasetError(f"{labels_csv}:{line}: labelled file {name!r} does not exist in {folder}")
@@ -341,7 +374,7 @@ def import_bvh_folder(
         labels_csv = folder / labels_csv
     if not folder.is_dir():
         raise DatasetError(f"{folder}: BVH folder not found")
-    if not any(folder.rglob("*.bvh")):
+    if not bvh_files(folder):
         raise DatasetError(f"{folder}: no .bvh files in the folder")
     labels = _read_labels(labels_csv)
     labels = apply_label_aliases(labels, behaviour_aliases, style_aliases, neutral_style, labels_csv)
