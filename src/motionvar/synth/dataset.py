@@ -11,7 +11,9 @@ traits prefixed ``subj_``.
 Randomness: subjects come from ``make_subjects(subjects, seed)``; each (subject, behaviour)
 pair draws from its own stream ``default_rng([seed, subject index, behaviour index])``, so
 changing one behaviour's clip count leaves every other clip unchanged, and the same spec
-gives identical arrays and tables.
+gives identical arrays and tables. The capture layer (:mod:`.capture`, ``SynthSpec.capture_motion``)
+draws from a stream of its own per clip, ``capture_rng(seed, subject index, behaviour index,
+clip index)``, so switching it leaves every other draw unchanged.
 """
 
 from __future__ import annotations
@@ -24,6 +26,7 @@ import numpy as np
 import pandas as pd
 
 from ..core.motion import Motion
+from .capture import add_capture_motion, capture_rng
 from .gait_params import sample_run_params, sample_sidestep_params, sample_walk_params
 from .idle import IdleParams, generate_idle
 from .locomotion import generate_run, generate_sidestep, generate_walk
@@ -69,6 +72,10 @@ class SynthSpec:
         picks / places: two-hand pick and place clips (regions low, forward, high, ...).
         idle_clips: idle standing clips of ``idle_duration_s`` seconds each.
         fps: frame rate of every clip.
+        capture_motion: add the small smooth rotations captured data carries on channels the
+            generator holds constant (:func:`~motionvar.synth.capture.add_capture_motion`;
+            feet, hips, knees, ankles, toes, root and the gripping hands keep their positions);
+            False gives the generator's clips unchanged.
     """
 
     subjects: int = 25
@@ -82,12 +89,13 @@ class SynthSpec:
     idle_clips: int = 2
     idle_duration_s: float = 20.0
     fps: float = 120.0
+    capture_motion: bool = True
 
     def validate(self) -> None:
         """ValueError naming the first bad field."""
         for f in fields(self):
             v = getattr(self, f.name)
-            if f.name in ("idle_duration_s", "fps"):
+            if f.name in ("idle_duration_s", "fps", "capture_motion"):
                 continue
             low = 1 if f.name == "subjects" else 0
             if isinstance(v, bool) or not isinstance(v, (int, np.integer)) or v < low:
@@ -96,6 +104,8 @@ class SynthSpec:
             v = getattr(self, name)
             if isinstance(v, bool) or not isinstance(v, (int, float)) or not (math.isfinite(v) and lo <= v <= hi):
                 raise ValueError(f"SynthSpec.{name} must be a number in [{lo}, {hi}]; got {v!r}")
+        if not isinstance(self.capture_motion, (bool, np.bool_)):
+            raise ValueError(f"SynthSpec.capture_motion must be true or false; got {self.capture_motion!r}")
 
 
 def _turn(rng: np.random.Generator, variant: str) -> float:
@@ -158,8 +168,10 @@ def _subject_clips(spec: SynthSpec, i: int) -> tuple[list[Motion], list[dict]]:
     for b, behaviour in enumerate(BEHAVIOURS):
         rng = np.random.default_rng([spec.seed, i, b])
         counts: dict[str, int] = {}
-        for style, tag, motion, truth in _clips(subject, spec, behaviour, rng):
+        for n, (style, tag, motion, truth) in enumerate(_clips(subject, spec, behaviour, rng)):
             k = counts[tag] = counts.get(tag, -1) + 1
+            if spec.capture_motion:
+                motion = add_capture_motion(motion, behaviour, capture_rng(spec.seed, i, b, n))
             row = {c: float("nan") for c in CONTRACT_COLUMNS}
             row.update(truth)
             row.update(
