@@ -9,18 +9,15 @@ import re
 import numpy as np
 import pandas as pd
 import pytest
-from egges2004_toy import toy_dataset as idle_toy_dataset
-from graph_toy import toy_clips
+from cli_toy import DS, JM, run, toy_results
 
 from motionvar.cli.common import CLIError, RigLayout, on_rig
 from motionvar.cli.main import main
-from motionvar.core import cmu_joint_map, cmu_skeleton
+from motionvar.core import cmu_skeleton
 from motionvar.io import load_dataset, save_dataset
 from motionvar.io.bvh import read_bvh
 from motionvar.ma2010.evaluations.common import PUBLISHED_MAX_STRIDE_ERROR_CM
 
-DS = "toy"
-JM = cmu_joint_map()
 # Foot skating (cm/s, Sec. 7.4's measure: the contact point's speed during detected contacts)
 # of a generated walk: the bound the generator's own walks meet (< 1.0,
 # tests/test_metrics_motion.py). The command's default cleanup ("root+feet": the paper's
@@ -36,113 +33,8 @@ pytestmark = pytest.mark.usefixtures("one_torch_thread")  # tests/conftest.py
 
 @pytest.fixture(scope="module")
 def results(tmp_path_factory):
-    """results/toy with a Ma 2010 model (from the generator's walks), an idle model, a
-    Morphable Graph of two walking primitives and tiny style models, plus the packed data."""
-    root = tmp_path_factory.mktemp("run") / "results"
-    models = root / DS / "models"
-    _ma2010(root / DS, models)
-    _egges2004(tmp_path_factory.mktemp("idle"), models)
-    _graph(models)
-    _style(tmp_path_factory.mktemp("style"), models)
-    return root
-
-
-def _ma2010(ds, models):
-    from motionvar.ma2010.examples import WalkCycles, walk_cycles
-    from motionvar.ma2010.settings import Ma2010Settings
-    from motionvar.ma2010.storage import save_style_variation_model
-    from motionvar.synth import generate_walk, make_subjects, sample_walk_params
-
-    rng = np.random.default_rng(1)
-    motions, rows = [], []
-    for i, s in enumerate(make_subjects(5, seed=7)):
-        m, _ = generate_walk(s, sample_walk_params(s, rng, "neutral", n_steps=6))
-        motions.append(m)
-        rows.append(
-            {"clip_id": f"w{i}", "subject": s.subject_id, "behaviour": "walk", "style": "neutral", "variant": "forward"}
-        )
-    save_dataset(ds / "data", motions, pd.DataFrame(rows))
-    settings = Ma2010Settings(n_frames=32)
-    clips, table = walk_cycles(load_dataset(ds / "data"), JM, settings)
-    walks = WalkCycles(clips, table["subject"].tolist(), JM, root_group=settings.root_group)
-    model = walks.fit_model(settings)
-    save_style_variation_model(models / "ma2010" / "style_variation", model, JM, clips.clip_ids, walks.subjects)
-
-
-def _egges2004(tmp, models):
-    from motionvar.egges2004.pipeline import fit_idle_model, idle_clips, split_clips
-    from motionvar.egges2004.settings import Egges2004Settings
-    from motionvar.egges2004.storage import save_idle_model
-
-    train, test = split_clips(idle_clips(load_dataset(idle_toy_dataset(tmp)), "prep"), 1)
-    model, _ = fit_idle_model(train, test, JM, Egges2004Settings.from_dict({"analysis": {"variation_pcs": 4}}))
-    save_idle_model(models / "egges2004" / "idle_model", model)
-
-
-def _graph(models):
-    from motionvar.du2022.graph import MorphableGraph, MotionPrimitive, PrimitiveOptions
-    from motionvar.du2022.graph.storage import save_graph
-
-    opt = PrimitiveOptions(n_basis=8, n_components=5, gmm_components=(1, 2), sfpca_max_iter=0)
-    for k, name in enumerate(("walk_leftStance", "walk_rightStance")):
-        MotionPrimitive.fit(toy_clips(10, seed=k), name, opt).save(models / "du2022" / "graph" / name)
-    graph = MorphableGraph(
-        {"walk_leftStance": {"walk_rightStance": 3}, "walk_rightStance": {"walk_leftStance": 3}},
-        {"walk_leftStance": 2},
-        {"walk_rightStance": 2},
-    )
-    settings = {"tree_samples": 200, "beam": 2, "max_nfev": 10, "look_ahead": 1, "joint_steps": 0, "seed": 0}
-    save_graph(models / "du2022" / "graph" / "graph" / "edges", graph, JM, settings)
-
-
-def _style(tmp, models):
-    from test_style import TINY_HIDDEN, tiny_settings
-    from test_style import toy_walk as style_toy_walk
-
-    from motionvar.du2022.style import fit_feature_space, fit_primitive_vae, fit_style_cvae, save_vae
-    from motionvar.du2022.style.data import dataset_layout
-    from motionvar.du2022.style.generate import fit_rig, save_rig
-
-    specs = [("neutral", 0.5, 0.3, 2.0)] * 6 + [("old", 0.2, 0.1, 1.2)] * 2
-    motions = [
-        style_toy_walk(n_frames=70, seed=k, swing=sw, arm=arm, speed=sp) for k, (_, sw, arm, sp) in enumerate(specs)
-    ]
-    meta = pd.DataFrame(
-        {
-            "clip_id": [f"c{k}" for k in range(len(specs))],
-            "primitive": "walk_leftStance",
-            "style": [st for st, *_ in specs],
-            "variant": "forward",
-            "turn_deg": 0.0,
-        }
-    )
-    save_dataset(tmp / "prep", motions, meta)
-    dataset = load_dataset(tmp / "prep")
-    layout = dataset_layout(dataset, JM)
-    small, hidden = tiny_settings(ae_epochs=2, vae_epochs=2, cvae_epochs=1), TINY_HIDDEN
-    space, _ = fit_feature_space(dataset, layout, small)
-    base = models / "du2022_style"
-    space.save(base / "autoencoder.pt")
-    vae, shape, info, _ = fit_primitive_vae(dataset, layout, space, "walk_leftStance", small, hidden)
-    save_vae(base / "vae" / "walk_leftStance.pt", vae, shape, info)
-    cvae, cshape, cinfo, _ = fit_style_cvae(dataset, layout, space, vae, "walk_leftStance", "old", small, hidden)
-    save_vae(base / "cvae" / "walk_leftStance" / "old.pt", cvae, cshape, cinfo)
-    save_rig(base / "rig", fit_rig(dataset, JM, 60))
-
-
-def run(results, *argv):
-    return main(
-        [
-            argv[0],
-            *(argv[1:2] if argv[0] == "du2022" else []),
-            "--results",
-            str(results),
-            "--dataset",
-            DS,
-            *([] if argv[0] == "models" else ["--quiet"]),
-            *argv[(2 if argv[0] == "du2022" else 1) :],
-        ]
-    )
+    """results/toy of tests/cli_toy.py (built once per session)."""
+    return toy_results(tmp_path_factory)
 
 
 def _ma2010_model(results):
@@ -651,15 +543,12 @@ def test_du2022_walk_without_transitions_is_refused(results, tmp_path, capsys):
 def test_an_oversized_request_is_refused_at_once(results, tmp_path, capsys, monkeypatch, argv, message):
     """Exit status 2 before any model is loaded (so at once), one line stating the limit,
     nothing written."""
-    import motionvar.cli.du2022
-    import motionvar.cli.egges2004
-    import motionvar.cli.ma2010
+    from motionvar.cli.common import ResultsDir
 
     def no_loading(*args, **kwargs):
         raise AssertionError("a model was loaded before the request's size was checked")
 
-    for module in (motionvar.cli.du2022, motionvar.cli.egges2004, motionvar.cli.ma2010):
-        monkeypatch.setattr(module, "load_or_fail", no_loading)
+    monkeypatch.setattr(ResultsDir, "load", no_loading)  # every read of a command goes through it
     assert run(results, *[a.format(tmp=tmp_path) for a in argv]) == 2
     err = capsys.readouterr().err
     command = " ".join(argv[:2] if argv[0] == "du2022" else argv[:1]).split()[0]
@@ -685,7 +574,7 @@ def test_version_and_top_level_help_with_examples():
         build_parser().parse_args(example.split()[1:])
 
 
-@pytest.mark.parametrize("option", [["--seed", "3"], ["--unit-cm", "100"], ["--quiet"]])
+@pytest.mark.parametrize("option", [["--seed", "3"], ["--unit-cm", "100"], ["--force"], ["--quiet"]])
 def test_models_takes_only_the_options_it_uses(results, capsys, option):
     with pytest.raises(SystemExit) as stop:
         main(["models", "--results", str(results), *option])
@@ -703,7 +592,7 @@ def test_each_command_takes_only_its_options():
     def options(p):
         return {o for a in p._actions for o in a.option_strings if o.startswith("--") and o != "--help"}
 
-    shared = {"--dataset", "--results", "--seed", "--unit-cm", "--quiet"}
+    shared = {"--dataset", "--results", "--seed", "--unit-cm", "--force", "--quiet"}
     assert options(sub["models"]) == {"--dataset", "--results"}
     assert options(sub["ma2010"]) == shared | {"--style", "--xi", "--seconds", "--variants", "--cleanup", "--out"}
     assert options(sub["egges2004"]) == shared | {"--subject", "--seconds", "--no-variations", "--out"}

@@ -1,27 +1,54 @@
 """What every ``motionvar`` subcommand shares: where a dataset's model files lie, the
-one-line error for a missing model (naming the Snakemake target that builds it) or an
-argument out of range, the dataset's rig for the output, and writing BVH files so that a
-failed command leaves none behind."""
+one-line error for a missing or unreadable model (naming the Snakemake target that builds
+it) or an argument out of range, the dataset's rig for the output, and writing the BVH
+files as one transaction (:class:`motionvar.io.atomic.AtomicFiles`): all of them or none,
+and no file that existed replaced without ``--force``."""
 
 from __future__ import annotations
 
+import argparse
 import csv
 import sys
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, replace
 from pathlib import Path
+from typing import TypeVar
 
 import numpy as np
 
 from ..core.motion import Motion
 from ..core.skeleton import Skeleton
+from ..io.atomic import AtomicFiles, TargetError, TargetExistsError
 from ..io.bvh import write_bvh
+from ..io.model_file import exception_line
+from ..io.units import unit_cm_problem
 
 DATA_CLIPS = "data/clips.npz"  # the dataset's packed clips: its rig's channel layout
+APPLICABILITY = "applicability.csv"  # the run's applicability table of the dataset
+MAX_SEED = 2**32 - 1  # --seed: 0 to this (numpy's and torch's generators take every one)
+MAX_REASON_CHARS = 300  # of a loader's message quoted in an error line
+T = TypeVar("T")
 
 
 class CLIError(Exception):
     """A user-facing error: printed as one line on stderr, exit status 2."""
+
+
+class UnreadableFile(CLIError):
+    """A file of the run that exists but cannot be read: names it and the Snakemake target
+    that rebuilds it."""
+
+    def __init__(self, what: str, path: Path, target: str, reason: str) -> None:
+        self.path, self.target = path, target
+        super().__init__(f"{what} cannot be read: {reason}; rebuild it with `snakemake --cores 2 --force {target}`")
+
+
+def _reason(exc: BaseException, path: Path) -> str:
+    """A loader's exception as one short line that names the file."""
+    text = exception_line(exc)
+    if str(path.with_suffix("")) not in text:
+        text = f"{path}: {text}"
+    return text if len(text) <= MAX_REASON_CHARS else text[: MAX_REASON_CHARS - 3] + "..."
 
 
 @dataclass(frozen=True)
@@ -54,14 +81,25 @@ class ResultsDir:
                 f"`snakemake --cores 2` first, or pass --results DIR"
             )
 
+    def load(self, what: str, loader: Callable[[Path], T], path: Path) -> T:
+        """``loader(path)`` behind the one error boundary of the commands' reads: whatever
+        reading a file of the run raises (truncated or garbled .npz/.pt/.json/.csv, arrays
+        or tensors under other names or of other shapes) ends as an UnreadableFile naming
+        the file and the Snakemake target that rebuilds it."""
+        try:
+            return loader(path)
+        except CLIError:
+            raise
+        except Exception as exc:
+            raise UnreadableFile(what, path, self.target(path), _reason(exc, path)) from exc
+
     def unsupported(self, evaluations: Sequence[str]) -> str | None:
         """Why the dataset supports none of ``evaluations`` (whose models a command reads),
         from the run's applicability.csv; None when one is supported or it is not known."""
-        path = self.root / "applicability.csv"
+        path = self.root / APPLICABILITY
         if not evaluations or not path.is_file():
             return None
-        with open(path, newline="", encoding="utf-8") as fh:
-            rows = {r.get("evaluation"): r for r in csv.DictReader(fh)}
+        rows = self.load("the run's applicability table", _applicability_rows, path)
         found = [rows[e] for e in evaluations if e in rows]
         if not found or any(str(r.get("applicable", "")).strip().lower() == "true" for r in found):
             return None
@@ -90,12 +128,13 @@ class ResultsDir:
         return paths
 
 
-def load_or_fail(what: str, loader, *args):
-    """``loader(*args)``, with a file that is not a readable model turned into a CLIError."""
-    try:
-        return loader(*args)
-    except (OSError, ValueError, KeyError) as exc:
-        raise CLIError(f"{what}: {exc}") from exc
+def _applicability_rows(path: Path) -> dict[str, dict[str, str]]:
+    """evaluation -> row of an applicability.csv (ValueError when it has no such column)."""
+    with open(path, newline="", encoding="utf-8") as fh:
+        rows = list(csv.DictReader(fh))
+    if rows and "evaluation" not in rows[0]:
+        raise ValueError(f"{path}: no 'evaluation' column")
+    return {r["evaluation"]: r for r in rows}
 
 
 @dataclass(frozen=True)
@@ -116,19 +155,21 @@ def dataset_rig(rd: ResultsDir) -> RigLayout | None:
     path = rd.root / DATA_CLIPS
     if not path.is_file():
         return None
-    try:
-        with np.load(path, allow_pickle=False) as z:  # reads only the arrays named
-            ends = z["end_site_joints"]
-            offsets = z["end_site_offsets"]
-            return RigLayout(
-                tuple(str(n) for n in z["names"]),
-                np.asarray(z["parents"]),
-                tuple(str(o) for o in z["rotation_orders"]),
-                tuple(bool(p) for p in z["position_channels"]),
-                {int(j): offsets[:, k].mean(axis=0) for k, j in enumerate(ends)},
-            )
-    except (OSError, ValueError, KeyError) as exc:
-        raise CLIError(f"{path}: not a readable packed dataset ({exc})") from exc
+    return rd.load("the dataset's packed clips", _rig_layout, path)
+
+
+def _rig_layout(path: Path) -> RigLayout:
+    """The RigLayout stored in a packed dataset's clips.npz (reads only those arrays)."""
+    with np.load(path, allow_pickle=False) as z:
+        ends = z["end_site_joints"]
+        offsets = z["end_site_offsets"]
+        return RigLayout(
+            tuple(str(n) for n in z["names"]),
+            np.asarray(z["parents"]),
+            tuple(str(o) for o in z["rotation_orders"]),
+            tuple(bool(p) for p in z["position_channels"]),
+            {int(j): offsets[:, k].mean(axis=0) for k, j in enumerate(ends)},
+        )
 
 
 def on_rig(motion: Motion, rig: RigLayout | None) -> Motion:
@@ -155,18 +196,50 @@ def on_rig(motion: Motion, rig: RigLayout | None) -> Motion:
     return replace(motion, skeleton=out)
 
 
-def write_motions(paths: Sequence[Path], motions: Sequence[Motion], unit_cm: float = 1.0) -> None:
-    """Write each motion as BVH (atomic per file); if one fails, the files this call
-    already wrote are removed, so a failed command leaves no output."""
-    written: list[Path] = []
+def check_output_options(args: argparse.Namespace) -> None:
+    """CLIError for a --unit-cm outside the range of length units
+    (:data:`motionvar.io.units.UNIT_CM_MIN`-``UNIT_CM_MAX``) or a --seed outside 0 to
+    :data:`MAX_SEED`; nothing for a command without them."""
+    if hasattr(args, "unit_cm"):
+        problem = unit_cm_problem(args.unit_cm)
+        if problem:
+            raise CLIError(f"--unit-cm {args.unit_cm:g}: {problem}")
+    if hasattr(args, "seed") and not 0 <= args.seed <= MAX_SEED:
+        raise CLIError(f"--seed {args.seed}: a seed is 0 to {MAX_SEED}")
+
+
+def output_files(paths: Sequence[Path], force: bool) -> AtomicFiles:
+    """The command's output files as one transaction, checked now, before any work:
+    CLIError naming a file that exists (unless ``force``), a path that is not free or a
+    regular file (a folder, symlink, device, named pipe), or a folder that cannot be
+    written."""
     try:
-        for p, m in zip(paths, motions, strict=True):
-            write_bvh(p, m, scale=unit_cm)
-            written.append(p)
-    except BaseException:
-        for p in written:
-            p.unlink(missing_ok=True)
-        raise
+        return AtomicFiles(paths, overwrite=force)
+    except TargetExistsError as exc:
+        others = sum(p.exists() for p in paths) - 1
+        more = f" (and {others} more of the {len(paths)} output files)" if others else ""
+        raise CLIError(f"{exc}{more}; pass --force to overwrite, or choose another --out") from exc
+    except TargetError as exc:
+        raise CLIError(str(exc)) from exc
+
+
+def write_motions(files: AtomicFiles, motions: Sequence[Motion], unit_cm: float = 1.0) -> None:
+    """Write each motion as BVH to its path of ``files``, all or none: the files appear
+    together when every one is written; on any failure (disk full, permission, Ctrl-C,
+    SIGTERM) none does and every path keeps what it had; OSError becomes a CLIError."""
+    try:
+        with files:
+            for path, m in zip(files.paths, motions, strict=True):
+                try:
+                    write_bvh(path, m, scale=unit_cm)
+                except OSError as exc:
+                    raise CLIError(f"cannot write {path}: {exc.strerror or exc}; no file written") from exc
+    except TargetError as exc:  # a path taken while the command ran
+        raise CLIError(f"{exc}; no file written") from exc
+    except OSError as exc:  # the renames at the end
+        raise CLIError(
+            f"cannot put the files in place ({exc.strerror or exc}); every output path is as it was"
+        ) from exc
 
 
 def parse_numbers(text: str, what: str) -> list[float]:

@@ -14,11 +14,11 @@ from .common import (
     ResultsDir,
     at_most,
     dataset_rig,
-    load_or_fail,
     note,
     on_rig,
     out_dir,
     out_file,
+    output_files,
     parse_numbers,
     say,
     write_motions,
@@ -116,7 +116,7 @@ def graph_primitives(rd: ResultsDir, names: list[str]) -> dict:
 
     found = {n: rd.model(f"{GRAPH}/{n}.npz") for n in names}
     found = {n: p for n, p in found.items() if p.is_file() and p.with_suffix(".json").is_file()}
-    return {n: load_or_fail(f"motion primitive {n}", MotionPrimitive.load, p) for n, p in found.items()}
+    return {n: rd.load(f"the motion primitive {n}", MotionPrimitive.load, p) for n, p in found.items()}
 
 
 def run_walk(args: argparse.Namespace) -> int:
@@ -134,8 +134,9 @@ def run_walk(args: argparse.Namespace) -> int:
         path = check_path(points)
     except ValueError as exc:
         raise CLIError(str(exc)) from exc
+    files = output_files([out], args.force)
     edges, _ = rd.require("the Morphable Graph's transitions (Du 2022 ch. 4)", EDGES, EDGES_SETTINGS)
-    saved = load_or_fail("Morphable Graph", load_graph, edges)
+    saved = rd.load("the Morphable Graph's transitions", load_graph, edges)
     settings = walk_settings(saved.settings)
     cyclic = list(settings.cyclic)
     primitives = graph_primitives(rd, [settings.start, *cyclic, settings.end])
@@ -154,9 +155,10 @@ def run_walk(args: argparse.Namespace) -> int:
         )
     max_steps = args.max_steps or steps_for_path(primitives, path, saved.joint_map, settings)
     settings = walk_settings(saved.settings, max_steps)
+    rig = dataset_rig(rd)
     with Progress("du2022 walk (trees, then the walk)", len(primitives) + 1, enabled=not args.quiet) as bar:
         walk = walk_along_path(primitives, saved.graph, path, saved.joint_map, settings, args.seed, bar)
-    write_motions([out], [on_rig(walk.motion, dataset_rig(rd))], args.unit_cm)
+    write_motions(files, [on_rig(walk.motion, rig)], args.unit_cm)
     hips = saved.joint_map.index(walk.motion.skeleton, "hips")
     gap = walk.end_gap_cm(hips)
     step = walk.path.length / max(len(walk.steps), 1)
@@ -207,20 +209,20 @@ def run_style(args: argparse.Namespace) -> int:
     primitive = args.primitive or prims[0]
     if primitive not in prims:
         raise CLIError(f"primitive {primitive!r} has no {args.style} model; primitives with one: {', '.join(prims)}")
+    files = output_files([folder / f"{args.style}_{primitive}_{k + 1}.bvh" for k in range(args.n)], args.force)
     torch.set_num_threads(1)
-    space = load_or_fail("motion autoencoder", FeatureSpace.load, ae)
-    saved = load_or_fail(f"{args.style} model of {primitive}", load_vae, models[(primitive, args.style)])
-    rig = load_or_fail("style rig", load_rig, rig_path)
+    space = rd.load("the motion autoencoder", FeatureSpace.load, ae)
+    saved = rd.load(f"the {args.style} model of {primitive}", load_vae, models[(primitive, args.style)])
+    rig = rd.load("the style rig", load_rig, rig_path)
+    layout = dataset_rig(rd)
     with Progress(f"du2022 style {args.style}", 1, enabled=not args.quiet) as bar:
         try:
             motions = sample_motions(saved, space, rig, args.n, args.seed)
         except ValueError as exc:
             raise CLIError(str(exc)) from exc
         bar.update(1)
-    paths = [folder / f"{args.style}_{primitive}_{k + 1}.bvh" for k in range(len(motions))]
-    layout = dataset_rig(rd)
-    write_motions(paths, [on_rig(m, layout) for m in motions], args.unit_cm)
-    for p, m in zip(paths, motions):
+    write_motions(files, [on_rig(m, layout) for m in motions], args.unit_cm)
+    for p, m in zip(files.paths, motions):
         travel = float(((m.root_pos[-1] - m.root_pos[0])[[0, 2]] ** 2).sum() ** 0.5)
         say(
             f"{p}: {m.n_frames} frames at {m.fps:.4g} fps ({m.duration:.2f} s), {args.style} {primitive} "

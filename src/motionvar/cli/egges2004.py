@@ -11,10 +11,10 @@ from .common import (
     ResultsDir,
     at_most,
     dataset_rig,
-    load_or_fail,
     note,
     on_rig,
     out_file,
+    output_files,
     positive,
     say,
     write_motions,
@@ -55,19 +55,27 @@ def run(args: argparse.Namespace) -> int:
     from ..egges2004.storage import load_idle_model
 
     out = out_file(args.out)
+    files = output_files([out], args.force)
     path, _ = rd.require(WHAT, MODEL, MODEL_SETTINGS, evaluations=EVALUATIONS)
-    model = load_or_fail(WHAT, load_idle_model, path)
+    model = rd.load(WHAT, load_idle_model, path)
     subject = args.subject if args.subject is not None else sorted(model.databases)[0]
     try:
         check_subject(model, subject)
     except ValueError as exc:
         raise CLIError(str(exc)) from exc
+    fps = model.databases[subject].fps
+    if seconds < 1.0 / fps:
+        raise CLIError(
+            f"--seconds {seconds:g}: shorter than one frame of subject {subject}'s idle motion "
+            f"({fps:g} fps: at least {1.0 / fps:.3g} s)"
+        )
     if args.subject is None:
         note(f"subject {subject} (the first of {len(model.databases)}; choose with --subject)")
+    rig = dataset_rig(rd)
     with Progress("egges2004 idle", 1, enabled=not args.quiet) as bar:
         motion = idle_motion(model, subject, seconds, args.seed, variations=not args.no_variations)
         bar.update(1)
-    write_motions([out], [on_rig(motion, dataset_rig(rd))], args.unit_cm)
+    write_motions(files, [on_rig(motion, rig)], args.unit_cm)
     say(
         f"{out}: {motion.n_frames} frames at {motion.fps:g} fps ({motion.duration:.2f} s), idle motion of subject "
         f"{subject}"

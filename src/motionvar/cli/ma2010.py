@@ -4,17 +4,20 @@ model saved by rule ma2010_model, one BVH per variant."""
 from __future__ import annotations
 
 import argparse
+import math
 from pathlib import Path
+
+import numpy as np
 
 from .common import (
     CLIError,
     ResultsDir,
     at_most,
     dataset_rig,
-    load_or_fail,
     note,
     on_rig,
     out_dir,
+    output_files,
     parse_numbers,
     positive,
     say,
@@ -76,7 +79,8 @@ def add_parser(sub: argparse._SubParsersAction, common) -> None:
 
 
 def parse_xi(text: str | None) -> dict[str, float]:
-    """``A=0.1,B=0.2`` or ``0.1,0.2,0.3,0.4`` (groups A-D in order) -> {key: value}."""
+    """``A=0.1,B=0.2`` or ``0.1,0.2,0.3,0.4`` (groups A-D in order) -> {key: value};
+    CLIError for a key given twice."""
     if not text:
         return {}
     if "=" not in text:
@@ -87,10 +91,30 @@ def parse_xi(text: str | None) -> dict[str, float]:
     out = {}
     for part in text.split(","):
         key, sep, value = part.partition("=")
-        if not sep or not key.strip():
+        key = key.strip()
+        if not sep or not key:
             raise CLIError(f"--xi: expected KEY=VALUE pairs like A=0.1,B=0.2; got {part!r}")
-        out[key.strip()] = parse_numbers(value, f"--xi {key.strip()}")[0]
+        if key.upper() in (k.upper() for k in out):
+            raise CLIError(f"--xi: {key} is given twice in {text!r}; give each group once")
+        out[key] = parse_numbers(value, f"--xi {key}")[0]
     return out
+
+
+def one_per_group(xi_in: dict[str, float], letters: dict[str, str]) -> None:
+    """CLIError when two keys of ``xi_in`` name the same joint group (a letter of
+    ``letters`` and the group's name)."""
+    groups: dict[str, str] = {}
+    for key in xi_in:
+        g = letters.get(key.upper(), key)
+        if g in groups:
+            raise CLIError(f"--xi: {groups[g]} and {key} both set joint group {g}; give each group once")
+        groups[g] = key
+
+
+def min_seconds(model) -> float:
+    """The shortest walk: one gait cycle, the longest of the model's example cycles, in s
+    rounded up to 0.01 s (as the error line and `motionvar models` give it)."""
+    return math.ceil(float(np.max(model.key_times_span_)) * 100) / 100
 
 
 def run(args: argparse.Namespace) -> int:
@@ -100,15 +124,22 @@ def run(args: argparse.Namespace) -> int:
         raise CLIError(f"--variants must be >= 1; got {args.variants}")
     at_most(seconds * args.variants, MAX_SECONDS, "--seconds x --variants =", "s of walks per command")
     from ..ma2010.examples import root_solver  # after the checks: a refused request ends at once
-    from ..ma2010.generate import STRIDE_TOLERANCE, check_style, check_xi, generate_walks
+    from ..ma2010.generate import GROUP_LETTERS, STRIDE_TOLERANCE, check_style, check_xi, generate_walks
     from ..ma2010.storage import load_style_variation_model
 
     style_in = parse_numbers(args.style, "--style")
     xi_in = parse_xi(args.xi)
+    one_per_group(xi_in, GROUP_LETTERS)
     folder = out_dir(args.out)
     path, _ = rd.require(WHAT, MODEL, MODEL_SETTINGS, evaluations=EVALUATIONS)
-    saved = load_or_fail(WHAT, load_style_variation_model, path)
+    saved = rd.load(WHAT, load_style_variation_model, path)
     model = saved.model
+    shortest = min_seconds(model)
+    if seconds < shortest:
+        raise CLIError(
+            f"--seconds {seconds:g}: a walk is at least one gait cycle, {shortest:.2f} s (the longest of the "
+            "model's example cycles)"
+        )
     d = model.style_.shape[1]
     if len(style_in) == 1 and d > 1:
         style_in = style_in * d  # one number: every stride
@@ -117,26 +148,30 @@ def run(args: argparse.Namespace) -> int:
         xi = check_xi(xi_in, model)
     except ValueError as exc:
         raise CLIError(str(exc)) from exc
+    tag = "_".join(f"{v:g}" for v in style)
+    files = output_files([folder / f"ma2010_{tag}_v{k + 1}.bvh" for k in range(args.variants)], args.force)
     solver = root_solver(model.skeleton_, saved.joint_map)
     rig = dataset_rig(rd)
     with Progress("ma2010 walks", args.variants, enabled=not args.quiet) as bar:
         walks = generate_walks(
             model, solver, style, seconds, args.variants, args.seed, xi, progress=bar, cleanup=args.cleanup
         )
-    tag = "_".join(f"{v:g}" for v in style)
-    paths = [folder / f"ma2010_{tag}_v{k + 1}.bvh" for k in range(len(walks))]
-    write_motions(paths, [on_rig(w.motion, rig) for w in walks], args.unit_cm)
-    for p, w in zip(paths, walks):
+    write_motions(files, [on_rig(w.motion, rig) for w in walks], args.unit_cm)
+    for p, w in zip(files.paths, walks):
         m = w.measures
+        strides = [m["left_support_stride_cm"], m["right_support_stride_cm"]]
+        measured = bool(np.all(np.isfinite(strides)))
         xi_text = ", ".join(f"{g} {v:.3g}" for g, v in w.xi.items())
         drawn = "" if w.draws == 1 else f" (xi drawn {w.draws} times: strides off by > {STRIDE_TOLERANCE:.0%} redrawn)"
         say(
             f"{p}: {w.motion.n_frames} frames at {w.motion.fps:g} fps ({w.motion.duration:.2f} s); style "
             f"{', '.join(f'{v:g}' for v in style)} {saved.style_unit}; measured strides "
-            f"{m['left_support_stride_cm']:.1f}, {m['right_support_stride_cm']:.1f} cm; foot skating "
+            f"{', '.join(f'{v:.1f}' for v in strides)} cm; foot skating "
             f"{m['foot_skating_cm_s']:.2f} cm/s (cleanup {args.cleanup}); xi: {xi_text}{drawn}"
         )
-        if not w.accepted:
+        if not measured:
+            note(f"warning: {p}: too short to measure both strides (each foot needs two footfalls; try more --seconds)")
+        elif not w.accepted:
             note(
                 f"warning: {p}: no draw of xi in {w.draws} gave the requested strides within {STRIDE_TOLERANCE:.0%}; "
                 f"this is the closest (try another --seed or --xi)"

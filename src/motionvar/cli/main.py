@@ -8,11 +8,15 @@
     motionvar du2022 style --dataset synthetic --style old --n 5 --out styles/
 
 Every subcommand reads the model files of ``--results`` (default ``results``) and never
-fits anything. Errors a user can fix (a model not built yet, an argument outside what the
-model covers, a request above the command's size limit: its module's ``MAX_*``, checked
-before anything is loaded) are one line on stderr and exit status 2; no output file is
-left behind. Without ``--quiet`` a progress bar and the library's progress lines (e.g. each
-step of a graph walk) come on stderr. ``motionvar --version`` names the installed version.
+fits anything. Errors a user can fix (a model not built yet or unreadable, an argument
+outside what the model covers, a request above the command's size limit: its module's
+``MAX_*``, checked before anything is loaded, an output file that exists without
+``--force``) are one line on stderr and exit status 2. A command's files appear together
+when all are written, or none does (motionvar.io.atomic.AtomicFiles): after an error,
+Ctrl-C, SIGTERM or SIGHUP every output path is as it was (exit status 128 + the signal's
+number for a signal). Without ``--quiet`` a progress bar and the library's progress lines
+(e.g. each step of a graph walk) come on stderr. ``motionvar --version`` names the
+installed version.
 """
 
 from __future__ import annotations
@@ -20,11 +24,27 @@ from __future__ import annotations
 import argparse
 import contextlib
 import logging
+import signal
 import sys
+import threading
 from collections.abc import Sequence
 
+from ..io.units import UNIT_CM_MAX, UNIT_CM_MIN
 from . import du2022, egges2004, ma2010, models
-from .common import CLIError
+from .common import MAX_SEED, CLIError, check_output_options
+
+# Signals that stop a command as Ctrl-C does: the output transaction is rolled back.
+STOP_SIGNALS = tuple(getattr(signal, n) for n in ("SIGINT", "SIGTERM", "SIGHUP") if hasattr(signal, n))
+
+
+class Stopped(BaseException):
+    """A stop signal (SIGTERM, SIGHUP) raised in the command, as KeyboardInterrupt is for
+    SIGINT, so that its clean-up runs."""
+
+    def __init__(self, signum: int) -> None:
+        self.signum = signum
+        super().__init__(signal.Signals(signum).name)
+
 
 EXAMPLES = """examples:
   motionvar models
@@ -61,15 +81,26 @@ def _location(every_dataset: bool = False) -> argparse.ArgumentParser:
 
 def _common() -> argparse.ArgumentParser:
     """The options of the commands that write BVH files: --dataset, --results, --seed,
-    --unit-cm, --quiet."""
+    --unit-cm, --force, --quiet."""
     c = argparse.ArgumentParser(add_help=False, parents=[_location()])
     g = c.add_argument_group("output options")
-    g.add_argument("--seed", type=int, default=0, help="random seed: the same seed gives the same output (default 0)")
+    g.add_argument(
+        "--seed",
+        type=int,
+        default=0,
+        help=f"random seed, 0 to {MAX_SEED}: the same seed gives the same output (default 0)",
+    )
     g.add_argument(
         "--unit-cm",
         type=float,
         default=1.0,
-        help="centimetres per BVH length unit of the output (default 1: cm; 100: metres, 0.1: mm)",
+        help=f"centimetres per BVH length unit of the output, {UNIT_CM_MIN:g} to {UNIT_CM_MAX:g} (default 1: cm; "
+        "100: metres, 0.1: mm)",
+    )
+    g.add_argument(
+        "--force",
+        action="store_true",
+        help="overwrite output files that exist (regular files only; without it an existing one stops the command)",
     )
     g.add_argument("--quiet", action="store_true", help="no progress bar")
     return c
@@ -117,21 +148,51 @@ def progress_lines(enabled: bool):
         logger.setLevel(level)
 
 
+@contextlib.contextmanager
+def stop_signals():
+    """While the command runs, SIGTERM and SIGHUP raise Stopped and SIGINT raises
+    KeyboardInterrupt; once one came, the others are ignored while the command cleans up.
+    A signal the caller ignores (``nohup``) stays ignored; outside the main thread (where
+    Python cannot set handlers) nothing changes."""
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+
+    def stop(signum: int, frame) -> None:
+        for s in STOP_SIGNALS:
+            signal.signal(s, signal.SIG_IGN)
+        raise KeyboardInterrupt if signum == signal.SIGINT else Stopped(signum)
+
+    previous = {s: signal.getsignal(s) for s in STOP_SIGNALS}
+    for s, handler in previous.items():
+        if handler is not signal.SIG_IGN:
+            signal.signal(s, stop)
+    try:
+        yield
+    finally:
+        for s, handler in previous.items():
+            signal.signal(s, handler if handler is not None else signal.SIG_DFL)
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     """Run the command line ``argv`` (default ``sys.argv[1:]``); returns the exit status
-    (argparse's own usage errors exit with 2 through SystemExit)."""
+    (argparse's own usage errors exit with 2 through SystemExit; a stop signal 128 + its
+    number)."""
     args = build_parser().parse_args(argv)
     try:
-        if not (getattr(args, "unit_cm", 1.0) > 0):
-            raise CLIError(f"--unit-cm must be > 0; got {args.unit_cm:g}")
-        with progress_lines(not getattr(args, "quiet", True)):
-            return int(args.run(args) or 0)
+        with stop_signals():
+            check_output_options(args)
+            with progress_lines(not getattr(args, "quiet", True)):
+                return int(args.run(args) or 0)
     except CLIError as exc:
         print(f"motionvar {args.command}: error: {exc}", file=sys.stderr)
         return 2
     except KeyboardInterrupt:
         print(f"motionvar {args.command}: interrupted", file=sys.stderr)
-        return 130
+        return 128 + signal.SIGINT
+    except Stopped as exc:
+        print(f"motionvar {args.command}: stopped by {exc}", file=sys.stderr)
+        return 128 + exc.signum
 
 
 if __name__ == "__main__":

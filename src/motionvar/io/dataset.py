@@ -17,9 +17,24 @@ import pandas as pd
 from ..core.motion import Motion
 from ..core.skeleton import Skeleton
 from .atomic import atomic_write
+from .model_file import exception_line
 
 CLIPS_FILE = "clips.npz"
 METADATA_FILE = "metadata.csv"
+# The arrays of clips.npz that every dataset has (``translations`` only where a clip has them).
+CLIP_ARRAYS = (
+    "names",
+    "parents",
+    "rotation_orders",
+    "position_channels",
+    "end_site_joints",
+    "end_site_offsets",
+    "offsets",
+    "fps",
+    "starts",
+    "root_pos",
+    "rotations",
+)
 
 
 class DatasetError(ValueError):
@@ -136,8 +151,14 @@ def load_dataset(directory: str | Path) -> MotionDataset:
         with np.load(clips, allow_pickle=False) as z:
             arrays = {k: z[k] for k in z.files}
     except Exception as exc:  # zip/npy errors: name the file
-        raise DatasetError(f"{clips}: not a readable packed dataset ({exc})") from exc
-    metadata = pd.read_csv(meta, dtype={"clip_id": str, "subject": str})
+        raise DatasetError(f"{clips}: not a readable packed dataset ({exception_line(exc)})") from exc
+    try:
+        metadata = pd.read_csv(meta, dtype={"clip_id": str, "subject": str})
+    except Exception as exc:  # empty, garbled or not text: name the file
+        raise DatasetError(f"{meta}: not a readable metadata table ({exception_line(exc)})") from exc
+    missing = [k for k in CLIP_ARRAYS if k not in arrays]
+    if missing:
+        raise DatasetError(f"{clips}: not a packed dataset (no arrays {', '.join(missing)})")
     if len(metadata) != len(arrays["fps"]):
         raise DatasetError(f"{meta}: {len(metadata)} rows but {clips} holds {len(arrays['fps'])} clips")
     return MotionDataset(metadata=metadata, arrays=arrays)

@@ -3,7 +3,9 @@ settings in ``<base>.json`` (no pickle anywhere; torch weights are a ``state_dic
 ``<base>.pt``, read back with ``weights_only=True``, beside the same JSON).
 
 Both files are written atomically (:mod:`motionvar.io.atomic`): an interrupted save leaves
-no half-written model, and the files get an ordinary file's mode.
+no half-written model, and the files get an ordinary file's mode. Whatever makes a file
+unreadable (truncated, garbled, not JSON, not a zip of arrays, weights that are not a
+``state_dict`` of tensors) is a ValueError naming the file.
 """
 
 from __future__ import annotations
@@ -50,9 +52,11 @@ def _read_settings(data_file: Path, js: Path, kind: str | None) -> dict[str, Any
         if not f.is_file():
             raise FileNotFoundError(f"{f}: model file missing")
     try:
-        settings = json.loads(js.read_text())
+        settings = json.loads(js.read_text(encoding="utf-8"))
     except (OSError, ValueError) as exc:
         raise ValueError(f"{js}: not a readable model settings file ({exc})") from exc
+    if not isinstance(settings, dict):
+        raise ValueError(f"{js}: not a readable model settings file (a JSON {type(settings).__name__}, not an object)")
     if kind is not None and settings.get("kind") != kind:
         raise ValueError(f"{js}: not a saved {kind} (kind {settings.get('kind')!r})")
     return settings
@@ -67,8 +71,8 @@ def load_model(path: str | Path, kind: str | None = None) -> tuple[dict[str, np.
     try:
         with np.load(npz, allow_pickle=False) as z:
             arrays = {k: z[k] for k in z.files}
-    except (OSError, ValueError) as exc:
-        raise ValueError(f"{npz}: not a readable model array file ({exc})") from exc
+    except Exception as exc:  # zip, zlib and npy errors of a truncated or garbled file
+        raise ValueError(f"{npz}: not a readable model array file ({exception_line(exc)})") from exc
     return arrays, settings
 
 
@@ -93,5 +97,14 @@ def load_torch_model(path: str | Path, kind: str | None = None) -> tuple[dict, d
     try:
         state = torch.load(pt, weights_only=True)
     except Exception as exc:  # torch raises several kinds for a corrupt file
-        raise ValueError(f"{pt}: not a readable torch weights file ({exc})") from exc
+        raise ValueError(f"{pt}: not a readable torch weights file ({exception_line(exc)})") from exc
+    if not (isinstance(state, dict) and all(isinstance(k, str) and torch.is_tensor(v) for k, v in state.items())):
+        raise ValueError(f"{pt}: not a readable torch weights file (not a state_dict of named tensors)")
     return state, settings
+
+
+def exception_line(exc: BaseException) -> str:
+    """``exc`` as one line: its message, after its type unless an OSError or ValueError
+    (whose messages say what went wrong; a BadZipFile's or an EOFError's need the type)."""
+    text = " ".join(str(exc).split()) or "no message"
+    return text if isinstance(exc, (OSError, ValueError)) else f"{type(exc).__name__}: {text}"
