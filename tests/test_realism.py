@@ -161,8 +161,10 @@ def test_measures_on_generator_ground_truth():
         contacts = detect_foot_contacts(motion, jm, None, pos)
         ankles = tuple(int(i) for i in jm.indices(motion.skeleton, ["left_ankle", "right_ankle"]))
         cyc = rm.walk_cycles(rm.walk_events(pos, (contacts.left, contacts.right), ankles, motion.fps))
+        truth = [float(x) for x in row["footfall_strides_cm"].split(";")]
         assert len(cyc.stride_length) >= 2, row["clip_id"]
-        assert np.mean(cyc.stride_length) == pytest.approx(row["stride_length_cm"], rel=0.01), row["clip_id"]
+        # the measured strides join heel strikes 1-3, 2-4, ...: the first of the truth's
+        np.testing.assert_allclose(cyc.stride_length, truth[: len(cyc.stride_length)], atol=0.5)
         toes = jm.indices(motion.skeleton, ["left_toe", "right_toe"])
         clear = rm.toe_clearance(pos[:, toes[0], 1], contacts.left)
         assert clear.min() > 0.5, row["clip_id"]  # the generator's toe clears the floor in every swing
@@ -224,3 +226,31 @@ def test_cmu_captured_channels_are_where_xia_and_cmu_agree():
     for j, name in enumerate(cmu.skeleton.names[1:]):
         expected = tuple(still(a) if still(a) == still(b) else "either" for a, b in zip(xia_classes[j], cmu_classes[j]))
         assert CMU_CAPTURED_CHANNELS[name] == expected, name
+
+
+GAIT_STATISTICS = (
+    "stride_cv_pct",
+    "stride_time_cv_pct",
+    "step_time_cv_pct",
+    "stance_fraction_sd_pct",
+    "step_asymmetry_cm",
+    "stride_within_between",
+)
+
+
+@pytest.mark.parametrize("captured", [False, True])
+def test_captured_variation_brings_the_walks_into_the_bands(captured):
+    """With SynthSpec.captured_variation the walks' step-to-step, left/right and subject-to-subject
+    variation lies in the captured bands; without it (the default) strides repeat."""
+    from motionvar.io import load_dataset, save_dataset
+    from motionvar.realism import dataset_realism
+    from motionvar.synth import SynthSpec, generate_dataset
+
+    spec = SynthSpec(subjects=6, runs=0, sidesteps=0, picks=0, places=0, idle_clips=0, captured_variation=captured)
+    motions, meta = generate_dataset(spec)
+    with tempfile.TemporaryDirectory() as tmp:
+        save_dataset(tmp, motions, meta)
+        table = judge(dataset_realism(load_dataset(tmp), cmu_joint_map())[0])
+    walk = table[table["behaviour"] == "walk"].set_index("statistic")
+    inside = walk.loc[list(GAIT_STATISTICS), "in_band"].astype(bool)
+    assert inside.all() if captured else not inside[["stride_cv_pct", "step_asymmetry_cm"]].any(), inside

@@ -37,11 +37,18 @@ HANDS = ("LeftHand", "RightHand")
 
 @pytest.fixture(scope="module")
 def both():
-    """(clips with the capture layer, clips without it, metadata) of the same spec."""
-    on, meta = generate_dataset(SynthSpec(**SMALL))
-    off, meta_off = generate_dataset(SynthSpec(**SMALL, capture_motion=False))
-    assert meta.equals(meta_off)  # the layer changes no ground truth in the table
-    return on, off, meta
+    """(clips with the capture layer, clips without it, metadata) of the same spec: the layer
+    on the default clips, as generate_dataset applies it with captured_variation."""
+    off, meta = generate_dataset(SynthSpec(**SMALL))
+    return _layered(off, meta), off, meta
+
+
+def _layered(clips, meta):
+    seed, counts, out = SynthSpec(**SMALL).seed, {}, []
+    for m, behaviour in zip(clips, meta["behaviour"]):
+        n = counts[behaviour] = counts.get(behaviour, -1) + 1
+        out.append(add_capture_motion(m, behaviour, capture_rng(seed, 0, BEHAVIOURS.index(behaviour), n)))
+    return out
 
 
 def _touched(skeleton) -> set[int]:
@@ -133,9 +140,9 @@ def test_capture_motion_is_smooth_and_zero_mean(both):
 
 
 def test_off_is_the_generator_unchanged(both):
-    """capture_motion=False gives, bitwise, the clips of the generator's own streams."""
+    """captured_variation=False (the default) gives, bitwise, the clips of the generator's own streams."""
     _, off, meta = both
-    spec = SynthSpec(**SMALL, capture_motion=False)
+    spec = SynthSpec(**SMALL)
     subject = make_subjects(spec.subjects, spec.seed)[0]
     direct = [
         m
@@ -149,8 +156,8 @@ def test_off_is_the_generator_unchanged(both):
 
 
 def test_same_seed_same_arrays_other_seed_other_motion(both):
-    on, off, _ = both
-    again, _ = generate_dataset(SynthSpec(**SMALL))
+    on, off, meta = both
+    again = _layered(*generate_dataset(SynthSpec(**SMALL)))
     for a, b in zip(on, again):
         np.testing.assert_array_equal(a.rotations, b.rotations)
     given = off[0].rotations.copy()
@@ -160,6 +167,6 @@ def test_same_seed_same_arrays_other_seed_other_motion(both):
     assert not np.array_equal(one.rotations, on[0].rotations)
 
 
-def test_capture_motion_must_be_a_bool():
-    with pytest.raises(ValueError, match="capture_motion"):
-        SynthSpec(subjects=1, capture_motion=1).validate()
+def test_captured_variation_must_be_a_bool():
+    with pytest.raises(ValueError, match="captured_variation"):
+        SynthSpec(subjects=1, captured_variation=1).validate()

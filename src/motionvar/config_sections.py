@@ -14,6 +14,7 @@ from typing import Any
 SECTIONS: dict[str, str] = {
     "prep": "motionvar.prep.options:PrepOptions",
     "report": "motionvar.report.settings:ReportSettings",
+    "realism": "motionvar.realism.settings:RealismSettings",
     "ma2010": "motionvar.ma2010.settings:Ma2010Settings",
     "egges2004": "motionvar.egges2004.settings:Egges2004Settings",
     "fda": "motionvar.du2022.fda.settings:FdaSettings",

@@ -45,7 +45,7 @@ rule dataset_realism:
         ),
     params:
         prep=config["prep"],
-        settings=config.get("realism", {}),
+        settings=config["realism"],
         joint_map=lambda wc: joint_map_path(wc.dataset),
     log:
         ev_log("dataset_realism"),

@@ -24,7 +24,9 @@ def main(snakemake) -> None:
     table = judge(table)
     table.to_csv(snakemake.output.table, index=False, float_format="%.6g")
     joints.to_csv(snakemake.output.joints, index=False, float_format="%.6g")
-    fig = realism_figure(table, joints, f"Dataset '{snakemake.wildcards.dataset}': how it varies, against captured data")
+    fig = realism_figure(
+        table, joints, f"Dataset '{snakemake.wildcards.dataset}': how it varies, against captured data"
+    )
     fig.savefig(snakemake.output.figure, dpi=110)
     plt.close(fig)
 

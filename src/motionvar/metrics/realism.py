@@ -21,8 +21,7 @@ from dataclasses import dataclass
 
 import numpy as np
 from scipy.signal import butter, find_peaks, sosfiltfilt
-
-from ..core.quaternions import qfix, qinv, qmul, quat_to_rotvec
+from scipy.spatial.transform import Rotation
 
 SIDES = ("left", "right")
 
@@ -198,13 +197,17 @@ def rotation_channel_sd(rotations: np.ndarray) -> np.ndarray:
 
     ``rotations`` (T, J, 4) local unit quaternions (w, x, y, z), frames of many clips stacked.
     A channel is a component of the rotation vector of each frame's rotation relative to the
-    joint's mean rotation (the normalised quaternion mean, hemisphere-aligned first).
+    joint's mean rotation (the normalised mean of the quaternions, each first put in the
+    hemisphere of the joint's first frame).
     """
-    q = qfix(np.asarray(rotations, dtype=float), axis=0)
+    q = np.asarray(rotations, dtype=float)
+    T, J = q.shape[:2]
+    q = q * np.where(np.sum(q * q[:1], axis=-1, keepdims=True) < 0, -1.0, 1.0)
     mean = q.mean(axis=0)
     mean /= np.linalg.norm(mean, axis=-1, keepdims=True)
-    relative = qmul(qinv(mean)[None], q)
-    return np.degrees(quat_to_rotvec(relative).std(axis=0))
+    inverse = Rotation.from_quat(np.broadcast_to(mean, q.shape).reshape(-1, 4), scalar_first=True).inv()
+    relative = inverse * Rotation.from_quat(q.reshape(-1, 4), scalar_first=True)
+    return np.degrees(relative.as_rotvec().reshape(T, J, 3).std(axis=0))
 
 
 def channel_classes(sd_deg: np.ndarray, static_deg: float, near_static_deg: float) -> np.ndarray:
@@ -230,13 +233,14 @@ def path_ratio(path: np.ndarray) -> float:
     return float(np.linalg.norm(np.diff(path, axis=0), axis=1).sum() / straight) if straight > 0 else float("nan")
 
 
-def within_between_ratio(values: np.ndarray, groups: np.ndarray) -> float:
+def within_between_ratio(values: np.ndarray, groups: np.ndarray, min_per_group: int = 2) -> float:
     """Pooled within-group SD over the SD of group means, of (N,) or (N, D) values (rows
-    of D features: root-mean-square over features). NaN with fewer than 2 groups of 2."""
+    of D features: root-mean-square over features), over the groups of at least
+    ``min_per_group`` values. NaN with fewer than 2 such groups."""
     x = np.asarray(values, dtype=float)
     x = x[:, None] if x.ndim == 1 else x
     groups = np.asarray(groups)
-    labels = [g for g in np.unique(groups) if np.sum(groups == g) >= 2]
+    labels = [g for g in np.unique(groups) if np.sum(groups == g) >= max(min_per_group, 2)]
     if len(labels) < 2:
         return float("nan")
     means = np.stack([x[groups == g].mean(axis=0) for g in labels])

@@ -261,7 +261,7 @@ def dataset_realism(
             (
                 "stride_within_between",
                 "walk",
-                rm.within_between_ratio(strides[measured], spread_subject[measured]),
+                rm.within_between_ratio(strides[measured], spread_subject[measured], s.min_clips_per_subject),
                 "ratio",
                 int(measured.sum()),
                 "within-subject SD of a (neutral) walk's mean stride over the SD of subject means",
@@ -271,7 +271,7 @@ def dataset_realism(
             (
                 "posture_within_between",
                 "walk",
-                rm.within_between_ratio(np.array(postures), spread_subject),
+                rm.within_between_ratio(np.array(postures), spread_subject, s.min_clips_per_subject),
                 "ratio",
                 len(postures),
                 "the same for a walk's mean posture (joint rotation vectors)",

@@ -11,7 +11,7 @@ traits prefixed ``subj_``.
 Randomness: subjects come from ``make_subjects(subjects, seed)``; each (subject, behaviour)
 pair draws from its own stream ``default_rng([seed, subject index, behaviour index])``, so
 changing one behaviour's clip count leaves every other clip unchanged, and the same spec
-gives identical arrays and tables. The capture layer (:mod:`.capture`, ``SynthSpec.capture_motion``)
+gives identical arrays and tables. The capture layer (:mod:`.capture`, with ``SynthSpec.captured_variation``)
 draws from a stream of its own per clip, ``capture_rng(seed, subject index, behaviour index,
 clip index)``, so switching it leaves every other draw unchanged.
 """
@@ -72,10 +72,14 @@ class SynthSpec:
         picks / places: two-hand pick and place clips (regions low, forward, high, ...).
         idle_clips: idle standing clips of ``idle_duration_s`` seconds each.
         fps: frame rate of every clip.
-        capture_motion: add the small smooth rotations captured data carries on channels the
-            generator holds constant (:func:`~motionvar.synth.capture.add_capture_motion`;
-            feet, hips, knees, ankles, toes, root and the gripping hands keep their positions);
-            False gives the generator's clips unchanged.
+        captured_variation: vary as captured motion does (docs/gait.md, "Realism"): steps
+            that differ within a walk and between the feet (``sample_walk_params(...,
+            captured=True)``), the small smooth rotations captured data carries on channels the
+            generator holds constant (:func:`~motionvar.synth.capture.add_capture_motion`; feet,
+            hips, knees, ankles, toes, root and the gripping hands keep their positions) and
+            reaches with corrective sub-movements. False (the default) gives the data of the
+            published results; every extra draw comes after the others or from a stream of its
+            own, so the rest of each clip is drawn alike.
     """
 
     subjects: int = 25
@@ -89,13 +93,13 @@ class SynthSpec:
     idle_clips: int = 2
     idle_duration_s: float = 20.0
     fps: float = 120.0
-    capture_motion: bool = True
+    captured_variation: bool = False
 
     def validate(self) -> None:
         """ValueError naming the first bad field."""
         for f in fields(self):
             v = getattr(self, f.name)
-            if f.name in ("idle_duration_s", "fps", "capture_motion"):
+            if f.name in ("idle_duration_s", "fps", "captured_variation"):
                 continue
             low = 1 if f.name == "subjects" else 0
             if isinstance(v, bool) or not isinstance(v, (int, np.integer)) or v < low:
@@ -104,8 +108,8 @@ class SynthSpec:
             v = getattr(self, name)
             if isinstance(v, bool) or not isinstance(v, (int, float)) or not (math.isfinite(v) and lo <= v <= hi):
                 raise ValueError(f"SynthSpec.{name} must be a number in [{lo}, {hi}]; got {v!r}")
-        if not isinstance(self.capture_motion, (bool, np.bool_)):
-            raise ValueError(f"SynthSpec.capture_motion must be true or false; got {self.capture_motion!r}")
+        if not isinstance(self.captured_variation, (bool, np.bool_)):
+            raise ValueError(f"SynthSpec.captured_variation must be true or false; got {self.captured_variation!r}")
 
 
 def _turn(rng: np.random.Generator, variant: str) -> float:
@@ -116,15 +120,16 @@ def _turn(rng: np.random.Generator, variant: str) -> float:
 def _clips(subject: Subject, spec: SynthSpec, behaviour: str, rng: np.random.Generator):
     """Yield (style, clip-id tag, Motion, truth) for one subject and behaviour, in a fixed
     order; the truth carries the variant."""
-    fps = spec.fps
+    fps, captured = spec.fps, spec.captured_variation
     if behaviour == "walk":
         for style in STYLES:
             for _ in range(spec.walks_per_style):
-                m, tr = generate_walk(subject, sample_walk_params(subject, rng, style, fps=fps))
+                m, tr = generate_walk(subject, sample_walk_params(subject, rng, style, fps=fps, captured=captured))
                 yield style, style, m, tr
         for k in range(spec.turning_walks):
             variant = ("left", "right")[k % 2]
-            m, tr = generate_walk(subject, sample_walk_params(subject, rng, "neutral", _turn(rng, variant), fps=fps))
+            params = sample_walk_params(subject, rng, "neutral", _turn(rng, variant), fps=fps, captured=captured)
+            m, tr = generate_walk(subject, params)
             yield "neutral", variant, m, tr
     elif behaviour == "run":
         for k in range(spec.runs):
@@ -170,7 +175,7 @@ def _subject_clips(spec: SynthSpec, i: int) -> tuple[list[Motion], list[dict]]:
         counts: dict[str, int] = {}
         for n, (style, tag, motion, truth) in enumerate(_clips(subject, spec, behaviour, rng)):
             k = counts[tag] = counts.get(tag, -1) + 1
-            if spec.capture_motion:
+            if spec.captured_variation:
                 motion = add_capture_motion(motion, behaviour, capture_rng(spec.seed, i, b, n))
             row = {c: float("nan") for c in CONTRACT_COLUMNS}
             row.update(truth)

@@ -25,6 +25,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 import numpy as np
+from scipy.interpolate import PchipInterpolator
 
 from ..core.skeleton import Skeleton
 from .gait_params import RunParams, SidestepParams, WalkParams
@@ -218,15 +219,21 @@ def _passes_over(progress: np.ndarray, s: float, lo: int) -> int:
     return lo + int(idx[0]) if idx.size else len(progress) - 1
 
 
-def _stride_truth(contacts: list[Contact], full: list[int]) -> float:
-    """Mean distance between successive same-foot footprints, over the contact indices
-    ``full`` (each paired with the same foot's previous contact)."""
+def _strides(contacts: list[Contact], full: list[int]) -> list[float]:
+    """Distances between successive same-foot footprints, for the contact indices ``full``
+    (each paired with the same foot's previous contact)."""
     dist = []
     for i in full:
         c = contacts[i]
         prev = [j for j in range(i) if contacts[j].side == c.side]
         if prev:
-            dist.append(np.linalg.norm(c.ankle[[0, 2]] - contacts[prev[-1]].ankle[[0, 2]]))
+            dist.append(float(np.linalg.norm(c.ankle[[0, 2]] - contacts[prev[-1]].ankle[[0, 2]])))
+    return dist
+
+
+def _stride_truth(contacts: list[Contact], full: list[int]) -> float:
+    """Mean of :func:`_strides` (NaN when there is none)."""
+    dist = _strides(contacts, full)
     return float(np.mean(dist)) if dist else float("nan")
 
 
@@ -263,10 +270,35 @@ def _walk_timing(geo: BodyGeometry, p: WalkParams) -> _WalkTiming:
     t_a = p.stand_start_s
     hs = t_a + tau / 2.0 + (L - d_hs) / v + t_step * np.arange(K + 1)  # heel strikes 1 .. K+1
     lift = hs - t_swing
+    hs[:K] += p.offsets("strike_offsets_s")
+    lift[:K] += p.offsets("toe_off_offsets_s")
     t_b = t_a + K * t_step  # deceleration starts; the root then stops exactly at s = K L
     t_stop = t_b + tau
     n = _frame(max(t_stop, hs[-1]) + p.stand_end_s, fps) + 1
     return _WalkTiming(L, t_stride, tau, t_a, t_b, t_stop, hs, lift, n, np.arange(n) / fps)
+
+
+def _footfall_offsets(p: WalkParams) -> np.ndarray:
+    """(n_steps,) the heel strikes' footprint offsets along the path, 0 for the first and the
+    last (gait initiation and termination keep their nominal steps, so that the root, which
+    follows the offsets, never moves backwards while it speeds up or slows down)."""
+    e = p.offsets("footfall_offsets_cm").copy()
+    e[[0, -1]] = 0.0
+    return e
+
+
+def _progress_offset(p: WalkParams, tm: _WalkTiming) -> np.ndarray:
+    """(T,) the root's progress ahead of its steady ramp: the footprints' offsets along the path
+    (:func:`_footfall_offsets`) at their nominal heel strikes, 0 while standing, joined by a C1
+    monotone cubic (PCHIP)."""
+    e = _footfall_offsets(p)
+    if not np.any(e):
+        return np.zeros(tm.n)
+    K = p.n_steps
+    knots = np.concatenate([[tm.t_a], tm.hs[:K] - p.offsets("strike_offsets_s"), [tm.t_stop]])
+    values = np.concatenate([[0.0], e, [0.0]])
+    t = np.clip(tm.t, tm.t_a, tm.t_stop)
+    return PchipInterpolator(knots, values)(t)
 
 
 def _closing_laterals(geo: BodyGeometry, p: WalkParams, a: int) -> tuple[float, float]:
@@ -324,6 +356,10 @@ def _walk_contacts(
         )
 
     lateral = lambda side: (0.5 if side == 0 else -0.5) * p.step_width_cm  # noqa: E731
+    # along the path: the footprint's offset, and a quarter of the asymmetry forward for the
+    # left foot, back for the right (left steps longer by step_asymmetry_cm)
+    e = _footfall_offsets(p)
+    along = lambda k, side: e[k - 1] + (0.25 if side == 0 else -0.25) * p.step_asymmetry_cm  # noqa: E731
     for side, k_lift in ((a, 0), (1 - a, 1)):  # standing feet, under the hip joints
         add(side, 0, _frame(tm.lift[k_lift], fps) + 1, 0.0, geo.hip[side, 0], 0.0, 0.85 * m.knee_peak_deg, True)
     for k in range(1, K + 2):  # heel strikes 1 .. K, then the closing step
@@ -331,7 +367,7 @@ def _walk_contacts(
         closing = k == K + 1
         stop = _frame(tm.lift[k + 1], fps) + 1 if k + 2 <= K + 1 else n
         peak = 0.75 * m.knee_peak_deg if k + 2 == K + 1 else m.knee_peak_deg
-        s_k, lat = (K * L, lat_close) if closing else (k * L, lateral(side))
+        s_k, lat = (K * L, lat_close) if closing else (k * L + along(k, side), lateral(side))
         heel = (0.5 if closing else 1.0) * m.heel_strike_deg
         add(side, _frame(tm.hs[k - 1], fps), stop, s_k, lat, heel, peak, stop < n)
     return contacts
@@ -354,7 +390,7 @@ def plan_walk(geo: BodyGeometry, p: WalkParams) -> Plan:
     m, fps, K = p.manner, p.fps, p.n_steps
     tm = _walk_timing(geo, p)
     t, L, n = tm.t, tm.half_stride, tm.n
-    progress = ramp_progress(t, p.speed_cm_s, tm.t_a, tm.t_b, tm.tau)
+    progress = ramp_progress(t, p.speed_cm_s, tm.t_a, tm.t_b, tm.tau) + _progress_offset(p, tm)
     path = Path(turn=np.radians(p.turn_deg), s0=0.5 * L, s1=(K - 0.5) * L)
     heading = path.heading(progress)
     a = _side_index(p.first_foot)
@@ -365,8 +401,10 @@ def plan_walk(geo: BodyGeometry, p: WalkParams) -> Plan:
     # Lowest at heel strike (double support), highest at mid-stance.
     height = -env * (0.5 + m.bob_cm * (1.0 + np.cos(4.0 * np.pi * phase_a)))
     contacts = _walk_contacts(geo, p, tm, path, progress)
+    strides = _strides(contacts, list(range(4, K + 2)))
     truth = {
-        "stride_length_cm": _stride_truth(contacts, list(range(4, K + 2))),
+        "stride_length_cm": float(np.mean(strides)),
+        "footfall_strides_cm": ";".join(f"{x:.4f}" for x in strides),
         "speed_cm_s": p.speed_cm_s,
         "step_width_cm": p.step_width_cm,
         "turn_deg": p.turn_deg,

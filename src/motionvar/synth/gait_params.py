@@ -21,8 +21,20 @@ Neutral adult values (docs/gait.md; Perry & Burnfield 2010, Winter 2009, Novache
   the habit's offset from 20° (80-100°); arm swing ±30°; 4° more forward lean.
 - side-stepping: lateral step 30-55 cm (GAIT 30-60), 90 steps/min (slower than walking),
   swing 55 % of each step, feet lifted 7 cm.
-Clip-to-clip variation within a subject is small (stride ±4 %, cadence ±3 %, arm swing
+Clip-to-clip variation within a subject is small (walking stride ±4 %, cadence ±3 %, arm swing
 ±6 %, lean ±1°), so subjects stay recognisable (docs/gait.md, "Consistency").
+
+Captured variation (``sample_walk_params(..., captured=True)``; off by default, which gives the
+data of the published results): a walk's stride varies by ``CAPTURED_STRIDE_CLIP_SD`` around the
+subject's instead of 4 % (a test-retest ICC of stride length of 0.8-0.98 in healthy adults puts
+the within-subject SD at 0.14-0.5 of the between-subject SD, docs/gait.md "Realism"; the
+subjects' leg lengths vary by ≈ 5 %), and steps vary within a walk (the captured Bandai-Namco walks
+give stride CV 3.1 %, stride-time CV 2.9 %, toe-off jitter 1.8 % of the cycle; Hausdorff 2005:
+stride-time CV 1-3 % in healthy adults): each heel strike's footprint lies off its nominal place
+along the path by an AR(1) process over the footfalls (SD ``FOOTFALL_JITTER_CM``, lag-one
+correlation ``FOOTFALL_JITTER_RHO``: a slowly varying progression that the body follows), each
+heel strike and toe-off is early or late by ``STRIKE_JITTER_S`` / ``TOE_OFF_JITTER_S`` (SD), and
+the subject's left steps are longer than its right ones by ``Subject.step_asymmetry_cm``.
 """
 
 from __future__ import annotations
@@ -41,6 +53,12 @@ WALK_CADENCE = 110.0  # steps / min
 RUN_STRIDE_PER_LEG = 2.6
 RUN_CADENCE = 165.0  # steps / min
 SIDESTEP_CADENCE = 90.0  # steps / min
+WALK_STRIDE_CLIP_SD = 0.04  # log-SD of a walk's stride around the subject's
+CAPTURED_STRIDE_CLIP_SD = 0.025  # the same with captured variation (within/between ≈ 0.45)
+FOOTFALL_JITTER_CM = 2.5  # SD of a footprint's offset along the path (stride CV ≈ 2 %)
+FOOTFALL_JITTER_RHO = 0.5  # lag-one correlation of successive footprints' offsets
+STRIKE_JITTER_S = 0.015  # SD of a heel strike's time (stride-time CV ≈ 2 %)
+TOE_OFF_JITTER_S = 0.015  # SD of a toe-off's time (stance fraction SD ≈ 1.4 % of the cycle)
 
 
 @dataclass(frozen=True)
@@ -155,10 +173,19 @@ class WalkParams:
     heading_deg: float = 0.0
     fps: float = 120.0
     manner: Manner = field(default_factory=Manner)
+    footfall_offsets_cm: tuple[float, ...] = ()
+    strike_offsets_s: tuple[float, ...] = ()
+    toe_off_offsets_s: tuple[float, ...] = ()
+    step_asymmetry_cm: float = 0.0
 
     @property
     def variant(self) -> str:
         return "forward" if self.turn_deg == 0 else ("left" if self.turn_deg > 0 else "right")
+
+    def offsets(self, name: str) -> np.ndarray:
+        """(n_steps,) per-heel-strike offsets of ``name`` (module docstring): zeros when none."""
+        values = getattr(self, name)
+        return np.asarray(values, dtype=float) if len(values) else np.zeros(self.n_steps)
 
     def validate(self) -> None:
         o = "WalkParams"
@@ -168,6 +195,14 @@ class WalkParams:
         _check(o, "stand_end_s", self.stand_end_s, 0.1, 30.0)
         _check_gait(self, o, stride=(20.0, 250.0), speed=(10.0, 300.0), steps=(3, 60), cadence=(40.0, 200.0))
         self.manner.validate(o, (0.52, 0.8))
+        limits = {"footfall_offsets_cm": 0.1 * self.stride_length_cm, "strike_offsets_s": 0.1, "toe_off_offsets_s": 0.1}
+        for name, limit in limits.items():
+            values = getattr(self, name)
+            if len(values) not in (0, self.n_steps) or not np.all(np.abs(values) <= limit):
+                raise ValueError(f"{o}.{name} must hold n_steps values within ±{limit:.3g}; got {values}")
+        _check(
+            o, "step_asymmetry_cm", self.step_asymmetry_cm, -0.1 * self.stride_length_cm, 0.1 * self.stride_length_cm
+        )
 
 
 @dataclass(frozen=True)
@@ -305,27 +340,57 @@ def sample_walk_params(
     turn_deg: float = 0.0,
     n_steps: int | None = None,
     fps: float = 120.0,
+    captured: bool = False,
 ) -> WalkParams:
-    """A walk of ``subject`` in ``style``: stride ∝ leg length, cadence from the habit."""
+    """A walk of ``subject`` in ``style``: stride ∝ leg length, cadence from the habit; with
+    ``captured``, steps that vary as captured ones do (module docstring), drawn after the rest."""
     f = style_factors(style)
-    stride = WALK_STRIDE_PER_LEG * subject.leg_length_cm * f.stride * math.exp(rng.normal(0.0, 0.04))
+    clip_sd = CAPTURED_STRIDE_CLIP_SD if captured else WALK_STRIDE_CLIP_SD
+    stride = WALK_STRIDE_PER_LEG * subject.leg_length_cm * f.stride * math.exp(rng.normal(0.0, clip_sd))
     cadence = WALK_CADENCE * subject.cadence_scale * f.cadence * math.exp(rng.normal(0.0, 0.03))
     speed = stride * cadence / 120.0
     width = max(subject.step_width_cm * f.step_width + rng.normal(0.0, 1.0), 0.0)
+    steps = int(n_steps if n_steps is not None else rng.integers(5, 9))
+    first_foot = SIDES[int(rng.integers(2))]
+    stand = (float(rng.uniform(0.4, 0.9)), float(rng.uniform(0.4, 0.9)))
+    manner = walk_manner(subject, style, speed, width, rng)
+    placement = _placement(rng)
     return WalkParams(
         style=style,
         stride_length_cm=stride,
         speed_cm_s=speed,
         step_width_cm=width,
         turn_deg=float(turn_deg),
-        n_steps=int(n_steps if n_steps is not None else rng.integers(5, 9)),
-        first_foot=SIDES[int(rng.integers(2))],
-        stand_start_s=float(rng.uniform(0.4, 0.9)),
-        stand_end_s=float(rng.uniform(0.4, 0.9)),
+        n_steps=steps,
+        first_foot=first_foot,
+        stand_start_s=stand[0],
+        stand_end_s=stand[1],
         fps=fps,
-        manner=walk_manner(subject, style, speed, width, rng),
-        **_placement(rng),
+        manner=manner,
+        **placement,
+        **(step_variation(steps, stride, subject.step_asymmetry_cm, rng) if captured else {}),
     )
+
+
+def _bounded(rng: np.random.Generator, sd: float, n: int, limit: float) -> np.ndarray:
+    return np.clip(rng.normal(0.0, sd, n), -limit, limit)
+
+
+def step_variation(n_steps: int, stride_cm: float, asymmetry_cm: float, rng: np.random.Generator) -> dict:
+    """WalkParams fields of a walk's step-to-step variation (module docstring): AR(1) footprint
+    offsets, heel-strike and toe-off jitter (each within 3 SD and the fields' limits)."""
+    limit = min(3.0 * FOOTFALL_JITTER_CM, 0.1 * stride_cm)
+    e = np.empty(n_steps)
+    innovation = rng.normal(0.0, FOOTFALL_JITTER_CM * math.sqrt(1.0 - FOOTFALL_JITTER_RHO**2), n_steps)
+    e[0] = rng.normal(0.0, FOOTFALL_JITTER_CM)
+    for k in range(1, n_steps):
+        e[k] = FOOTFALL_JITTER_RHO * e[k - 1] + innovation[k]
+    return {
+        "footfall_offsets_cm": tuple(float(x) for x in np.clip(e, -limit, limit)),
+        "strike_offsets_s": tuple(float(x) for x in _bounded(rng, STRIKE_JITTER_S, n_steps, 3 * STRIKE_JITTER_S)),
+        "toe_off_offsets_s": tuple(float(x) for x in _bounded(rng, TOE_OFF_JITTER_S, n_steps, 3 * TOE_OFF_JITTER_S)),
+        "step_asymmetry_cm": float(np.clip(asymmetry_cm, -0.1 * stride_cm, 0.1 * stride_cm)),
+    }
 
 
 def sample_run_params(

@@ -20,7 +20,8 @@ Definitions of the truth:
   to heel-off, the toe base from heel-off to toe-off (flat-footed side-steps: both);
 - stride_length_cm: mean horizontal distance between successive same-foot footprints
   (ankle positions of the flat foot), over the steady strides (walks: without the half
-  steps of gait initiation and the closing step);
+  steps of gait initiation and the closing step); walks list each of those strides, in
+  time order (heel strikes 1-3, 2-4, ...), in ``footfall_strides_cm``;
 - speed_cm_s: the root's steady progression speed along its path (stride / stride time).
 """
 

@@ -24,6 +24,9 @@ Ranges and their rationale:
 - idle_foot_preference ~ Dirichlet(2, 2, 1): how often the subject rests on the left foot,
   the right foot or both (Egges 2004 Sec. 5.1 categories).
 - breath_rate_hz ~ U(0.2, 0.33): 12-20 breaths per minute.
+- step_asymmetry_cm ~ N(0, ``STEP_ASYMMETRY_SD_CM``): how much longer the left steps are than
+  the right ones; captured walks differ by a few cm (Bandai-Namco's walks: a median of 2.9 cm,
+  docs/gait.md "Realism"), drawn from a stream of its own.
 """
 
 from __future__ import annotations
@@ -33,6 +36,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..core.skeleton import Skeleton, cmu_skeleton
+
+STEP_ASYMMETRY_SD_CM = 2.5
 
 
 @dataclass(frozen=True)
@@ -54,6 +59,7 @@ class Subject:
     weight_shift_s: float
     idle_foot_preference: tuple[float, float, float]
     breath_rate_hz: float
+    step_asymmetry_cm: float = 0.0
 
     @property
     def leg_length_cm(self) -> float:
@@ -83,6 +89,8 @@ def make_subjects(n: int, seed: int) -> list[Subject]:
     if n < 1:
         raise ValueError(f"number of subjects must be >= 1, got {n}")
     rng = np.random.default_rng(seed)
+    # a stream of its own, so that every other trait is drawn as before
+    asymmetry = np.random.default_rng([seed, 1]).normal(0.0, STEP_ASYMMETRY_SD_CM, n)
     base = cmu_skeleton()
     subjects = []
     for i in range(n):
@@ -106,6 +114,7 @@ def make_subjects(n: int, seed: int) -> list[Subject]:
                 weight_shift_s=float(rng.uniform(4.0, 15.0)),
                 idle_foot_preference=(float(pref[0]), float(pref[1]), float(pref[2])),
                 breath_rate_hz=float(rng.uniform(0.2, 0.33)),
+                step_asymmetry_cm=float(asymmetry[i]),
             )
         )
     return subjects
