@@ -3,11 +3,17 @@
 import numpy as np
 import pytest
 
+from motionvar.core import cmu_joint_map
 from motionvar.core.quaternions import qmul, qnormalize, qrot
+from motionvar.metrics.realism import speed_peaks
+from motionvar.prep.options import PrepOptions
+from motionvar.prep.segmentation import hand_speed
+from motionvar.synth import reach
 from motionvar.synth.ik import two_bone_ik
 from motionvar.synth.intervals import format_intervals, parse_intervals, parse_ranges
 from motionvar.synth.reach import REGIONS, ReachParams, generate_pick, generate_place, reach_style, target_grid
-from motionvar.synth.stance import body_com, to_body_frame
+from motionvar.synth.signals import submovements
+from motionvar.synth.stance import body_com, stance_habit, to_body_frame
 from motionvar.synth.subjects import make_subjects
 
 SUBJECTS = make_subjects(5, seed=11)
@@ -38,6 +44,11 @@ def _grips(truth):
 
 def _body_positions(m, truth):
     return to_body_frame(m.positions(), truth["heading_deg"], (truth["start_x"], truth["start_z"]))
+
+
+def _hands(m, truth):
+    """(T, 2, 3) wrist positions in the feet frame."""
+    return _body_positions(m, truth)[:, [m.skeleton.index("LeftHand"), m.skeleton.index("RightHand")]]
 
 
 def _angle(u, v):
@@ -241,6 +252,10 @@ def test_dense_grid_is_reachable():
         ({"start_xz": (1.0, 2.0, 3.0)}, "start_xz"),
         ({"heading_deg": float("inf")}, "heading_deg"),
         ({"fps": 0.0}, "fps"),
+        ({"correction": "yes"}, "correction"),
+        ({"primary_amplitude": 1.1}, "primary_amplitude"),
+        ({"correction_onset": 0.0}, "correction_onset"),
+        ({"correction_duration": 2.0}, "correction_duration"),
     ],
 )
 def test_bad_params_raise(kw, name):
@@ -280,3 +295,82 @@ def test_intervals_round_trip():
     assert parse_intervals(format_intervals(items)) == items
     with pytest.raises(ValueError, match="name:start:stop"):
         parse_intervals("a:1")
+
+
+CORRECTED = dict(correction=True, primary_amplitude=0.85, correction_onset=0.85, correction_duration=0.3)
+
+
+def _reach_peaks(m, truth):
+    """Hand-speed peaks (prominence 10 % of the maximum, as the realism table counts them)
+    from the start to the truth's end of the reach."""
+    end = parse_intervals(truth["segments"])[0][2]
+    speed = hand_speed(m, cmu_joint_map(), m.positions(), PrepOptions())
+    return speed_peaks(speed[:end], 0.1)
+
+
+@pytest.mark.parametrize("kind", sorted(GEN))
+def test_corrective_submovement_gives_a_second_speed_peak(kind):
+    """A reach whose primary falls 15 % short has a second hand-speed peak and still ends at
+    the grips, stopped, at the same frame as the reach without one (Meyer et al. 1988;
+    Novak, Miller & Houk 2002); feet stay planted."""
+    for i, subject in enumerate(SUBJECTS[:3]):
+        for region in ("low", "forward", "high"):
+            one, t1 = _clip(kind, subject, seed=7 + i, region=region, correction=False)
+            two, t2 = _clip(kind, subject, seed=7 + i, region=region, **CORRECTED)
+            assert (t1["reach_submovements"], t2["reach_submovements"]) == (1, 2)
+            assert (_reach_peaks(one, t1), _reach_peaks(two, t2)) == (1, 2), (kind, region, i)
+            assert t1["segments"] == t2["segments"] and one.n_frames == two.n_frames
+            end = parse_intervals(t2["segments"])[0][2]
+            hands = [_hands(m, t) for m, t in ((one, t1), (two, t2))]
+            grips = _grips(t2)
+            assert np.linalg.norm(hands[1][end - 1] - grips, axis=-1).max() < 0.01
+            assert np.linalg.norm(hands[1][end - 1] - hands[1][end - 2], axis=-1).max() * two.fps < 1.0
+            feet = [two.skeleton.index(n) for n in ("LeftFoot", "RightFoot", "LeftToeBase", "RightToeBase")]
+            assert np.abs(two.positions()[:, feet] - two.positions()[:1, feet]).max() < 0.5
+            # at the primary's end (0.9 × reach time / 1.15 after the hands set off) the
+            # corrected hands are still short by about half the 15 % shortfall
+            primary_end = end - 1 - int(round(0.9 * t2["reach_duration_s"] * (1 - 1 / 1.15) * two.fps))
+            way = np.linalg.norm(grips.mean(0) - hands[1][0].mean(0))
+            short = [np.linalg.norm(h[primary_end].mean(0) - grips.mean(0)) / way for h in hands]
+            assert short[0] < 0.03 and 0.04 < short[1] < 0.12, (kind, region, short)
+
+
+def test_correction_share_and_draw_order():
+    """Corrections are drawn on a share CORRECTION_SHARE of clips, their values in the stated
+    ranges, and after every other value of the clip (giving them changes nothing else)."""
+    subject = SUBJECTS[0]
+    habit, style = stance_habit(subject), reach_style(subject)
+    draws = [reach._draw_clip(subject, ReachParams(), habit, style, np.random.default_rng(k)) for k in range(2000)]
+    corrections = [d.correction for d in draws if d.correction is not None]
+    assert len(corrections) / len(draws) == pytest.approx(reach.CORRECTION_SHARE, abs=0.04)
+    primary = np.array([c.primary for c in corrections])
+    lo, hi = reach.PRIMARY_ERROR
+    assert np.all((1.0 - primary >= lo) & (1.0 - primary <= hi))
+    for name, (lo, hi) in (("onset", reach.CORRECTION_ONSET), ("duration", reach.CORRECTION_DURATION)):
+        x = np.array([getattr(c, name) for c in corrections])
+        assert np.all((x >= lo) & (x <= hi))
+    forced = reach._draw_clip(subject, ReachParams(**CORRECTED), habit, style, np.random.default_rng(0))
+    drawn = draws[0]
+    for f in ("heading", "start_xz", "width", "dscale", "hold", "lead", "settle", "q", "elbow_pref"):
+        assert getattr(forced, f) == getattr(drawn, f)
+    assert np.array_equal(forced.target, drawn.target)
+    assert forced.correction == reach._Correction(0.85, 0.85, 0.3)
+    # correction=False draws nothing: the stream goes on as with every value given
+    states = []
+    for params in (ReachParams(correction=False), ReachParams(**CORRECTED), ReachParams()):
+        rng = np.random.default_rng(1)
+        reach._draw_clip(subject, params, habit, style, rng)
+        states.append(rng.random())
+    assert states[0] == states[1] != states[2]
+
+
+def test_submovement_profiles():
+    """The secondary starts at onset × the primary's duration and the later of the two ends
+    at τ = 1; both run 0 → 1."""
+    tau = np.linspace(0.0, 1.0, 1001)
+    first, second = submovements(tau, 0.8, 0.4)
+    span = 1.2
+    assert first[0] == second[0] == 0.0 and first[-1] == second[-1] == 1.0
+    assert np.all(np.diff(first) >= 0) and np.all(np.diff(second) >= 0)
+    assert np.all(first[tau >= 1.0 / span] == 1.0) and np.all(second[tau <= 0.8 / span] == 0.0)
+    assert second[tau < 1.0].max() < 1.0

@@ -43,6 +43,19 @@ Body (all parameters written down here, none tuned to a paper's result):
   ``0.55 s + 0.9 s/m × hand travel + 0.4 s × s`` (longer for longer and deeper reaches, in
   the spirit of Fitts' law), times a personal tempo (0.85–1.15) and a per-clip
   ``duration_scale`` (0.8–1.25); the trunk leads the hands by 10 % of the movement.
+- Corrective sub-movements: on a share :data:`CORRECTION_SHARE` of clips the hands reach
+  the grips in two minimum-jerk sub-movements (Meyer et al. 1988; Novak, Miller & Houk
+  2002). The primary falls short by a drawn share :data:`PRIMARY_ERROR` of the hands'
+  displacement (primary movements tend to undershoot, Elliott et al. 2001; overshoots are
+  left out: the reach posture leaves the arm too little spare extension to go past low
+  targets); a smaller secondary one, starting before the primary ends
+  (:data:`CORRECTION_ONSET`, :data:`CORRECTION_DURATION`: fractions of the primary's
+  duration), takes the hands exactly to the grips. The shortfall lies along the hands'
+  displacement in the feet frame (trunk and arm together) and is added to the path below.
+  Both sub-movements share the hands' part of the reach time (movement time is that of
+  both, Meyer et al. 1988), so the hands stop at the grips at the same time with or
+  without a correction; on the other clips one movement lands on the grips. The retrieve
+  is a single movement.
 - The hands travel on a path fixed to the midpoint of the shoulders, so they move with the
   trunk (as hanging arms do), bowing forward by up to 6 cm on the way; the head turns down
   towards the target.
@@ -60,7 +73,7 @@ from ..core.kinematics import fk
 from ..core.motion import Motion
 from ..core.skeleton import Skeleton
 from .intervals import format_intervals, format_ranges
-from .signals import minimum_jerk, subject_rng
+from .signals import minimum_jerk, subject_rng, submovements
 from .stance import (
     SIDES,
     Feet,
@@ -91,6 +104,23 @@ REGIONS: dict[str, tuple[tuple[float, float], tuple[float, float], tuple[float, 
 """Target boxes (x, y, z ranges in cm, feet frame) for a reference body (height scale 1)."""
 _GRID = np.linspace(0.0, 1.0, 101)  # lowering values searched for the reach posture
 
+# Corrective sub-movements of the reach (module docstring). The literature gives their
+# presence and direction, not these numbers: each value is the authors' choice.
+CORRECTION_SHARE = 0.5
+"""Share of reaches with a secondary sub-movement: corrections follow many but not all aimed
+movements ("frequently", Novak, Miller & Houk 2002; Meyer et al. 1988)."""
+PRIMARY_ERROR = (0.05, 0.15)
+"""Range of the primary sub-movement's shortfall in a corrected reach, as a share of the
+hands' displacement: the primary covers most of the distance and a secondary one follows
+when it misses the target (Meyer et al. 1988), primary movements tending to undershoot
+(Elliott, Helsen & Chua 2001); a near miss (under 5 %) is a reach without a correction."""
+CORRECTION_ONSET = (0.7, 0.9)
+"""Range of the secondary's onset as a fraction of the primary's duration: it starts before
+the primary ends (overlapping sub-movements, Novak, Miller & Houk 2002)."""
+CORRECTION_DURATION = (0.2, 0.4)
+"""Range of the secondary's duration as a fraction of the primary's: a smaller, shorter
+movement with the same bell-shaped speed profile (Novak, Miller & Houk 2002)."""
+
 
 @dataclass(frozen=True)
 class ReachParams:
@@ -106,6 +136,13 @@ class ReachParams:
         duration_scale: per-clip speed factor of the movements, 0.8–1.25 when drawn.
         hold_s: grasp (pick) or release (place) time at the target, 0.2–0.5 s when drawn.
         lead_in_s / settle_s: still standing before / after the action, 0.1–0.4 / 0.1–0.3 s.
+        correction: whether the reach has a corrective sub-movement, True on a share
+            :data:`CORRECTION_SHARE` of clips when drawn; False draws nothing for it.
+        primary_amplitude: the primary's share of the hands' displacement in a corrected
+            reach, 1 minus a shortfall uniform in :data:`PRIMARY_ERROR` when drawn.
+        correction_onset / correction_duration: the secondary's onset and duration as
+            fractions of the primary's duration, uniform in :data:`CORRECTION_ONSET` /
+            :data:`CORRECTION_DURATION` when drawn. The three are unused without a correction.
         start_xz: floor position (x, z) of the feet frame's origin; heading_deg: facing
             direction about +y from +z. Drawn in ±300 cm and ±180° when None.
         fps: frames per second.
@@ -122,6 +159,10 @@ class ReachParams:
     start_xz: tuple[float, float] | None = None
     heading_deg: float | None = None
     fps: float = 120.0
+    correction: bool | None = None
+    primary_amplitude: float | None = None
+    correction_onset: float | None = None
+    correction_duration: float | None = None
 
     def validate(self) -> None:
         if self.region not in REGIONS:
@@ -138,6 +179,9 @@ class ReachParams:
             ("hold_s", self.hold_s, 0.0, 5.0),
             ("lead_in_s", self.lead_in_s, 0.0, 5.0),
             ("settle_s", self.settle_s, 0.0, 5.0),
+            ("primary_amplitude", self.primary_amplitude, 0.5, 1.0),
+            ("correction_onset", self.correction_onset, 0.1, 1.0),
+            ("correction_duration", self.correction_duration, 0.1, 1.0),
         )
         for name, value, lo, hi in checks:
             if value is not None and not (np.isfinite(value) and lo <= value <= hi):
@@ -148,6 +192,8 @@ class ReachParams:
             raise ValueError(f"ReachParams.heading_deg must be finite; got {self.heading_deg}")
         if not (np.isfinite(self.fps) and 10.0 <= self.fps <= 1000.0):
             raise ValueError(f"ReachParams.fps must be in [10, 1000]; got {self.fps}")
+        if self.correction is not None and not isinstance(self.correction, (bool, np.bool_)):
+            raise ValueError(f"ReachParams.correction must be True, False or None; got {self.correction!r}")
 
 
 @dataclass(frozen=True)
@@ -265,10 +311,42 @@ class _Body:
 
 
 @dataclass(frozen=True)
+class _Correction:
+    """A corrected reach's sub-movements (module docstring): the primary's share of the
+    hands' displacement, the secondary's onset and duration as fractions of the primary's
+    duration."""
+
+    primary: float
+    onset: float
+    duration: float
+
+
+def _given_or_drawn(value: float | None, bounds: tuple[float, float], rng: np.random.Generator) -> float:
+    """``value``, or a uniform draw in ``bounds`` when it is None."""
+    return float(rng.uniform(*bounds)) if value is None else float(value)
+
+
+def _draw_correction(params: ReachParams, rng: np.random.Generator) -> _Correction | None:
+    """The clip's :class:`_Correction`, or None for a single movement; each value from
+    ``params`` or drawn from ``rng`` in a fixed order, whether used or not. With
+    ``params.correction`` False nothing is drawn, so the stream is that of a generator
+    without corrections."""
+    if params.correction is not None and not params.correction:
+        return None
+    corrected = bool(rng.random() < CORRECTION_SHARE) if params.correction is None else True
+    given = params.primary_amplitude
+    primary = 1.0 - float(rng.uniform(*PRIMARY_ERROR)) if given is None else float(given)
+    onset = _given_or_drawn(params.correction_onset, CORRECTION_ONSET, rng)
+    duration = _given_or_drawn(params.correction_duration, CORRECTION_DURATION, rng)
+    return _Correction(primary, onset, duration) if corrected else None
+
+
+@dataclass(frozen=True)
 class _ClipDraws:
     """Per-clip values of a reach clip, from :class:`ReachParams` or drawn (module docstring):
     placement, target and object width, timing, lifting strategy ``q``, preferred reach
-    elbow (deg), carrying arm posture (rad) and the planted feet."""
+    elbow (deg), carrying arm posture (rad), the planted feet and the reach's corrective
+    sub-movement (None: none)."""
 
     heading: float
     start_xz: tuple[float, float]
@@ -283,13 +361,15 @@ class _ClipDraws:
     carry_flex: float
     carry_elbow: float
     feet: Feet
+    correction: _Correction | None
 
 
 def _draw_clip(
     subject: Subject, params: ReachParams, habit: StanceHabit, style: ReachStyle, rng: np.random.Generator
 ) -> _ClipDraws:
     """The clip's :class:`_ClipDraws`, drawn from ``rng`` in a fixed order where
-    ``params`` leaves a value None; the personal habits vary a little per clip."""
+    ``params`` leaves a value None; the personal habits vary a little per clip. The
+    correction is drawn last, so the other values do not depend on it."""
     heading = np.radians(params.heading_deg if params.heading_deg is not None else rng.uniform(-180.0, 180.0))
     start_xz = params.start_xz if params.start_xz is not None else tuple(rng.uniform(-300.0, 300.0, 2))
     target = draw_target(params, subject, rng)
@@ -303,8 +383,22 @@ def _draw_clip(
     carry_flex = np.radians(style.carry_arm_flex_deg + rng.normal(0.0, 3.0))
     carry_elbow = np.radians(style.carry_elbow_deg + rng.normal(0.0, 4.0))
     feet = plant_feet(subject.skeleton, habit.width_cm + rng.normal(0.0, 1.0), habit.toe_out_deg + rng.normal(0.0, 1.5))
+    correction = _draw_correction(params, rng)
     return _ClipDraws(
-        heading, start_xz, target, width, dscale, hold, lead, settle, q, elbow_pref, carry_flex, carry_elbow, feet
+        heading,
+        start_xz,
+        target,
+        width,
+        dscale,
+        hold,
+        lead,
+        settle,
+        q,
+        elbow_pref,
+        carry_flex,
+        carry_elbow,
+        feet,
+        correction,
     )
 
 
@@ -398,7 +492,9 @@ def _hand_state(hands: np.ndarray, shoulders: np.ndarray) -> tuple[np.ndarray, n
 class _Timeline:
     """Timing of a reach clip (module docstring): reach and retrieve durations (s), the time
     the hands reach the grips, the frame count, and the minimum-jerk profiles (T,) of the
-    body and hands going (``m_*``, ``m_hold`` through the hold) and coming back (``u_*``)."""
+    body and hands going (``m_*``, ``m_hold`` through the hold) and coming back (``u_*``);
+    ``m_miss`` is the primary's miss (a share of the hands' displacement) not yet corrected,
+    0 without a correction."""
 
     t_reach: float
     t_back: float
@@ -406,6 +502,7 @@ class _Timeline:
     n: int
     m_body: np.ndarray
     m_hand: np.ndarray
+    m_miss: np.ndarray
     m_hold: np.ndarray
     u_hand: np.ndarray
     u_body: np.ndarray
@@ -416,7 +513,8 @@ def _timeline(
 ) -> _Timeline:
     """Lead-in, reach, hold, retrieve, settle: each movement lasts 0.55 s + 0.9 s/m × hand
     travel (m) + 0.4 s × lowering, times tempo and duration scale, kept in [0.5, 2.5] s; the
-    trunk leads the hands by 10 % of the movement."""
+    trunk leads the hands by 10 % of the movement. A corrected reach's two sub-movements
+    share the hands' part of it (:func:`~motionvar.synth.signals.submovements`)."""
     t_reach = float(np.clip(style.tempo * d.dscale * (0.55 + 0.9 * travel + 0.4 * s_end), 0.5, 2.5))
     t_back = float(np.clip(style.tempo * d.dscale * (0.55 + 0.9 * travel_back + 0.4 * s_end), 0.5, 2.5))
     hold = d.hold
@@ -426,13 +524,21 @@ def _timeline(
     t_d = t_c + t_back
     n = int(np.ceil((t_d + d.settle) * fps)) + 1
     t = np.arange(n) / fps
+    tau_hand = (t - t_a - 0.1 * t_reach) / (0.9 * t_reach)
+    c = d.correction
+    if c is None:
+        m_hand, m_miss = minimum_jerk(tau_hand), np.zeros(n)
+    else:
+        m_hand, second = submovements(tau_hand, c.onset, c.duration)
+        m_miss = (c.primary - 1.0) * (m_hand - second)
     return _Timeline(
         t_reach=t_reach,
         t_back=t_back,
         t_b=t_b,
         n=n,
         m_body=minimum_jerk((t - t_a) / (0.9 * t_reach)),
-        m_hand=minimum_jerk((t - t_a - 0.1 * t_reach) / (0.9 * t_reach)),
+        m_hand=m_hand,
+        m_miss=m_miss,
         m_hold=minimum_jerk((t - t_b) / hold) if hold > 0 else (t >= t_b).astype(float),
         u_hand=minimum_jerk((t - t_c) / (0.9 * t_back)),
         u_body=minimum_jerk((t - t_c - 0.1 * t_back) / (0.9 * t_back)),
@@ -440,15 +546,17 @@ def _timeline(
 
 
 def _hand_path(
-    sh_mid: np.ndarray, keys: list[tuple[np.ndarray, np.ndarray]], tl: _Timeline
+    sh_mid: np.ndarray, keys: list[tuple[np.ndarray, np.ndarray]], tl: _Timeline, reach: np.ndarray
 ) -> tuple[np.ndarray, np.ndarray]:
     """Hands' centre (T, 3) in world coordinates and offsets (T, 2, 3) from it, blended
     between the key states ``keys`` (start, grips, after the hold, end) relative to the
-    shoulders' midpoint ``sh_mid`` (T, 3), bowing forward by up to 6 cm on the way."""
+    shoulders' midpoint ``sh_mid`` (T, 3), bowing forward by up to 6 cm on the way, plus the
+    primary's uncorrected miss ``tl.m_miss`` × ``reach`` (3,), the centre's displacement from
+    the start to the grips."""
     k0, k1, k1b, k2 = keys
     m_hand, m_hold, u_hand = tl.m_hand, tl.m_hold, tl.u_hand
     centre = k0[0] + np.outer(m_hand, k1[0] - k0[0]) + np.outer(m_hold, k1b[0] - k1[0])
-    centre = centre + np.outer(u_hand, k2[0] - k1b[0])
+    centre = centre + np.outer(u_hand, k2[0] - k1b[0]) + np.outer(tl.m_miss, reach)
     bow = np.array([0.0, 0.0, 1.0])
     for (a, b), m in (((k0, k1), m_hand), ((k1b, k2), u_hand)):
         amp = min(0.1 * np.linalg.norm(b[0] - a[0]), 6.0)
@@ -475,6 +583,7 @@ def _reach_truth(params: ReachParams, kind: str, d: _ClipDraws, tl: _Timeline, s
         "reach_duration_s": tl.t_reach,
         "retrieve_duration_s": tl.t_back,
         "lowering": float(s_end),
+        "reach_submovements": 1 if d.correction is None else 2,
         "heading_deg": float(np.degrees(d.heading)),
         "start_x": float(d.start_xz[0]),
         "start_z": float(d.start_xz[1]),
@@ -503,7 +612,8 @@ def _generate(subject: Subject, params: ReachParams, rng: np.random.Generator, k
     keys = [
         _hand_state(h, pos_g[row, arms]) for h, row in ((start_hands, 0), (grips, k), (after_hold, k), (end_hands, 0))
     ]
-    travel = np.linalg.norm(grips.mean(0) - start_hands.mean(0)) / 100.0
+    reach = grips.mean(0) - start_hands.mean(0)
+    travel = np.linalg.norm(reach) / 100.0
     travel_back = np.linalg.norm(end_hands.mean(0) - after_hold.mean(0)) / 100.0
     tl = _timeline(style, d, s_end, travel, travel_back, fps)
 
@@ -512,7 +622,7 @@ def _generate(subject: Subject, params: ReachParams, rng: np.random.Generator, k
     back = np.interp(s, _GRID, back_g)
     root, rot = body.pose(s, q, back, gaze=attention * np.interp(s, _GRID, gaze_g))
     frames = fk(rot, root, sk.offsets, sk.parents, return_rotations=True)
-    centre_w, spacing = _hand_path(frames[0][:, arms].mean(axis=1), keys, tl)
+    centre_w, spacing = _hand_path(frames[0][:, arms].mean(axis=1), keys, tl, reach)
     turn = heading_quat(s * body.yaw)
     for i, side in enumerate(SIDES):
         solve_arm(sk, rot, root, side, centre_w + spacing[:, i], elbow_pole(turn, side), frames=frames)
@@ -529,7 +639,8 @@ def generate_pick(subject: Subject, params: ReachParams, rng: np.random.Generato
     target), target_x/y/z (object centre in the feet frame: x left, y up from the floor,
     z forward, origin between the ankles; cm), segments ``pick_reach`` (until the first
     frame with the hands at the object) and ``pick_retrieve``, foot contacts (both feet
-    throughout), object width, durations and the lowering s.
+    throughout), object width, durations, the lowering s and ``reach_submovements`` (2 with
+    a corrective sub-movement, else 1).
     """
     return _generate(subject, params, rng, "pick")
 

@@ -60,3 +60,14 @@ def subject_rng(subject: Subject, purpose: str) -> np.random.Generator:
         zlib.crc32(np.ascontiguousarray(subject.skeleton.offsets, dtype=np.float64).tobytes()),
     ]
     return np.random.default_rng(key)
+
+
+def submovements(tau: np.ndarray | float, onset: float, duration: float) -> tuple[np.ndarray, np.ndarray]:
+    """Minimum-jerk profiles (each 0 → 1) of the primary and the secondary sub-movement of an
+    aimed movement over τ in [0, 1] (Meyer et al. 1988; Novak, Miller & Houk 2002): the
+    secondary starts ``onset`` × the primary's duration after it (before its end when
+    ``onset`` < 1: overlapping) and lasts ``duration`` × it; the primary's duration is set
+    so that the later of the two ends at τ = 1."""
+    span = max(1.0, onset + duration)  # the whole movement, in primary durations
+    t = np.asarray(tau, dtype=float) * span
+    return minimum_jerk(t), minimum_jerk((t - onset) / duration)
