@@ -340,7 +340,7 @@ def test_correction_share_and_draw_order():
     ranges, and after every other value of the clip (giving them changes nothing else)."""
     subject = SUBJECTS[0]
     habit, style = stance_habit(subject), reach_style(subject)
-    draws = [reach._draw_clip(subject, ReachParams(), habit, style, np.random.default_rng(k)) for k in range(2000)]
+    draws = [reach._draw_clip(subject, ReachParams(correction=None), habit, style, np.random.default_rng(k)) for k in range(2000)]
     corrections = [d.correction for d in draws if d.correction is not None]
     assert len(corrections) / len(draws) == pytest.approx(reach.CORRECTION_SHARE, abs=0.04)
     primary = np.array([c.primary for c in corrections])
@@ -355,9 +355,9 @@ def test_correction_share_and_draw_order():
         assert getattr(forced, f) == getattr(drawn, f)
     assert np.array_equal(forced.target, drawn.target)
     assert forced.correction == reach._Correction(0.85, 0.85, 0.3)
-    # correction=False draws nothing: the stream goes on as with every value given
+    # correction=False (the default) draws nothing: the stream goes on as with every value given
     states = []
-    for params in (ReachParams(correction=False), ReachParams(**CORRECTED), ReachParams()):
+    for params in (ReachParams(), ReachParams(**CORRECTED), ReachParams(correction=None)):
         rng = np.random.default_rng(1)
         reach._draw_clip(subject, params, habit, style, rng)
         states.append(rng.random())

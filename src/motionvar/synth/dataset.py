@@ -144,7 +144,8 @@ def _clips(subject: Subject, spec: SynthSpec, behaviour: str, rng: np.random.Gen
     elif behaviour in ("pick", "place"):
         gen: Callable = generate_pick if behaviour == "pick" else generate_place
         for k in range(spec.picks if behaviour == "pick" else spec.places):
-            m, tr = gen(subject, ReachParams(region=REACH_REGIONS[k % 3], fps=fps), rng)
+            params = ReachParams(region=REACH_REGIONS[k % 3], fps=fps, correction=None if captured else False)
+            m, tr = gen(subject, params, rng)
             yield "neutral", tr["variant"], m, tr
     else:
         for _ in range(spec.idle_clips):

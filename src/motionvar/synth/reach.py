@@ -136,8 +136,9 @@ class ReachParams:
         duration_scale: per-clip speed factor of the movements, 0.8–1.25 when drawn.
         hold_s: grasp (pick) or release (place) time at the target, 0.2–0.5 s when drawn.
         lead_in_s / settle_s: still standing before / after the action, 0.1–0.4 / 0.1–0.3 s.
-        correction: whether the reach has a corrective sub-movement, True on a share
-            :data:`CORRECTION_SHARE` of clips when drawn; False draws nothing for it.
+        correction: whether the reach has a corrective sub-movement; None draws it, True on a
+            share :data:`CORRECTION_SHARE` of clips (the data generator does so with
+            ``SynthSpec.captured_variation``); False (the default) draws nothing for it.
         primary_amplitude: the primary's share of the hands' displacement in a corrected
             reach, 1 minus a shortfall uniform in :data:`PRIMARY_ERROR` when drawn.
         correction_onset / correction_duration: the secondary's onset and duration as
@@ -159,7 +160,7 @@ class ReachParams:
     start_xz: tuple[float, float] | None = None
     heading_deg: float | None = None
     fps: float = 120.0
-    correction: bool | None = None
+    correction: bool | None = False
     primary_amplitude: float | None = None
     correction_onset: float | None = None
     correction_duration: float | None = None
