@@ -340,7 +340,10 @@ def test_correction_share_and_draw_order():
     ranges, and after every other value of the clip (giving them changes nothing else)."""
     subject = SUBJECTS[0]
     habit, style = stance_habit(subject), reach_style(subject)
-    draws = [reach._draw_clip(subject, ReachParams(correction=None), habit, style, np.random.default_rng(k)) for k in range(2000)]
+    draws = [
+        reach._draw_clip(subject, ReachParams(correction=None), habit, style, np.random.default_rng(k))
+        for k in range(2000)
+    ]
     corrections = [d.correction for d in draws if d.correction is not None]
     assert len(corrections) / len(draws) == pytest.approx(reach.CORRECTION_SHARE, abs=0.04)
     primary = np.array([c.primary for c in corrections])
