@@ -175,17 +175,18 @@ REAL = ROOT.parent / "shared" / "data" / "real"
 
 
 def _real_table(name: str) -> pd.DataFrame:
-    """The realism table of a shared real set, imported as its config/real file says and
-    packed as the data rule packs it (float32 rotations)."""
-    from motionvar.io import import_bvh_folder, load_dataset, load_joint_map, save_dataset
+    """The realism table of a shared real set, loaded by rule data's own loader from its
+    config/real entry and packed as that rule packs it (float32 rotations)."""
+    from rule_scripts import script
+
+    from motionvar.io import load_dataset, save_dataset
     from motionvar.realism import dataset_realism
 
     entry = yaml.safe_load((ROOT / "config" / "real" / f"{name}.yaml").read_text())["datasets"][name]
-    jm = load_joint_map(ROOT / entry["joint_map"]) if entry.get("joint_map") else cmu_joint_map()
-    keys = ("drop_first_frame", "behaviour_aliases", "style_aliases", "neutral_style", "primitive_labels")
-    motions, meta = import_bvh_folder(
-        REAL / name, entry["labels"], entry["unit_cm"], joint_map=jm, **{k: entry[k] for k in keys if k in entry}
-    )
+    entry = {**entry, "path": str(REAL / name)}  # the config's paths are relative to the repository root
+    if entry.get("joint_map"):
+        entry["joint_map"] = str(ROOT / entry["joint_map"])
+    motions, meta, jm = script("data").load(entry)
     with tempfile.TemporaryDirectory() as tmp:
         save_dataset(tmp, motions, meta)
         table, _ = dataset_realism(load_dataset(tmp), jm)
