@@ -103,6 +103,24 @@ def test_read_small_file_values(tmp_path):
     assert step[:, 1].max() < 15 and step[:, 3].max() < 10
 
 
+@pytest.mark.parametrize("fmt", ["%.6f", "%r", "%.25g", "%.3e"])
+def test_frame_values_are_loadtxts_bit_for_bit(fmt):
+    """The frame reader (pandas' C parser) gives np.loadtxt's values exactly: six decimals as
+    BVH writers use, shortest round-trip reprs, more digits than a double holds, exponents;
+    blank and whitespace-only lines skipped, tabs and surrounding spaces as separators."""
+    from motionvar.io.bvh import _frame_values
+
+    rng = np.random.default_rng(4)
+    x = (rng.standard_normal(6000) * 10.0 ** rng.integers(-8, 8, 6000)).reshape(-1, 6)
+    lines = [" \t".join(fmt % float(v) for v in row) for row in x]
+    lines[3], lines[7] = "  " + lines[3] + "  ", ""
+    lines.insert(10, "   ")
+    ours = _frame_values("\n".join(lines))
+    ref = np.loadtxt(lines, dtype=float, comments=None, ndmin=2)
+    assert ours.shape == ref.shape == (len(x) - 1, 6)
+    assert np.array_equal(ours, ref)
+
+
 def test_root_without_position_channels(tmp_path):
     header = HEADER.replace(
         "OFFSET 0 0 0\n  CHANNELS 6 Xposition Yposition Zposition Zrotation Yrotation Xrotation",
