@@ -44,6 +44,13 @@ def test_euler_to_quat_rejects_an_order_that_is_not_a_permutation():
         Q.euler_to_quat(np.zeros((2, 3)), "ZXZ")
 
 
+@pytest.mark.parametrize("shape", [(4,), (7, 4), (60, 31, 4), (3, 20, 31, 4)])
+def test_qnormalize_divides_by_numpys_norm_bit_for_bit(shape):
+    q = np.random.default_rng(5).normal(size=shape) * 7.0
+    assert np.array_equal(Q.qnormalize(q), q / np.linalg.norm(q, axis=-1, keepdims=True))
+    assert Q.qnormalize(np.array([0, 3, 0, 4])).tolist() == [0.0, 0.6, 0.0, 0.8]  # integers too
+
+
 def test_log_exp_round_trip():
     rng = np.random.default_rng(1)
     q = random_quats(rng, (200,))

@@ -3,6 +3,8 @@ bad input gives one clear error line naming the file or config key, exit status 
 no output file."""
 
 import json
+import subprocess
+import sys
 from pathlib import Path
 
 import numpy as np
@@ -266,3 +268,37 @@ def test_data_script_reroots_at_the_hips_and_passes(tmp_path):
     assert clip.skeleton.names == cmu_skeleton().names  # Ground is gone, Hips is joint 0
     assert np.allclose(clip.root_pos[:, 1], 95.0) and np.isclose(clip.root_pos[-1, 2], 100.0)
     assert "plausibility over 1 clips" in Path(fake.log[0]).read_text()
+
+
+@pytest.mark.skipif(not sys.platform.startswith("linux"), reason="glibc's mallopt")
+def test_keep_freed_memory_reuses_large_blocks_without_new_page_faults():
+    """After ``_rule.keep_freed_memory`` a freed 200 MB array's pages serve the next one (no
+    new page faults); without it each is a fresh mmap, faulted in page by page (pages of 4 KiB,
+    or 2 MiB where transparent huge pages serve it)."""
+    code = """
+import resource, sys
+import numpy as np
+sys.path.insert(0, {scripts!r})
+if {keep}:
+    from _rule import keep_freed_memory
+    assert keep_freed_memory()
+def faults():
+    return resource.getrusage(resource.RUSAGE_SELF).ru_minflt
+np.ones(25_000_000)
+before = faults()
+np.ones(25_000_000)
+print(faults() - before)
+"""
+    scripts = str(Path(__file__).resolve().parents[1] / "workflow" / "scripts")
+    new_faults = {
+        keep: int(
+            subprocess.run(
+                [sys.executable, "-c", code.format(scripts=scripts, keep=keep)],
+                check=True,
+                capture_output=True,
+                text=True,
+            ).stdout
+        )
+        for keep in (False, True)
+    }
+    assert new_faults[True] < 50 < new_faults[False], new_faults  # 4 KiB or 2 MiB (huge) pages

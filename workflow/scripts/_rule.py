@@ -13,7 +13,8 @@ log (with the traceback in the log only) and exit with status 1; Snakemake then 
 the rule's outputs. :class:`motionvar.claims.NotApplicable` from an evaluation (the data
 lacks what it needs) writes the evaluation's not-applicable outputs instead. Any other
 exception is a bug and propagates with its traceback.
-It also selects matplotlib's file backend (Agg) for the script.
+It also selects matplotlib's file backend (Agg) for the script, and has glibc keep freed
+memory for reuse (:func:`keep_freed_memory`).
 
 Profiling: with the environment variable ``MOTIONVAR_PROFILE=DIR`` set, ``run`` wraps the
 rule's ``main`` in cProfile and writes ``DIR/<rule>.prof`` (``pstats``/snakeviz format)
@@ -41,6 +42,7 @@ BAD_INPUT = (ValueError, OSError, KeyError)
 
 def run(snakemake, main) -> None:
     _file_backend()
+    keep_freed_memory()
     with open(snakemake.log[0], "w") as log:
         logging.basicConfig(
             level=logging.INFO,
@@ -86,6 +88,29 @@ def log_job_cpu() -> None:
         system,
         max(own.ru_maxrss, kids.ru_maxrss) / 1024,
     )
+
+
+MALLOC_KEEP_BYTES = 1 << 30
+_M_TRIM_THRESHOLD, _M_MMAP_THRESHOLD = -1, -3  # mallopt parameters, <malloc.h>
+
+
+def keep_freed_memory(threshold: int = MALLOC_KEEP_BYTES) -> bool:
+    """Have glibc serve blocks up to ``threshold`` bytes from its heap and keep freed memory
+    for reuse (``mallopt`` M_MMAP_THRESHOLD and M_TRIM_THRESHOLD; either alone does not do
+    it). By default every block over 128 KiB-32 MiB is a fresh ``mmap`` that the kernel
+    zero-fills page by page and ``munmap`` returns at once: the fits' large temporaries
+    (forward kinematics over all clips, autograd buffers, eigendecompositions) cost system
+    time on every objective evaluation (docs/speed.md). The numbers computed do not change.
+    False where the C library is not glibc (nothing is changed there)."""
+    import ctypes
+    import ctypes.util
+
+    try:
+        libc = ctypes.CDLL(ctypes.util.find_library("c") or "libc.so.6")
+        mallopt = libc.mallopt
+    except (OSError, AttributeError):
+        return False
+    return bool(mallopt(_M_MMAP_THRESHOLD, threshold)) and bool(mallopt(_M_TRIM_THRESHOLD, threshold))
 
 
 def _file_backend() -> None:

@@ -63,14 +63,14 @@ def fk(
     lead, J = rotations.shape[:-2], rotations.shape[-2]
     M = int(np.prod(lead, dtype=np.int64))
     offsets = np.asarray(offsets)
-    rot = np.moveaxis(rotations.reshape(M, J, 4), 0, -1)  # (J, 4, M) view
+    rot = np.ascontiguousarray(np.moveaxis(rotations.reshape(M, J, 4), 0, -1))  # (J, 4, M) rows
     if translations is None and offsets.ndim == 2:
         local = offsets[:, :, None]  # (J, 3, 1): the same offsets for every (clip, frame)
     else:
         local = np.broadcast_to(offsets, lead + (J, 3))
         if translations is not None:
             local = np.where(np.isnan(translations), local, translations)
-        local = np.moveaxis(np.broadcast_to(local, lead + (J, 3)).reshape(M, J, 3), 0, -1)
+        local = np.ascontiguousarray(np.moveaxis(np.broadcast_to(local, lead + (J, 3)).reshape(M, J, 3), 0, -1))
     root = np.broadcast_to(np.asarray(root_pos), lead + (3,)).reshape(M, 3)
     dtype = np.result_type(rotations, root, local, 2.0)
     grot = np.empty((J, 4, M), dtype=np.result_type(rotations))
@@ -78,7 +78,7 @@ def fk(
     grot[0], gpos[0] = rot[0], root.T
     for j in range(1, J):
         p = parents[j]
-        _qmul_rows(grot[p], np.ascontiguousarray(rot[j]), grot[j])
+        _qmul_rows(grot[p], rot[j], grot[j])
         _add_qrot_rows(gpos[p], grot[p], local[j], gpos[j])
     pos = np.ascontiguousarray(np.moveaxis(gpos, -1, 0)).reshape(lead + (J, 3))
     if return_rotations:
