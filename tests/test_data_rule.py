@@ -9,6 +9,7 @@ import sys
 from pathlib import Path
 
 import numpy as np
+import pytest
 import yaml
 
 from motionvar.core import CMU_UNIT_CM, Motion, cmu_skeleton
@@ -18,6 +19,7 @@ from motionvar.io.bvh_dataset import bvh_files
 
 ROOT = Path(__file__).resolve().parents[1]
 TARGET = "results/mine/data/metadata.csv"
+pytestmark = pytest.mark.e2e  # Snakemake subprocesses
 
 
 def motion(frames: int = 6) -> Motion:

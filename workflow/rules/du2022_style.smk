@@ -66,6 +66,8 @@ rule du2022_style_vae:
         "../scripts/du2022_style_vae.py"
 
 
+# every style of a primitive in one job: each CVAE is seeded alike (the same weights as one job
+# per style) and the job reads the clips and imports torch once
 rule du2022_style_cvae:
     input:
         clips=f"{PREP}/clips.npz",
@@ -77,18 +79,18 @@ rule du2022_style_cvae:
         joint_map=joint_map_input,
     wildcard_constraints:
         primitive=STYLE_PRIMITIVE_PATTERN,
-        style=STYLE_STYLE_PATTERN,
     output:
-        model=f"{STYLE_MODELS}/cvae/{{primitive}}/{{style}}.pt",
-        settings=f"{STYLE_MODELS}/cvae/{{primitive}}/{{style}}.json",
-        history=f"{STYLE_MODELS}/cvae/{{primitive}}/{{style}}_history.csv",
+        model=style_cvaes(["{primitive}"]),
+        settings=style_cvaes(["{primitive}"], "settings"),
+        history=style_cvaes(["{primitive}"], "history"),
     params:
         settings=config["style"],
+        styles=STYLE_CFG["styles"],
         joint_map=lambda wc: joint_map_path(wc.dataset),
     log:
-        ev_log("du2022_style_cvae", "{primitive}_{style}"),
+        ev_log("du2022_style_cvae", "{primitive}"),
     benchmark:
-        ev_benchmark("du2022_style_cvae", "{primitive}_{style}")
+        ev_benchmark("du2022_style_cvae", "{primitive}")
     priority: PRIORITY["du2022_style_cvae"]
     # one thread: the same weights bit for bit as with two (measured), and two such jobs side by
     # side take ~20 % less CPU than one on two threads (OpenMP's waiting threads)

@@ -1,7 +1,8 @@
-"""Rule du2022_style_cvae (Du 2022 Sec. 5.3.3, 5.4.1): the CVAE of one primitive and style:
-the neutral clips as content plus one style example, loss Eq. 5.11 with the Gram style term
-Eq. 5.10 (weight alpha, Gram matrices of Eq. 5.9 summed or averaged: config style.cvae);
-starts from the neutral VAE when cvae.init_from_neutral."""
+"""Rule du2022_style_cvae (Du 2022 Sec. 5.3.3, 5.4.1): the CVAEs of one primitive, one per
+configured style (``params.styles``, in the order of the outputs): the neutral clips as content
+plus one style example, loss Eq. 5.11 with the Gram style term Eq. 5.10 (weight alpha, Gram
+matrices of Eq. 5.9 summed or averaged: config style.cvae); starts from the neutral VAE when
+cvae.init_from_neutral. Each CVAE is seeded by itself: the same weights as one job per style."""
 
 
 def main(snakemake) -> None:
@@ -10,12 +11,13 @@ def main(snakemake) -> None:
     from motionvar.du2022.style import fit_style_cvae, load_vae, save_vae
 
     dataset, layout, space = load_inputs(snakemake)
-    wc = snakemake.wildcards
+    primitive, out = snakemake.wildcards.primitive, snakemake.output
     neutral = load_vae(snakemake.input.vae)[0]
     settings = load_settings(snakemake)
-    cvae, shape, info, history = fit_style_cvae(dataset, layout, space, neutral, wc.primitive, wc.style, settings)
-    save_vae(snakemake.output.model, cvae, shape, info)
-    history.to_csv(snakemake.output.history, index=False)
+    for style, model, history_csv in zip(snakemake.params.styles, out.model, out.history, strict=True):
+        cvae, shape, info, history = fit_style_cvae(dataset, layout, space, neutral, primitive, style, settings)
+        save_vae(model, cvae, shape, info)
+        history.to_csv(history_csv, index=False)
 
 
 if "snakemake" in globals():
