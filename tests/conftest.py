@@ -1,9 +1,13 @@
 """Shared fixtures. ``ci_run``: the whole workflow on config/ci.yaml in a temporary working
 directory, run once per test session through the default profile (its default target ends
-with the dataset's report, reports/synthetic.html); used by tests/test_pipeline_e2e.py and,
-as the local reference run, by tests/test_cluster_generic.py (so CI runs the CI pipeline
-locally once)."""
+with the dataset's report, reports/synthetic.html); used by tests/test_pipeline_e2e.py,
+tests/test_progress.py and, as the local reference run, by tests/test_cluster_generic.py. The
+test command runs the tests in parallel processes (pytest-xdist, pyproject.toml); the first
+process that asks for ``ci_run`` runs the pipeline and the others wait for it and read it back,
+so a session runs the CI pipeline locally once."""
 
+import json
+import os
 import resource
 import subprocess
 import sys
@@ -32,17 +36,29 @@ def run_snakemake(*args, cwd, timeout=900, env=None):
 @pytest.fixture(scope="session")
 def ci_run(tmp_path_factory):
     """(working directory, wall s, CPU s of the process tree, CompletedProcess) of one local
-    run of config/ci.yaml on 2 cores."""
-    work = tmp_path_factory.mktemp("ci_run")
-    before = resource.getrusage(resource.RUSAGE_CHILDREN)
-    start = time.perf_counter()
-    result = run_snakemake("-d", str(work), "--configfile", CI_CONFIG, "--cores", "2", cwd=work)
-    wall = time.perf_counter() - start
-    after = resource.getrusage(resource.RUSAGE_CHILDREN)
-    cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
-    print(f"CI pipeline: wall {wall:.1f} s, CPU {cpu:.1f} s")
+    run of config/ci.yaml on 2 cores, shared by the session's processes (module docstring)."""
+    from filelock import FileLock
+
+    shared = tmp_path_factory.getbasetemp()
+    if "PYTEST_XDIST_WORKER" in os.environ:
+        shared = shared.parent  # the folder every xdist worker's base folder lies in
+    work, record = shared / "ci_run", shared / "ci_run.json"
+    with FileLock(str(shared / "ci_run.lock")):
+        if not record.is_file():
+            work.mkdir()
+            before = resource.getrusage(resource.RUSAGE_CHILDREN)
+            start = time.perf_counter()
+            result = run_snakemake("-d", str(work), "--configfile", CI_CONFIG, "--cores", "2", cwd=work)
+            wall = time.perf_counter() - start
+            after = resource.getrusage(resource.RUSAGE_CHILDREN)
+            cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+            run = {"wall": wall, "cpu": cpu, "returncode": result.returncode}
+            record.write_text(json.dumps({**run, "stdout": result.stdout, "stderr": result.stderr}))
+    run = json.loads(record.read_text())
+    result = subprocess.CompletedProcess(["snakemake"], run["returncode"], run["stdout"], run["stderr"])
+    print(f"CI pipeline: wall {run['wall']:.1f} s, CPU {run['cpu']:.1f} s")
     assert result.returncode == 0, result.stdout[-4000:] + result.stderr[-8000:]
-    return work, wall, cpu, result
+    return work, run["wall"], run["cpu"], result
 
 
 @pytest.fixture(scope="module")
