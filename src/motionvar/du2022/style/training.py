@@ -430,6 +430,15 @@ def fit_primitive_vae(
     return vae, tuple(maps.shape[1:]), info, history
 
 
+def neutral_content(
+    dataset: MotionDataset, layout: FeatureLayout, space: FeatureSpace, primitive: str, n_frames: int
+) -> tuple[pd.DataFrame, np.ndarray]:
+    """(metadata rows, encoded feature maps) of the neutral clips of ``primitive`` on
+    ``n_frames`` frames: the content of every CVAE of the primitive (Sec. 5.3.3)."""
+    rows, feats = primitive_features(dataset, layout, primitive, "neutral", n_frames)
+    return rows, space.encode(feats)
+
+
 def fit_style_cvae(
     dataset: MotionDataset,
     layout: FeatureLayout,
@@ -439,19 +448,20 @@ def fit_style_cvae(
     style: str,
     settings: StyleSettings,
     hidden: tuple[int, ...] = VAE_HIDDEN,
+    content: tuple[pd.DataFrame, np.ndarray] | None = None,
 ) -> tuple[MotionVAE, tuple[int, int], dict, pd.DataFrame]:
     """The CVAE of ``primitive`` and ``style`` (Sec. 5.3.3, loss Eq. 5.11 with the Gram
     style term Eq. 5.10; :func:`train_cvae`, ``settings.cvae``): content the neutral clips
-    (on ``settings.canonical_frames`` frames), style example the straightest forward clip of
-    the style (:func:`~.data.select_style_example`); starts from the ``neutral`` VAE's
-    weights when ``settings.cvae.init_from_neutral``. Returns (CVAE, feature-map shape, info
-    with the example's clip id, history)."""
+    (on ``settings.canonical_frames`` frames; ``content`` passes :func:`neutral_content`'s
+    result, computed once for every style of the primitive), style example the straightest
+    forward clip of the style (:func:`~.data.select_style_example`); starts from the
+    ``neutral`` VAE's weights when ``settings.cvae.init_from_neutral``. Returns (CVAE,
+    feature-map shape, info with the example's clip id, history)."""
     c, n_frames, latent = settings.cvae, settings.canonical_frames, settings.vae.latent
     cfg = TrainConfig.of(c, settings.seed)
-    rows, feats = primitive_features(dataset, layout, primitive, "neutral", n_frames)
+    rows, maps = content if content is not None else neutral_content(dataset, layout, space, primitive, n_frames)
     example_id = select_style_example(dataset.metadata, primitive, style)
     example = space.encode(example_features(dataset, layout, example_id, n_frames)[None])[0]
-    maps = space.encode(feats)
     log.info("%s/%s: %d neutral clips, style example %s", primitive, style, len(rows), example_id)
     init = neutral if c.init_from_neutral else None
     cvae, history = train_cvae(maps, example, settings.vae, c, settings.seed, init, hidden)
