@@ -27,7 +27,9 @@ about 20 s with smaller sizes):
    the gap is reported in residual standard deviations, not as agreement).
 4. BVH reading: a CMU file (131_01, 994 frames) with its frames repeated to ~100 MB in a
    temporary folder, read by ours, pybvh and bvhio. Agreement: root positions and local
-   rotation matrices against pybvh (float64) and bvhio (float32).
+   rotation matrices against pybvh (float64) and bvhio (float32). A third row: the file's
+   Euler angles to quaternions, ours (core.quaternions.euler_to_quat) against scipy's
+   ``Rotation.from_euler``; agreement: the share of quaternions equal bit for bit.
 5. DTW: 200 pairs of 100-frame 60-D sequences; ours (motionvar.prep.dtw_path, which calls
    dtaidistance's C ``warping_path_fast``) vs dtaidistance's ``dtw_ndim.warping_path`` (C
    matrix + Python backtracking). Agreement: identical paths, distance difference.
@@ -371,7 +373,26 @@ def bench_bvh(quick: bool) -> list[dict]:
             del c
         except ImportError as exc:
             rows.append({"pair": "BVH read vs bvhio", "size": size, **missing("bvhio", exc)})
+        rows.append(bench_euler(path, n_frames))
     return rows
+
+
+def bench_euler(path: Path, n_frames: int) -> dict:
+    """The file's joint angles (ZYX channels, CMU) to quaternions: ours against scipy."""
+    from scipy.spatial.transform import Rotation
+
+    from motionvar.core.quaternions import euler_to_quat
+    from motionvar.io.bvh import _frame_values
+
+    text = path.read_text()
+    body = text[text.index("\n", text.index("Frame Time")) + 1 :]
+    angles = _frame_values(body)[:, 3:].reshape(-1, 3)
+    ours, t_ours = best_time(lambda: euler_to_quat(angles, "ZYX"), repeat=3)
+    ref, t_ref = best_time(lambda: Rotation.from_euler("ZYX", angles, degrees=True).as_quat(scalar_first=True), 3)
+    same = float(np.mean(np.all((ours == ref) & (np.signbit(ours) == np.signbit(ref)), axis=1)))
+    size = f"{len(angles):,} rotations ({n_frames} frames)"
+    agree = f"{same:.0%} of quaternions bit-identical"
+    return {"pair": "Euler to quaternion vs scipy", "size": size, "agreement": agree, "ours": t_ours, "theirs": t_ref}
 
 
 # ---- 5. DTW --------------------------------------------------------------------------------------

@@ -150,25 +150,32 @@ def euler_to_quat(angles_deg: np.ndarray, order: str) -> np.ndarray:
         raise ValueError(f"Euler order must be a permutation of XYZ; got {order!r}")
     angles_deg = np.asarray(angles_deg, dtype=float)
     shape = angles_deg.shape[:-1]
-    half = np.ascontiguousarray(np.deg2rad(angles_deg.reshape(-1, 3)).T) / 2  # (3, N) rows
+    half = np.deg2rad(angles_deg.reshape(-1, 3).T, out=np.empty((3, angles_deg.size // 3)))  # (3, N) rows
+    half /= 2
     s, c = np.sin(half), np.cos(half)
     a, b, k = axes
+    n = half.shape[1]
+    mul, tmp = np.multiply, np.empty(n)  # products written in place: few large temporaries
     # q_a q_b = (c_b s_a e_a + c_a s_b e_b + s_a s_b (e_a x e_b), c_a c_b); e_a x e_b = ±e_third
-    ab = np.empty((4, half.shape[1]))  # x, y, z, w rows
-    ab[a], ab[b], ab[3] = c[1] * s[0], c[0] * s[1], c[0] * c[1]
-    ab[3 - a - b] = s[0] * s[1] if (b - a) % 3 == 1 else -(s[0] * s[1])
+    ab = np.empty((4, n))  # x, y, z, w rows
+    mul(c[1], s[0], out=ab[a]), mul(c[0], s[1], out=ab[b]), mul(c[0], c[1], out=ab[3])
+    mul(s[0], s[1], out=ab[3 - a - b])
+    if (b - a) % 3 != 1:
+        np.negative(ab[3 - a - b], out=ab[3 - a - b])
     # (q_a q_b) q_k with q_k = (s_k e_k, c_k); i, j the axes after k in cyclic order
     i, j = (k + 1) % 3, (k + 2) % 3
-    xyzw = np.empty((4, half.shape[1]))
-    xyzw[3] = ab[3] * c[2] - ab[k] * s[2]
-    xyzw[k] = ab[3] * s[2] + c[2] * ab[k]
-    xyzw[i] = c[2] * ab[i] + ab[j] * s[2]
-    xyzw[j] = c[2] * ab[j] - ab[i] * s[2]
+    xyzw = np.empty((4, n))
+    mul(ab[3], c[2], out=xyzw[3]), mul(ab[k], s[2], out=tmp), np.subtract(xyzw[3], tmp, out=xyzw[3])
+    mul(ab[3], s[2], out=xyzw[k]), mul(c[2], ab[k], out=tmp), np.add(xyzw[k], tmp, out=xyzw[k])
+    mul(c[2], ab[i], out=xyzw[i]), mul(ab[j], s[2], out=tmp), np.add(xyzw[i], tmp, out=xyzw[i])
+    mul(c[2], ab[j], out=xyzw[j]), mul(ab[i], s[2], out=tmp), np.subtract(xyzw[j], tmp, out=xyzw[j])
     zero = np.flatnonzero((xyzw == 0).any(axis=0))
     if zero.size:  # the dropped zero terms decide the sign of a zero component
         elementary = [_axis_quat(axis, s[n, zero], c[n, zero]) for n, axis in enumerate(axes)]
         xyzw[:, zero] = _compose_xyzw(_compose_xyzw(elementary[0], elementary[1]), elementary[2])
-    return np.ascontiguousarray(xyzw[[3, 0, 1, 2]].T).reshape(*shape, 4)
+    out = np.empty((n, 4))
+    out[:, 0], out[:, 1:] = xyzw[3], xyzw[:3].T
+    return out.reshape(*shape, 4)
 
 
 def _axis_quat(axis: int, sin_half: np.ndarray, cos_half: np.ndarray) -> np.ndarray:

@@ -367,10 +367,13 @@ def _to_motion(h: _Hierarchy, data: np.ndarray, frame_time: float, scale: float)
     skeleton = _skeleton(h, scale)
     T, J = data.shape[0], len(h.names)
     angles = data[:, np.array(h.rot_cols)]  # (T, J, 3) in each joint's channel order
-    rotations = np.empty((T, J, 4))
-    for order in sorted(set(h.orders)):
-        idx = np.array([j for j, o in enumerate(h.orders) if o == order])
-        rotations[:, idx] = euler_to_quat(angles[:, idx], order)
+    if len(set(h.orders)) == 1:  # one rotation order for the whole rig
+        rotations = euler_to_quat(angles, h.orders[0])
+    else:
+        rotations = np.empty((T, J, 4))
+        for order in sorted(set(h.orders)):
+            idx = np.array([j for j, o in enumerate(h.orders) if o == order])
+            rotations[:, idx] = euler_to_quat(angles[:, idx], order)
     if h.pos_cols[0] is not None:
         root_pos = data[:, h.pos_cols[0]] * scale
     else:
