@@ -303,16 +303,18 @@ def _locate_frame_error(lines: list[str], first: int, n_frames: int, n_channels:
 
 def _frame_values(body: str) -> np.ndarray | None:
     """(T, C) values of the whitespace-separated frame lines (blank lines skipped), or None
-    where a line does not parse or has more values than the first. pandas' C reader: the
-    values ``np.loadtxt`` gives, bit for bit (tests/test_bvh.py), about 1.7x faster; a short
-    line comes back padded with NaN, which the caller rejects."""
+    where a value does not parse or a line has more or fewer values than the first (the caller
+    then finds the line; it also rejects non-finite values, which may parse). pandas' C reader:
+    the values ``np.loadtxt`` gives, bit for bit (tests/test_bvh.py), about 1.7x faster."""
     import csv
     import io
 
     import pandas as pd
 
     try:
-        frame = pd.read_csv(io.StringIO(body), sep=r"\s+", header=None, dtype=float, quoting=csv.QUOTE_NONE)
+        frame = pd.read_csv(
+            io.StringIO(body), sep=r"\s+", header=None, dtype=float, quoting=csv.QUOTE_NONE, na_filter=False
+        )
     except (ValueError, pd.errors.ParserError, pd.errors.EmptyDataError):
         return None
     return frame.to_numpy()
