@@ -171,7 +171,7 @@ def euler_to_quat(angles_deg: np.ndarray, order: str) -> np.ndarray:
     mul(c[2], ab[j], out=xyzw[j]), mul(ab[i], s[2], out=tmp), np.subtract(xyzw[j], tmp, out=xyzw[j])
     zero = np.flatnonzero((xyzw == 0).any(axis=0))
     if zero.size:  # the dropped zero terms decide the sign of a zero component
-        elementary = [_axis_quat(axis, s[n, zero], c[n, zero]) for n, axis in enumerate(axes)]
+        elementary = [_axis_quat(axis, s[m, zero], c[m, zero]) for m, axis in enumerate(axes)]
         xyzw[:, zero] = _compose_xyzw(_compose_xyzw(elementary[0], elementary[1]), elementary[2])
     out = np.empty((n, 4))
     out[:, 0], out[:, 1:] = xyzw[3], xyzw[:3].T
