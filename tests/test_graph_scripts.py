@@ -60,7 +60,7 @@ def _primitive_rule(tmp_path, prep_dir, primitive):
         "du2022_graph_primitive",
         input=Named(clips=str(prep_dir / "clips.npz")),
         output=Named(model=str(out), meta=str(out.with_suffix(".json"))),
-        params=Named(settings=MODEL_SETTINGS, primitives=[primitive]),
+        params=Named(settings=MODEL_SETTINGS),
         wildcards=Named(dataset="t", primitive=primitive),
     )
 

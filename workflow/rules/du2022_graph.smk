@@ -36,45 +36,14 @@ rule du2022_graph_dense_picks:
         "../scripts/du2022_graph_dense_picks.py"
 
 
-# every primitive of the prep stage in one job (one start-up, the clips read once); the same
-# models as one job per primitive (each fit seeded by itself)
-rule du2022_graph_primitives:
-    input:
-        clips=f"{PREP}/clips.npz",
-        metadata=f"{PREP}/metadata.csv",
-    output:
-        model=[f"{GRAPH}/{p}.npz" for p in graph_prep_primitives()],
-        meta=[f"{GRAPH}/{p}.json" for p in graph_prep_primitives()],
-    params:
-        settings=config["graph"],
-        primitives=graph_prep_primitives(),
-    log:
-        ev_log("du2022_graph_primitives"),
-    benchmark:
-        ev_benchmark("du2022_graph_primitives")
-    priority: PRIORITY["du2022_graph_primitive"]
-    threads: 1
-    resources:
-        mem_mb=4000,
-    conda:
-        ENV
-    script:
-        "../scripts/du2022_graph_primitive.py"
-
-
-# the dense-grid picks (Fig. 4.11), from their own clips (rule du2022_graph_dense_picks)
 rule du2022_graph_primitive:
     input:
-        clips=f"{GRAPH}/dense_picks/clips.npz",
-        metadata=f"{GRAPH}/dense_picks/metadata.csv",
-    wildcard_constraints:
-        primitive=GRAPH_DENSE,
+        unpack(graph_primitive_input),
     output:
         model=f"{GRAPH}/{{primitive}}.npz",
         meta=f"{GRAPH}/{{primitive}}.json",
     params:
         settings=config["graph"],
-        primitives=lambda wc: [wc.primitive],
     log:
         ev_log("du2022_graph_primitive", "{primitive}"),
     benchmark:

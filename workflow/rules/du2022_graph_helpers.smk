@@ -28,21 +28,24 @@ def graph_search_primitives(dataset):
     return list(GRAPH_CFG["search"]["primitives"]) + extra
 
 
-def graph_prep_primitives():
-    """The primitives modelled from the prep stage's clips: the graph's nodes and those of the
-    search comparison (rule du2022_graph_primitives fits them all in one job)."""
-    return list(dict.fromkeys(list(GRAPH_CFG["primitives"]) + list(GRAPH_CFG["search"]["primitives"])))
-
-
 def graph_all_primitives(dataset):
     """Every modelled primitive of a dataset (the graph's nodes, plus the dense one)."""
     extra = [GRAPH_DENSE] if graph_has_dense(dataset) else []
-    return graph_prep_primitives() + extra
+    return list(dict.fromkeys(list(GRAPH_CFG["primitives"]) + list(GRAPH_CFG["search"]["primitives"]) + extra))
 
 
 def graph_model_files(dataset, primitives):
     base = GRAPH.format(dataset=dataset)
     return [f"{base}/{p}.{ext}" for p in primitives for ext in ("npz", "json")]
+
+
+def graph_primitive_input(wildcards):
+    """Clips of one primitive: the dense picks for the dense one, else the prep stage."""
+    if wildcards.primitive == GRAPH_DENSE:
+        base = f"{GRAPH}/dense_picks".format(dataset=wildcards.dataset)
+    else:
+        base = PREP.format(dataset=wildcards.dataset)
+    return {"clips": f"{base}/clips.npz", "metadata": f"{base}/metadata.csv"}
 
 
 def graph_search_tables(wildcards):
