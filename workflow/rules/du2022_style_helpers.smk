@@ -3,7 +3,6 @@
 STYLE_CFG = config["style"]
 STYLE_MODELS = "results/{dataset}/models/du2022_style"
 STYLE_PRIMITIVE_PATTERN = "[A-Za-z]+(?:_[A-Za-z]+)?"
-STYLE_STYLE_PATTERN = "[a-z]+"
 # A saved model is <base>.pt (torch state dict) + <base>.json (settings); its training
 # history is <base>_history.csv.
 STYLE_SUFFIX = {"model": ".pt", "settings": ".json", "history": "_history.csv"}

@@ -125,11 +125,6 @@ def qangle(q1: np.ndarray, q2: np.ndarray) -> np.ndarray:
     return 2.0 * np.linalg.norm(qlog(qmul(qinv(q1), q2)), axis=-1)
 
 
-def quat_from_scipy(r: Rotation, shape: tuple[int, ...]) -> np.ndarray:
-    """Scalar-first quaternions from a flat scipy Rotation, reshaped to (*shape, 4)."""
-    return r.as_quat(scalar_first=True).reshape(*shape, 4)
-
-
 def quat_to_scipy(q: np.ndarray) -> Rotation:
     """Flat scipy Rotation from scalar-first quaternions (..., 4)."""
     return Rotation.from_quat(q.reshape(-1, 4), scalar_first=True)
