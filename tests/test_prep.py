@@ -44,7 +44,7 @@ from motionvar.prep import (
     warp_to_median,
 )
 from motionvar.prep.pipeline import too_short
-from motionvar.prep.segmentation import reach_boundary, sidestep_segments, step_segments, trailing_foot
+from motionvar.prep.segmentation import hand_speed, reach_boundary, sidestep_segments, step_segments, trailing_foot
 from motionvar.prep.timewarp import check_warp
 
 FPS = 120.0
@@ -313,7 +313,8 @@ def test_reach_boundary_is_the_hand_stop():
     assert segs[1] == Segment("pick_retrieve", segs[0].stop, m.n_frames)
     # a single speed valley between two peaks
     v = np.concatenate([np.sin(np.linspace(0, np.pi, 50)), np.sin(np.linspace(0, np.pi, 70))])
-    assert abs(reach_boundary(v) - 50) <= 1
+    o = PrepOptions()
+    assert abs(reach_boundary(v, o.hand_stop_fraction, o.hand_rest_fraction) - 50) <= 1
 
 
 def test_segmentation_errors():
@@ -780,20 +781,28 @@ def test_synthetic_aligned_primitives_start_at_origin_heading_x(synthetic, tmp_p
 @needs_synth
 def test_synthetic_reach_boundary_within_a_tenth_of_a_second():
     rng = np.random.default_rng(2)
-    errors = []
-    for k in range(12):
+    errors, any_rise = [], []
+    for k in range(24):
         subject = SUBJECTS[k % 3]
         kind = ("pick", "place")[k % 2]
         gen = reach.generate_pick if kind == "pick" else reach.generate_place
-        m, truth = gen(subject, reach.ReachParams(region=("forward", "high")[k // 2 % 2]), rng)
+        # half the reaches with a corrective sub-movement: its rise is part of the reach
+        params = reach.ReachParams(region=("forward", "high")[k // 2 % 2], correction=k >= 12)
+        m, truth = gen(subject, params, rng)
         gt = parse_segments(truth["segments"])
         got = segment_motion(m, kind, JM)
         assert [s.name for s in got] == [s.name for s in gt]
         errors.append(got[0].stop - gt[0].stop)
+        o = PrepOptions()
+        speed = hand_speed(m, JM, m.positions(), o)
+        any_rise.append(reach_boundary(speed, o.hand_stop_fraction, rest_fraction=1.0) - gt[0].stop)
     errors = np.abs(errors)
     # the hands approach the target with a minimum-jerk profile: "stopped" (2 % of the
     # peak speed) comes a few frames before the generator's first frame at the target
     assert errors.max() <= 12 and errors.mean() <= 6, errors
+    # negative control: ending the reach at any rise of the speed stops corrected reaches
+    # at the dip before their secondary sub-movement
+    assert np.min(any_rise[12:]) < -12, any_rise
 
 
 # ----------------------------------------------------------------------------- real CMU data

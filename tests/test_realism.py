@@ -257,17 +257,16 @@ def test_captured_variation_brings_the_walks_into_the_bands(captured):
     assert inside.all() if captured else not inside[["stride_cv_pct", "step_asymmetry_cm"]].any(), inside
 
 
-def test_reach_end_and_peaks_on_the_generators_truth():
+def test_reach_boundary_and_peaks_on_the_generators_truth():
     """On generated picks with and without a corrective sub-movement: the reach ends as the
-    hands come to rest on the grips (in the last 0.25 s of the truth's pick_reach segment, the
+    hands stop on the grips, a corrective sub-movement included (in the last 0.25 s of the truth's pick_reach segment, the
     slow tail of a minimum-jerk approach, or at most 0.05 s after it), and the reaches with
     two speed peaks are corrected ones (reach_submovements): never an uncorrected reach, and at
     least a third of the corrected (the others' secondary merges into the primary's slowing:
     4 of the 9 here)."""
     from motionvar.prep import PrepOptions
-    from motionvar.prep.segmentation import hand_speed
+    from motionvar.prep.segmentation import hand_speed, reach_boundary
     from motionvar.realism import RealismSettings
-    from motionvar.realism.table import reach_end
     from motionvar.synth import ReachParams, generate_pick, make_subjects
 
     s, jm = RealismSettings(), cmu_joint_map()
@@ -277,8 +276,9 @@ def test_reach_end_and_peaks_on_the_generators_truth():
             for correction in (False, True):
                 params = ReachParams(region=region, correction=correction)
                 m, truth = generate_pick(subject, params, np.random.default_rng([k, j]))
-                speed = hand_speed(m, jm, m.positions(), PrepOptions())
-                end = reach_end(speed, s.rest_fraction)
+                p = PrepOptions()
+                speed = hand_speed(m, jm, m.positions(), p)
+                end = reach_boundary(speed, p.hand_stop_fraction, p.hand_rest_fraction)
                 b = next(int(x.split(":")[2]) for x in truth["segments"].split(";") if x.startswith("pick_reach"))
                 assert b - 0.25 * m.fps <= end <= b + 0.05 * m.fps, (end, b)
                 found[truth["reach_submovements"]].append(rm.speed_peaks(speed[:end], s.peak_prominence))

@@ -37,6 +37,13 @@ class PrepOptions:
             at the target is taken.
         hand_stop_fraction: the hands have stopped at the first frame of the speed valley
             within this fraction of the outward speed peak above the valley's minimum.
+        hand_rest_fraction: a rise of the hand speed ends the reach's valley only once the
+            speed has fallen under this fraction of the peak (the hands nearly at rest on
+            the target); an earlier rise is a corrective sub-movement of the reach, which
+            starts while the primary still moves (at 70-90 % of its duration, Novak, Miller
+            & Houk 2002; a minimum-jerk primary still moves at 13 % of its peak speed at
+            90 %). On generated reaches 0.15 finds the stop of corrected reaches and keeps
+            a place's release apart (tests/test_prep.py).
     Alignment (Ma 2010 Sec. 4.2, space warping):
         heading: "hips" (the facing direction from the left-hip -> right-hip vector) or
             "movement" (Ma's overall movement direction, first to last root position).
@@ -66,6 +73,7 @@ class PrepOptions:
     min_gap_s: float = 0.05
     hand_smooth_s: float = 0.1
     hand_stop_fraction: float = 0.02
+    hand_rest_fraction: float = 0.15
     heading: str = "hips"
     heading_frames: int = 1
     use_ground_truth_segments: bool = False
@@ -82,8 +90,9 @@ class PrepOptions:
         for name in non_negative:
             if not getattr(self, name) >= 0:
                 raise ValueError(f"PrepOptions.{name} must be >= 0; got {getattr(self, name)!r}")
-        if not 0 <= self.hand_stop_fraction < 1:
-            raise ValueError(f"PrepOptions.hand_stop_fraction must be in [0, 1); got {self.hand_stop_fraction!r}")
+        for name in ("hand_stop_fraction", "hand_rest_fraction"):
+            if not 0 <= getattr(self, name) < 1:
+                raise ValueError(f"PrepOptions.{name} must be in [0, 1); got {getattr(self, name)!r}")
         if not 0 <= self.floor_percentile <= 50:
             raise ValueError(f"PrepOptions.floor_percentile must be in [0, 50]; got {self.floor_percentile!r}")
         if self.heading not in HEADINGS:

@@ -99,23 +99,31 @@ def hand_speed(motion: Motion, joint_map: JointMap, positions: np.ndarray, optio
     return speed
 
 
-def reach_boundary(speed: np.ndarray, stop_fraction: float = 0.02) -> int:
-    """Frame where the hands stop at the target, from the (T,) hand speed.
+def reach_boundary(speed: np.ndarray, stop_fraction: float, rest_fraction: float) -> int:
+    """Frame where the hands stop at the target, from the (T,) hand speed
+    (``PrepOptions.hand_stop_fraction``, ``PrepOptions.hand_rest_fraction``).
 
     The reach is the first major hand movement: it starts where the speed first exceeds
     a quarter of the clip's peak speed, and its peak p1 is the fastest frame before the
     speed falls under half of it. The valley after p1 ends where the speed rises again
     by a tenth of the peak above its running minimum (the next movement: a release or
-    the retrieve). The hands have stopped at the first valley frame within
-    ``stop_fraction`` of the peak's height above the valley's minimum: the minimum
-    itself when they turn back at once, the start of the rest when they hold.
+    the retrieve) once that minimum is under ``rest_fraction`` of the peak: a rise
+    before the hands have slowed to rest is a corrective sub-movement towards the target
+    (Meyer et al. 1988), part of the reach. Where the speed never falls that low before
+    the next movement (the hands turn back without stopping), the first rise ends it.
+    The hands have stopped at the first valley frame within ``stop_fraction`` of the
+    peak's height above the valley's minimum: the minimum itself when they turn back at
+    once, the start of the rest when they hold.
     """
     s0 = int(np.argmax(speed >= 0.25 * speed.max()))
     run_max = np.maximum.accumulate(speed[s0:])
     t1 = s0 + int(np.argmax(speed[s0:] < 0.5 * run_max)) if np.any(speed[s0:] < 0.5 * run_max) else len(speed) - 1
     p1 = s0 + int(np.argmax(speed[s0 : t1 + 1]))
-    rising = speed[t1:] > np.minimum.accumulate(speed[t1:]) + 0.1 * speed[p1]
-    t2 = t1 + int(np.argmax(rising)) if rising.any() else len(speed)
+    run_min = np.minimum.accumulate(speed[t1:])
+    rising = speed[t1:] > run_min + 0.1 * speed[p1]
+    after_rest = rising & (run_min <= rest_fraction * speed[p1])
+    ends = after_rest if after_rest.any() else rising
+    t2 = t1 + int(np.argmax(ends)) if ends.any() else len(speed)
     valley = speed[p1:t2]
     low = valley.min()
     return p1 + int(np.argmax(valley <= low + stop_fraction * (speed[p1] - low)))
@@ -125,7 +133,8 @@ def reach_segments(
     motion: Motion, joint_map: JointMap, positions: np.ndarray, options: PrepOptions, prefix: str
 ) -> list[Segment]:
     """``{prefix}_reach`` [0, b) and ``{prefix}_retrieve`` [b, T) at the hand-speed minimum b."""
-    b = reach_boundary(hand_speed(motion, joint_map, positions, options), options.hand_stop_fraction)
+    speed = hand_speed(motion, joint_map, positions, options)
+    b = reach_boundary(speed, options.hand_stop_fraction, options.hand_rest_fraction)
     segs = [Segment(f"{prefix}_reach", 0, b), Segment(f"{prefix}_retrieve", b, motion.n_frames)]
     return [s for s in segs if s.stop > s.start]
 

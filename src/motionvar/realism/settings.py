@@ -17,8 +17,6 @@ class RealismSettings(Settings):
     toe_window: fraction of each swing in which its minimum toe clearance is taken.
     peak_prominence: a hand-speed peak counts when its prominence is at least this fraction
         of the reach's peak speed (a sub-movement, Meyer et al. 1988).
-    rest_fraction: the hands rest at the target from the first frame after the reach's peak
-        at which their speed is below this fraction of the peak.
     min_clips_per_subject: subjects with fewer clips of a behaviour are left out of the
         within- against between-subject spread."""
 
@@ -29,5 +27,4 @@ class RealismSettings(Settings):
     near_static_deg: float = 0.5
     toe_window: tuple[float, float] = (0.25, 0.75)
     peak_prominence: float = 0.1
-    rest_fraction: float = 0.05
     min_clips_per_subject: int = 2

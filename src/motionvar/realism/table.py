@@ -3,7 +3,7 @@
 Walk statistics come from the clips whose behaviour is ``walk`` (foot contacts detected with
 the preprocessing options, the same on every dataset, ground truth unused); reach statistics
 from the reaching phase of ``pick`` clips (start to the hands' rest at the target,
-:func:`reach_end`); channel statistics from the local
+:func:`~motionvar.prep.segmentation.reach_boundary`); channel statistics from the local
 rotations of every joint but the root (whose yaw is the heading) over all frames of a behaviour.
 A statistic the data cannot give (no walks of three steady strides, one subject) is NaN.
 """
@@ -23,7 +23,7 @@ from ..io.dataset import MotionDataset
 from ..metrics import realism as rm
 from ..prep.contacts import detect_foot_contacts
 from ..prep.options import PrepOptions
-from ..prep.segmentation import hand_speed
+from ..prep.segmentation import hand_speed, reach_boundary
 from .bands import CMU_CAPTURED_CHANNELS
 from .settings import RealismSettings
 
@@ -70,23 +70,11 @@ def _walk_clip(stats: _WalkStats, motion: Motion, joint_map: JointMap, prep: Pre
     return float(np.mean(cycles.stride_length)) if len(cycles.stride_length) else float("nan")
 
 
-def reach_end(speed: np.ndarray, rest_fraction: float) -> int:
-    """Frame where the hands come to rest at the target: the first frame after the hand
-    speed's peak (over the clip's first movement: before the speed falls to
-    ``rest_fraction`` of it) below that fraction of the peak. Unlike the preprocessing's
-    :func:`~motionvar.prep.segmentation.reach_boundary`, a corrective sub-movement's rise
-    before the hands rest does not end the reach."""
-    first = int(np.argmax(speed >= 0.25 * speed.max()))
-    slow = speed[first:] < rest_fraction * np.maximum.accumulate(speed[first:])
-    end = first + int(np.argmax(slow)) if slow.any() else len(speed)
-    return max(end, 2)
-
-
 def _reach_clip(motion: Motion, joint_map: JointMap, prep: PrepOptions, s: RealismSettings) -> tuple[int, float]:
     """(speed peaks, hand path ratio) of a pick clip's reach, from its start to the hands' rest."""
     pos = motion.positions()
     speed = hand_speed(motion, joint_map, pos, prep)
-    stop = reach_end(speed, s.rest_fraction)
+    stop = max(reach_boundary(speed, prep.hand_stop_fraction, prep.hand_rest_fraction), 2)
     hands = joint_map.indices(motion.skeleton, ["left_hand", "right_hand"])
     return rm.speed_peaks(speed[:stop], s.peak_prominence), rm.path_ratio(pos[:stop, hands].mean(axis=1))
 
