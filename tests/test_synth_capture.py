@@ -29,6 +29,7 @@ SMALL = dict(
     places=2,
     idle_clips=1,
     idle_duration_s=2.0,
+    captured_variation=False,  # the clean clips; the capture layer is applied by _layered
 )
 LEGS = ("LHipJoint", "LeftUpLeg", "LeftLeg", "LeftFoot", "LeftToeBase")
 LEGS += tuple(n.replace("Left", "Right").replace("LHip", "RHip") for n in LEGS)
@@ -139,9 +140,47 @@ def test_capture_motion_is_smooth_and_zero_mean(both):
         assert np.all(np.abs(rotvec.mean(axis=0)) < 1e-9)
 
 
+# SynthSpec(**SMALL) as the generator made it before captured variation became the default
+# (commit 569f754): per clip, its frames, a weighted sum of its rotations and the sum of its
+# root positions (weights 1 -> 2 over the flattened rotations, so a moved or reordered value shows)
+CLEAN_FINGERPRINT = {
+    "s01_walk_neutral_00": (641, 28348.227766198463, -182705.49629552744),
+    "s01_walk_proud_00": (597, 27148.419943872294, 195215.47241122252),
+    "s01_walk_depressed_00": (744, 34889.321555667906, 305321.325192843),
+    "s01_walk_angry_00": (587, 27099.116718460697, -21451.31119674161),
+    "s01_walk_female_00": (738, 34016.856088712804, 357766.676618192),
+    "s01_walk_childlike_00": (632, 29185.35101665302, 12280.238427290686),
+    "s01_walk_old_00": (760, 32909.71939314071, -188007.5206092807),
+    "s01_walk_left_00": (617, 28787.909345515483, 5838.677638517751),
+    "s01_run_forward_00": (330, 14523.931961759565, 66458.51114703799),
+    "s01_sidestep_left_00": (838, 39195.32359706186, 353421.47805560834),
+    "s01_pick_low_00": (454, 20059.594299589728, -3075.4294537768965),
+    "s01_pick_forward_00": (316, 14295.77884104949, 94452.8228584298),
+    "s01_place_low_00": (453, 19732.882905022743, 117917.73586718927),
+    "s01_place_forward_00": (320, 14294.751392078866, -68439.84765392105),
+    "s01_idle_standing_00": (241, 11201.541532985566, 14467.698688642278),
+}
+
+
+def _fingerprint(m) -> tuple[int, float, float]:
+    r = m.rotations.astype(float)
+    return (
+        m.n_frames,
+        float((r * np.linspace(1, 2, r.size).reshape(r.shape)).sum()),
+        float(m.root_pos.astype(float).sum()),
+    )
+
+
 def test_off_is_the_generator_unchanged(both):
-    """captured_variation=False (the default) gives, bitwise, the clips of the generator's own streams."""
+    """captured_variation=False gives the clips the generator made before it had captured
+    variation (a stored fingerprint, equal to 1e-12), and they are the clips of its own streams."""
     _, off, meta = both
+    assert list(meta["clip_id"]) == list(CLEAN_FINGERPRINT)
+    for m, clip in zip(off, meta["clip_id"]):
+        n, rot, root = _fingerprint(m)
+        assert n == CLEAN_FINGERPRINT[clip][0], clip
+        assert rot == pytest.approx(CLEAN_FINGERPRINT[clip][1], rel=1e-12), clip
+        assert root == pytest.approx(CLEAN_FINGERPRINT[clip][2], rel=1e-12, abs=1e-9), clip
     spec = SynthSpec(**SMALL)
     subject = make_subjects(spec.subjects, spec.seed)[0]
     direct = [
@@ -153,6 +192,15 @@ def test_off_is_the_generator_unchanged(both):
     for a, b in zip(off, direct):
         np.testing.assert_array_equal(a.rotations, b.rotations)
         np.testing.assert_array_equal(a.root_pos, b.root_pos)
+
+
+def test_negative_control_the_fingerprint_sees_one_changed_value(both):
+    _, off, _ = both
+    m = off[0]
+    moved = m.rotations.astype(float).copy()
+    moved[len(moved) // 2, 3, 1] += 1e-6
+    w = np.linspace(1, 2, moved.size).reshape(moved.shape)
+    assert float((moved * w).sum()) != pytest.approx(_fingerprint(m)[1], rel=1e-12)
 
 
 def test_same_seed_same_arrays_other_seed_other_motion(both):

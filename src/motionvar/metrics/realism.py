@@ -105,6 +105,7 @@ class WalkCycles:
         stride_length, stride_time: (R,) distance and time between successive footfalls of
             one foot (two steps, no missed contact between).
         stance_fraction: (R,) each stride's first contact's duration over the stride time.
+        stride_frames: (R, 2) the frames of each stride's first and last footfall (contact starts).
     """
 
     step_length: np.ndarray
@@ -113,6 +114,7 @@ class WalkCycles:
     stride_length: np.ndarray
     stride_time: np.ndarray
     stance_fraction: np.ndarray
+    stride_frames: np.ndarray
 
 
 def walk_cycles(events: WalkEvents) -> WalkCycles:
@@ -137,7 +139,54 @@ def walk_cycles(events: WalkEvents) -> WalkCycles:
         stride_length=np.linalg.norm(fp[strides + 2] - fp[strides], axis=1),
         stride_time=stride_time,
         stance_fraction=stance / stride_time if len(strides) else np.zeros(0),
+        stride_frames=np.stack([events.start[strides], events.start[strides + 2]], axis=1).reshape(-1, 2),
     )
+
+
+def implausible_events(
+    cycles: WalkCycles,
+    root: np.ndarray,
+    clearance: np.ndarray,
+    stance_range: tuple[float, float],
+    travel_tolerance: float,
+    min_clearance: float,
+) -> str:
+    """Why a walk's gait events are not those of a walk (``"<check>: <detail>"``), or ``""``
+    when they may be.
+
+    Contacts detected on a clip that is not a steady walk (single steps, a start and stop, a
+    stylised walk, markerless jitter) give footfalls no walk has; their statistics would read as
+    the walk's variability. A walk's events fail when:
+
+    - a stride's stance fraction lies outside ``stance_range`` (walking: about 0.6 of the cycle,
+      Perry & Burnfield 2010; running under 0.4, Novacheck 1998);
+    - a stride's length differs from the root's horizontal travel between its footfalls by more
+      than ``travel_tolerance`` of that travel (one stride carries the body one stride forward;
+      a missed or spurious footfall changes the stride by about a step, half of it);
+    - the toe passes lower than ``min_clearance`` (cm, negative: below its own contact height)
+      in a swing (:func:`toe_clearance`): the feet were not in contact where the contacts say.
+
+    Args:
+        cycles: the walk's steps and strides.
+        root: (T, 2) horizontal root position (cm).
+        clearance: the walk's swing clearances of both feet (cm).
+        stance_range: plausible stance fractions (lo, hi).
+        travel_tolerance: plausible |stride / root travel - 1|.
+        min_clearance: the lowest plausible swing clearance (cm).
+    """
+    stance = cycles.stance_fraction
+    outside = (stance < stance_range[0]) | (stance > stance_range[1])
+    if outside.any():
+        return f"stance fraction: {stance[outside][0]:.2f} outside [{stance_range[0]:g}, {stance_range[1]:g}]"
+    a, b = cycles.stride_frames.T
+    travel = np.linalg.norm(root[b] - root[a], axis=1)
+    off = np.abs(cycles.stride_length - travel) > travel_tolerance * travel
+    if off.any():
+        k = int(np.argmax(off))
+        return f"stride against the root's travel: {cycles.stride_length[k]:.0f} cm against {travel[k]:.0f} cm"
+    if len(clearance) and clearance.min() < min_clearance:
+        return f"toe below its contact height: {-clearance.min():.1f} cm in a swing"
+    return ""
 
 
 def coefficient_of_variation(x: np.ndarray) -> float:

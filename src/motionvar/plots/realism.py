@@ -17,7 +17,8 @@ def _position(value: float, lo: float, hi: float) -> float:
 
 def realism_figure(table: pd.DataFrame, joints: pd.DataFrame, title: str) -> Figure:
     """Left: one row per statistic with a band, its value placed in the band (shaded;
-    log-scaled for positive bands), green inside, red outside, clipped at the panel's edges.
+    log-scaled for positive bands), green inside, red outside, grey where the band does not
+    gate (descriptive: the generator's clean data lies in it too), clipped at the panel's edges.
     Right: the largest SD of each joint's three rotation channels in the walks (log scale)."""
     banded = table[np.isfinite(table["band_lo"].to_numpy(dtype=float))].reset_index(drop=True)
     walk = joints[joints["behaviour"] == "walk"].reset_index(drop=True)
@@ -27,13 +28,14 @@ def realism_figure(table: pd.DataFrame, joints: pd.DataFrame, title: str) -> Fig
     ax.axvspan(0.0, 1.0, color="0.88")
     for k, row in banded.iterrows():
         y = len(banded) - 1 - k
-        label = f"{row['statistic']} ({row['behaviour']})"
+        gates = bool(row.get("gates", True))
+        label = f"{row['statistic']} ({row['behaviour']}{'' if gates else ', descriptive'})"
         if not np.isfinite(row["value"]):
             ax.text(0.5, y, "no value (the data cannot give it)", ha="center", va="center", fontsize=8, color="0.4")
         else:
             x = _position(row["value"], row["band_lo"], row["band_hi"])
-            inside = bool(row["in_band"])
-            ax.plot(np.clip(x, -0.45, 1.45), y, "o", color="tab:green" if inside else "tab:red", ms=7)
+            color = ("tab:green" if bool(row["in_band"]) else "tab:red") if gates else "0.55"
+            ax.plot(np.clip(x, -0.45, 1.45), y, "o", color=color, ms=7)
         value = f"{row['value']:.3g}" if np.isfinite(row["value"]) else "-"
         ax.text(1.52, y, f"{value}  [{row['band_lo']:.3g}, {row['band_hi']:.3g}]", va="center", fontsize=8)
         ax.text(-0.5, y, label + "  ", ha="right", va="center", fontsize=8)

@@ -5,7 +5,11 @@ the preprocessing options, the same on every dataset, ground truth unused); reac
 from the reaching phase of ``pick`` clips (start to the hands' rest at the target,
 :func:`~motionvar.prep.segmentation.reach_boundary`); channel statistics from the local
 rotations of every joint but the root (whose yaw is the heading) over all frames of a behaviour.
-A statistic the data cannot give (no walks of three steady strides, one subject) is NaN.
+A walk's gait events count only where they are plausibly a walk's
+(:func:`~motionvar.metrics.realism.implausible_events`); the others are left out of every
+statistic built on them, and the ``note`` column says how many and why. A statistic the data
+cannot give (no walk of three plausible strides, too few subjects or reaches) has no value,
+``n`` 0 and its reason in ``note``.
 """
 
 from __future__ import annotations
@@ -27,7 +31,7 @@ from ..prep.segmentation import hand_speed, reach_boundary
 from .bands import CMU_CAPTURED_CHANNELS
 from .settings import RealismSettings
 
-COLUMNS = ("statistic", "behaviour", "value", "unit", "n", "description")
+COLUMNS = ("statistic", "behaviour", "value", "unit", "n", "description", "note")
 JOINT_COLUMNS = ("behaviour", "joint", "sd_x_deg", "sd_y_deg", "sd_z_deg", "max_sd_deg", "classes")
 
 
@@ -44,6 +48,15 @@ class _WalkStats:
     clearance: list[np.ndarray] = field(default_factory=list)
     noise: list[float] = field(default_factory=list)
     n_strides: int = 0
+    left_out: dict[str, int] = field(default_factory=dict)  # reason -> walks whose events fail
+
+    def note(self) -> str:
+        """How many walks' events were left out, and why."""
+        if not self.left_out:
+            return ""
+        n = sum(self.left_out.values())
+        reasons = "; ".join(f"{k}: {v}" for k, v in sorted(self.left_out.items(), key=lambda kv: -kv[1]))
+        return f"{n} of {n + len(self.stride_cv)} walks' gait events left out as implausible ({reasons})"
 
 
 def _walk_clip(stats: _WalkStats, motion: Motion, joint_map: JointMap, prep: PrepOptions, s: RealismSettings) -> float:
@@ -54,6 +67,18 @@ def _walk_clip(stats: _WalkStats, motion: Motion, joint_map: JointMap, prep: Pre
     ankles = tuple(int(i) for i in joint_map.indices(motion.skeleton, ["left_ankle", "right_ankle"]))
     toes = joint_map.indices(motion.skeleton, ["left_toe", "right_toe"])
     cycles = rm.walk_cycles(rm.walk_events(pos, (contacts.left, contacts.right), ankles, motion.fps))
+    stats.noise.append(rm.high_frequency_rms(pos - pos[:, :1], motion.fps, s.noise_band_hz))
+    clearance = [
+        rm.toe_clearance(pos[:, toes[side], 1], mask, s.toe_window)
+        for side, mask in enumerate((contacts.left, contacts.right))
+    ]
+    reason = rm.implausible_events(
+        cycles, pos[:, 0, [0, 2]], np.concatenate(clearance), s.stance_range, s.travel_tolerance, s.min_clearance_cm
+    )
+    if reason:
+        check = reason.split(":")[0]
+        stats.left_out[check] = stats.left_out.get(check, 0) + 1
+        return float("nan")
     stats.stride_cv.append(rm.coefficient_of_variation(cycles.stride_length))
     stats.stride_time_cv.append(rm.coefficient_of_variation(cycles.stride_time))
     stats.step_time_cv.append(rm.coefficient_of_variation(cycles.step_time))
@@ -63,9 +88,7 @@ def _walk_clip(stats: _WalkStats, motion: Motion, joint_map: JointMap, prep: Pre
     asym = rm.step_asymmetry(cycles)
     stats.asym_cm.append(asym)
     stats.asym_pct.append(asym / float(np.mean(cycles.step_length)) if np.isfinite(asym) else np.nan)
-    for side, mask in enumerate((contacts.left, contacts.right)):
-        stats.clearance.append(rm.toe_clearance(pos[:, toes[side], 1], mask, s.toe_window))
-    stats.noise.append(rm.high_frequency_rms(pos - pos[:, :1], motion.fps, s.noise_band_hz))
+    stats.clearance += clearance
     stats.n_strides += len(cycles.stride_length)
     return float(np.mean(cycles.stride_length)) if len(cycles.stride_length) else float("nan")
 
@@ -92,81 +115,94 @@ def _count(values: Iterable[float]) -> int:
 def _walk_rows(st: _WalkStats) -> list[tuple]:
     clear = np.concatenate(st.clearance) if st.clearance else np.zeros(0)
     pct = lambda v: [100.0 * x for x in v]  # noqa: E731
-    return [
+    cv_need = "no walk of 3 plausible strides"
+    rows = [
         (
             "stride_cv_pct",
-            "walk",
             _median(pct(st.stride_cv)),
             "%",
             _count(st.stride_cv),
             "stride length: SD over mean within a walk (median over walks)",
+            cv_need,
         ),
         (
             "stride_time_cv_pct",
-            "walk",
             _median(pct(st.stride_time_cv)),
             "%",
             _count(st.stride_time_cv),
             "stride time: SD over mean within a walk",
+            cv_need,
         ),
         (
             "step_time_cv_pct",
-            "walk",
             _median(pct(st.step_time_cv)),
             "%",
             _count(st.step_time_cv),
             "step time: SD over mean within a walk",
+            "no walk of 3 plausible steps",
         ),
         (
             "stance_fraction_sd_pct",
-            "walk",
             _median(pct(st.stance_sd)),
             "% of cycle",
             _count(st.stance_sd),
             "gait-event jitter: SD of the toe-off's place in the cycle between strides of a walk",
+            cv_need,
         ),
         (
             "step_asymmetry_cm",
-            "walk",
             _median(st.asym_cm),
             "cm",
             _count(st.asym_cm),
             "|mean left step - mean right step| of a walk",
+            "no walk of 2 plausible steps of each foot",
         ),
         (
             "step_asymmetry_pct",
-            "walk",
             _median(pct(st.asym_pct)),
             "%",
             _count(st.asym_pct),
             "step asymmetry over the mean step",
+            "no walk of 2 plausible steps of each foot",
         ),
         (
             "toe_clearance_median_cm",
-            "walk",
             _median(clear),
             "cm",
             len(clear),
             "minimum toe clearance in mid-swing, median over swings",
+            "no swing between plausible contacts",
         ),
         (
             "toe_clearance_p5_cm",
-            "walk",
             float(np.percentile(clear, 5)) if len(clear) else np.nan,
             "cm",
             len(clear),
             "minimum toe clearance in mid-swing, 5th percentile",
+            "no swing between plausible contacts",
         ),
+        ("strides", float(st.n_strides), "", len(st.stride_cv), "steady strides measured", ""),
+    ]
+    events = [(s, "walk", v, u, n, d, _note(v, need, st.note())) for s, v, u, n, d, need in rows]
+    noise = 10.0 * _median(st.noise)
+    events.insert(
+        8,
         (
             "noise_rms_mm",
             "walk",
-            10.0 * _median(st.noise),
+            noise,
             "mm",
             _count(st.noise),
             "RMS of root-relative joint positions in the noise band",
+            _note(noise, "no walk long enough to filter", ""),
         ),
-        ("strides", "walk", float(st.n_strides), "", len(st.stride_cv), "steady strides measured"),
-    ]
+    )
+    return events
+
+
+def _note(value: float, missing: str, otherwise: str) -> str:
+    """``missing`` (why there is no value) for a NaN value, else ``otherwise``."""
+    return (f"{missing}; {otherwise}" if otherwise else missing) if not np.isfinite(value) else otherwise
 
 
 def _channel_rows(motions: list[Motion], behaviour: str, s: RealismSettings) -> tuple[list[tuple], list[tuple]]:
@@ -182,6 +218,7 @@ def _channel_rows(motions: list[Motion], behaviour: str, s: RealismSettings) -> 
             "share",
             n,
             f"share of non-root rotation channels that are {c}",
+            "",
         )
         for c in ("static", "near-static", "moving")
     ]
@@ -210,6 +247,7 @@ def _cmu_rows(classes: dict[str, np.ndarray], behaviour: str) -> list[tuple]:
             "share",
             len(moved),
             "CMU rig: share of the channels captured walks move that move here",
+            "",
         ),
         (
             "cmu_captured_static_kept_share",
@@ -218,8 +256,38 @@ def _cmu_rows(classes: dict[str, np.ndarray], behaviour: str) -> list[tuple]:
             "share",
             len(kept),
             "CMU rig: share of the channels captured walks hold still that are (near-)static here",
+            "",
         ),
     ]
+
+
+def _spread_rows(
+    strides: np.ndarray, stride_subject: np.ndarray, postures: np.ndarray, subject: np.ndarray, s: RealismSettings
+) -> list[tuple]:
+    """The within- against between-subject spread of a walk's mean stride and mean posture,
+    over subjects with ``s.min_clips_per_subject`` walks; no value below ``s.min_subjects``."""
+    rows = []
+    for name, values, groups, what in (
+        ("stride_within_between", strides, stride_subject, "a (neutral) walk's mean stride"),
+        ("posture_within_between", postures, subject, "a walk's mean posture (joint rotation vectors)"),
+    ):
+        labels, counts = np.unique(groups, return_counts=True)
+        k = int(np.sum(counts >= max(s.min_clips_per_subject, 2)))
+        few = k < s.min_subjects
+        value = np.nan if few else rm.within_between_ratio(values, groups, s.min_clips_per_subject)
+        note = f"{k} subjects with {s.min_clips_per_subject} walks, fewer than realism.min_subjects = {s.min_subjects}"
+        rows.append(
+            (
+                name,
+                "walk",
+                value,
+                "ratio",
+                0 if few else len(values),
+                f"within-subject SD of {what} over the SD of subject means",
+                note if few else "",
+            )
+        )
+    return rows
 
 
 def _posture(motion: Motion) -> np.ndarray:
@@ -257,30 +325,12 @@ def dataset_realism(
     measured = np.isfinite(strides)
     if len(walks):
         rows += _walk_rows(st)
-        rows.append(
-            (
-                "stride_within_between",
-                "walk",
-                rm.within_between_ratio(strides[measured], spread_subject[measured], s.min_clips_per_subject),
-                "ratio",
-                int(measured.sum()),
-                "within-subject SD of a (neutral) walk's mean stride over the SD of subject means",
-            )
-        )
-        rows.append(
-            (
-                "posture_within_between",
-                "walk",
-                rm.within_between_ratio(np.array(postures), spread_subject, s.min_clips_per_subject),
-                "ratio",
-                len(postures),
-                "the same for a walk's mean posture (joint rotation vectors)",
-            )
-        )
+        rows += _spread_rows(strides[measured], spread_subject[measured], np.array(postures), spread_subject, s)
     picks = np.flatnonzero(behaviour == "pick")
     if len(picks):
         reach = [_reach_clip(dataset.motion(int(i)), joint_map, prep, s) for i in picks]
         peaks = np.array([r[0] for r in reach], dtype=float)
+        few = len(peaks) < s.min_reaches
         rows += [
             (
                 "reach_speed_peaks",
@@ -289,14 +339,16 @@ def dataset_realism(
                 "peaks",
                 len(peaks),
                 "hand-speed peaks in a reach (mean)",
+                "",
             ),
             (
                 "reach_multi_peak_share",
                 "pick",
-                float(np.mean(peaks >= 2)),
+                np.nan if few else float(np.mean(peaks >= 2)),
                 "share",
-                len(peaks),
+                0 if few else len(peaks),
                 "share of reaches with a corrective sub-movement (two or more speed peaks)",
+                f"{len(peaks)} reaches, fewer than realism.min_reaches = {s.min_reaches}" if few else "",
             ),
             (
                 "reach_path_ratio",
@@ -305,6 +357,7 @@ def dataset_realism(
                 "ratio",
                 len(reach),
                 "hand path length over straight distance in a reach (median)",
+                "",
             ),
         ]
     for name in ("walk", "pick"):

@@ -24,11 +24,13 @@ Neutral adult values (docs/gait.md; Perry & Burnfield 2010, Winter 2009, Novache
 Clip-to-clip variation within a subject is small (walking stride ±4 %, cadence ±3 %, arm swing
 ±6 %, lean ±1°), so subjects stay recognisable (docs/gait.md, "Consistency").
 
-Captured variation (``sample_walk_params(..., captured=True)``; off by default, which gives the
-data of the published results): a walk's stride varies by ``CAPTURED_STRIDE_CLIP_SD`` around the
-subject's instead of 4 % (a test-retest ICC of stride length of 0.8-0.98 in healthy adults puts
-the within-subject SD at 0.14-0.5 of the between-subject SD, docs/gait.md "Realism"; the
-subjects' leg lengths vary by ≈ 5 %), and steps vary within a walk (the captured Bandai-Namco walks
+Captured variation (``sample_walk_params(..., captured=True)``, which ``SynthSpec`` passes by
+default): a walk's stride varies by ``CAPTURED_STRIDE_CLIP_SD`` (0.75 %) around the subject's
+instead of 4 % (a test-retest ICC of stride length of 0.8-0.98 in healthy adults puts the
+within-subject SD at 0.14-0.5 of the between-subject SD, docs/gait.md "Realism"; with the
+subjects' leg lengths spread by ≈ 5 % that is a walk-to-walk SD of 0.7-2.5 %; a walk's measured
+mean stride adds its averaged step-to-step variation, which alone puts the ratio near 0.4, so the
+drawn part takes the low end), and steps vary within a walk (the captured Bandai-Namco walks
 give stride CV 3.1 %, stride-time CV 2.9 %, toe-off jitter 1.8 % of the cycle; Hausdorff 2005:
 stride-time CV 1-3 % in healthy adults): each heel strike's footprint lies off its nominal place
 along the path by an AR(1) process over the footfalls (SD ``FOOTFALL_JITTER_CM``, lag-one
@@ -54,7 +56,7 @@ RUN_STRIDE_PER_LEG = 2.6
 RUN_CADENCE = 165.0  # steps / min
 SIDESTEP_CADENCE = 90.0  # steps / min
 WALK_STRIDE_CLIP_SD = 0.04  # log-SD of a walk's stride around the subject's
-CAPTURED_STRIDE_CLIP_SD = 0.025  # the same with captured variation (within/between ≈ 0.45)
+CAPTURED_STRIDE_CLIP_SD = 0.0075  # the same with captured variation (module docstring)
 FOOTFALL_JITTER_CM = 2.5  # SD of a footprint's offset along the path (stride CV ≈ 2 %)
 FOOTFALL_JITTER_RHO = 0.5  # lag-one correlation of successive footprints' offsets
 STRIKE_JITTER_S = 0.015  # SD of a heel strike's time (stride-time CV ≈ 2 %)
