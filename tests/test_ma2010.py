@@ -330,13 +330,13 @@ def test_support_foot_keeps_a_minimum_contact_time():
 
 @pytest.fixture(scope="module")
 def generator_walks():
-    """Walks of the project's generator (two subjects, neutral and childlike), with their
-    ground truth (stride, contacts)."""
+    """Walks of the project's generator with captured variation (two subjects, neutral and
+    childlike: every stride of a walk its own), with their ground truth (stride, contacts)."""
     from motionvar.synth import generate_walk, make_subjects, sample_walk_params
 
     rng = np.random.default_rng(1)
     return [
-        generate_walk(s, sample_walk_params(s, rng, style, n_steps=6))
+        generate_walk(s, sample_walk_params(s, rng, style, n_steps=6, captured=True))
         for s in make_subjects(2, seed=7)
         for style in ("neutral", "childlike")
     ]
@@ -353,19 +353,22 @@ def test_support_never_flips_within_the_minimum_contact_time(generator_walks):
     """Footskate cleanup of the generator's walks: with the minimum contact time (0.1 s) no
     support phase is shorter, and the recovered root follows the generator's own (which
     keeps the stance foot planted) without jumps; the literal per-frame rule flickers in
-    double support and jolts the root by ~0.7 cm."""
+    double support and jolts the root (by up to ~0.7 cm, on the walks whose flicker falls where
+    the feet stand apart)."""
+    literal_jumps = []
     for m, _ in generator_walks:
         solver, literal = root_solver(m.skeleton, JM), root_solver(m.skeleton, JM, min_support_s=0.0)
         runs = support_runs(solver, m)
         assert runs.min() >= round(0.1 * m.fps) and len(runs) >= 6  # one support phase per step (6 steps)
         assert support_runs(literal, m).min() < 5  # flicker
-        for s, bound in ((solver, 0.15), (literal, None)):
+        for s, jumps in ((solver, None), (literal, literal_jumps)):
             root = s.motion(m.rotations, m.fps).root_pos
             jump = np.linalg.norm(np.diff(root[:, [0, 2]] - m.root_pos[:, [0, 2]], axis=0), axis=1).max()
-            if bound is not None:
-                assert jump < bound  # cm per frame
+            if jumps is None:
+                assert jump < 0.15  # cm per frame
             else:
-                assert jump > 0.3
+                jumps.append(jump)
+    assert max(literal_jumps) > 0.3, literal_jumps
 
 
 def true_phase_strides(m, truth, key_frames):
@@ -374,15 +377,18 @@ def true_phase_strides(m, truth, key_frames):
     contacts begins: the generator pins the ankle from heel strike) before and after the phase's
     start, the right foot's in the left support phase and the left foot's in the right; and
     whether the cycle holds both (False where the foot leaves a standing footprint, a contact
-    from the walk's first frame, or lands after the phase's last key frame)."""
+    from the walk's first frame, lands after the phase's last key frame, or lifts off one frame
+    into the cycle: its first frame, the foot's toe-off pose, is held before the cycle and stands
+    for its footprint)."""
     pos = m.positions()
     out, seen = [], []
     for start, stop, side in ((key_frames[0], key_frames[2], "right"), (key_frames[2], key_frames[4], "left")):
-        starts = np.array([a for a, _ in parse_ranges(truth[f"{side}_contacts"])])
-        before, after = starts[starts <= start][-1], starts[starts > start][0]
+        contacts = np.array(parse_ranges(truth[f"{side}_contacts"]))
+        k = np.flatnonzero(contacts[:, 0] <= start)[-1]
+        before, after = contacts[k, 0], contacts[k + 1, 0]
         ankle = JM.index(m.skeleton, f"{side}_ankle")
         out.append(np.linalg.norm(pos[after, ankle, [0, 2]] - pos[before, ankle, [0, 2]]))
-        seen.append(before > 0 and after <= stop)
+        seen.append(before > 0 and after <= stop and contacts[k, 1] != key_frames[0] + 1)
     return np.array(out), np.array(seen)
 
 
@@ -390,11 +396,16 @@ def test_stride_of_a_generator_cycle_matches_its_true_strides(generator_walks):
     """The stride measure (the one that gives an example cycle its style and measures a
     synthesized clip) on each cycle cut from the generator's walks, alone, space-warped, on its
     own skeleton: within 0.25 % of the generator's stride of each support phase whose footfalls
-    the cycle holds. Within 1 % where it does not: the swing foot leaves the standing start (the
-    cycle shows it only on its toe, and a standing foot is posed otherwise than a walking
-    footprint; the generator's stride leaves gait initiation out too) or lands a frame after the
-    cycle's last key frame (the cycle ends with it a frame short of its footprint)."""
-    n_seen = 0
+    the cycle holds (each phase against its own stride). Within 1 % where the cycle does not hold
+    both: the swing foot leaves the standing start (the cycle shows it only on its toe, and a
+    standing foot is posed otherwise than a walking footprint; the generator's stride leaves gait
+    initiation out too), lands a frame after the cycle's last key frame (the cycle ends with it a
+    frame short of its footprint), or lifts off one frame into the cycle. That last case comes
+    with step-time variation: the measure holds a cycle's first pose before it (EDGE_HOLD_S), so a
+    foot still on its toe there is planted in its toe-off pose, ahead of its footprint. Over 12
+    draws of these walks the 16 such phases missed by up to 0.83 %, the 20 cut at toe-off itself
+    by up to 0.14 %, the 28 holding 2-21 frames of the contact by up to 0.01 %."""
+    seen_errors = []
     for m, truth in generator_walks:
         solver = root_solver(m.skeleton, JM)
         cycles = extract_cycles(m, JM, *KEYFRAMES).cycles
@@ -403,10 +414,10 @@ def test_stride_of_a_generator_cycle_matches_its_true_strides(generator_walks):
             measured = normalized_strides(space_warp(cut(m, c), JM).rotations, c.key_frames, solver, m.fps)
             true, seen = true_phase_strides(m, truth, c.start + c.key_frames)
             error = np.abs(measured / true - 1)
-            assert np.all(error[seen] < 0.0025) and np.all(error < 0.01), (measured, true, seen)
-            assert np.allclose(true[seen], truth["stride_length_cm"], rtol=0.0025)  # the metadata's stride
-            n_seen += int(seen.sum())
-    assert n_seen >= 12
+            assert np.all(error < 0.01), (measured, true, seen)
+            assert np.all(error[seen] < 0.0025), (measured, true, seen)
+            seen_errors += list(error[seen])
+    assert len(seen_errors) >= 12
 
 
 def test_planted_carrier_changes_the_root_only_at_a_change_of_support(toy_clips):

@@ -72,12 +72,6 @@ def test_report_holds_the_data_figures_and_the_claims(ci_run):
 
 
 @pytest.mark.e2e
-@pytest.mark.xfail(
-    strict=True,
-    raises=AssertionError,
-    reason="issue 44: the generator's clean data (the default) repeats its strides (stride CV 0, no left/right "
-    "asymmetry), holds half its channels still and reaches with one speed peak",
-)
 def test_ci_synthetic_data_lies_in_the_captured_bands(ci_run):
     """The CI-size synthetic data against the gating bands from captured data (motionvar.realism)."""
     table = pd.read_csv(ci_run[0] / "results" / "synthetic" / "tables" / "dataset_realism.csv")

@@ -77,9 +77,10 @@ class SynthSpec:
             captured=True)``), the small smooth rotations captured data carries on channels the
             generator holds constant (:func:`~motionvar.synth.capture.add_capture_motion`; feet,
             hips, knees, ankles, toes, root and the gripping hands keep their positions) and
-            reaches with corrective sub-movements. False (the default) gives the data of the
-            published results; every extra draw comes after the others or from a stream of its
-            own, so the rest of each clip is drawn alike.
+            reaches with corrective sub-movements (the default). False gives the generator's
+            clean data (strides repeated within a walk, left equal to right, still channels,
+            single-peaked reaches); every extra draw comes after the others or from a stream of
+            its own, so the rest of each clip is drawn alike.
     """
 
     subjects: int = 25
@@ -93,7 +94,7 @@ class SynthSpec:
     idle_clips: int = 2
     idle_duration_s: float = 20.0
     fps: float = 120.0
-    captured_variation: bool = False
+    captured_variation: bool = True
 
     def validate(self) -> None:
         """ValueError naming the first bad field."""
