@@ -29,8 +29,8 @@ default): a walk's stride varies by ``CAPTURED_STRIDE_CLIP_SD`` (0.75 %) around 
 instead of 4 % (a test-retest ICC of stride length of 0.8-0.98 in healthy adults puts the
 within-subject SD at 0.14-0.5 of the between-subject SD, docs/gait.md "Realism"; with the
 subjects' leg lengths spread by ≈ 5 % that is a walk-to-walk SD of 0.7-2.5 %; a walk's measured
-mean stride adds its averaged step-to-step variation, which alone puts the ratio near 0.4, so the
-drawn part takes the low end), and steps vary within a walk (the captured Bandai-Namco walks
+mean stride adds its averaged step-to-step variation, so the drawn part takes the low end: the
+measured ratio is 0.33-0.46 at full size over five seeds), and steps vary within a walk (the captured Bandai-Namco walks
 give stride CV 3.1 %, stride-time CV 2.9 %, toe-off jitter 1.8 % of the cycle; Hausdorff 2005:
 stride-time CV 1-3 % in healthy adults): each heel strike's footprint lies off its nominal place
 along the path by an AR(1) process over the footfalls (SD ``FOOTFALL_JITTER_CM``, lag-one
