@@ -96,6 +96,7 @@ def _fig6_measurements(ours: np.ndarray, floor: np.ndarray, pose: dict[str, np.n
         "root_group": "legs",
         "ablation_root_group": None,
         "loo_unit": "walk",
+        "loo_xi": "mean",
         "walks": len(ours),
         "variogram_model": "linear",
         "mk05": paired_pose_errors(_pose_folds(pose)),

@@ -151,8 +151,12 @@ def test_fig6_leave_one_out(walks):
     ]
     assert "steady cycles" in result.claims[0].measured and "upper_body" in result.claims[0].measured
     stride, kriging = result.claims
-    assert stride.value == folds["ours_own_xi_stride_error_cm"].max() and (stride.bound, stride.unit) == (1.2, "cm")
-    # two folds (walks): too few for a paired test to reach p < 0.05
+    # the verdict on the network's conditional-mean xi (ma2010.loo_xi), the others as diagnostics
+    assert stride.value == folds["ours_mean_xi_stride_error_cm"].max() and (stride.bound, stride.unit) == (1.2, "cm")
+    assert "conditional-mean xi" in stride.note and "the held-out cycle's own xi (Eq. 7-9)" in stride.measured
+    own = fig6_leave_one_out(walks, LINEAR.replace(loo_max_clips=2, loo_xi="own"), ablation=False)
+    assert own.claims[0].value == own.table["ours_own_xi_stride_error_cm"].max()
+    # two folds: too few for a paired test to reach p < 0.05
     assert kriging.verdict == "not testable" and "fewer than 5 differing folds" in kriging.note
     assert result.measurements["mk05"]["folds"] == folds["fold"].nunique() == 2
     check(result, figures.draw_fig6, "")
@@ -183,7 +187,7 @@ def test_mk05_rbf_reaches_the_held_out_walks_and_the_paired_test_decides(walks):
     distance to the nearest other example, here walk) reaches the held-out walks between the
     others, where its clips differ from least squares; where no kernel reaches, it is the
     least-squares fit. The claim is a one-sided Wilcoxon signed-rank test over the folds (p < 0.05)."""
-    result = fig6_leave_one_out(walks, LINEAR.replace(structure="lower_first"), ablation=False)
+    result = fig6_leave_one_out(walks, LINEAR.replace(structure="lower_first", loo_unit="walk"), ablation=False)
     folds = result.table[result.table["kind"] == "fold"]
     mk05 = result.measurements["mk05"]
     assert mk05["reached"] == {name: int(folds[f"{name}_reaches"].sum()) for name in ("rbf", "rbf_cycles")}
@@ -245,7 +249,7 @@ def test_whole_walk_folds_never_train_on_a_sibling_cycle():
 
 
 def test_fig6_whole_walk_folds_leave_out_every_sibling(walks):
-    settings = LINEAR.replace(structure="lower_first", loo_max_clips=3)
+    settings = LINEAR.replace(structure="lower_first", loo_max_clips=3, loo_unit="walk")
     result = fig6_leave_one_out(walks, settings, ablation=False)
     folds = result.table[result.table["kind"] == "fold"]
     size = pd.Series(walks.source_clips).value_counts()

@@ -119,10 +119,13 @@ def _fig6_errors(ax: Axes, folds: pd.DataFrame, closing: np.ndarray, f: dict) ->
     ax.set_xticklabels([f"{i + 1}{'c' if c else ''}" for i, c in enumerate(closing)], fontsize=6)
     ax.set_xlabel("held-out cycle, in walk order (c, shaded: closing cycle)")
     ax.set_ylabel("stride error: max |error| of the two phases (cm)")
-    err = folds["ours_own_xi_stride_error_cm"].to_numpy()
+    xi = f["loo_xi"]
+    err = folds[f"ours_{xi}_xi_stride_error_cm"].to_numpy()
     unit = "whole walk left out per fold" if f["loo_unit"] == "walk" else "one cycle left out per fold"
     ax.set_title(
-        f"{len(folds)} held-out cycles ({unit}): ours max {err.max():.2f} cm, mean {err.mean():.2f} cm", fontsize=9
+        f"{len(folds)} held-out cycles ({unit}): ours ({xi} xi, the verdict's) max {err.max():.2f} cm, "
+        f"mean {err.mean():.2f} cm",
+        fontsize=9,
     )
     ax.legend(fontsize=7)
 

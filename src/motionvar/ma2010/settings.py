@@ -14,6 +14,7 @@ VARIOGRAM_MODELS = ("linear", "power", "exponential", "gaussian", "spherical", "
 VARIOGRAM_SCALES = ("sd", "none")
 ROOT_GROUPS = ("legs", "upper_body")
 LOO_UNITS = ("walk", "cycle")
+LOO_XIS = ("mean", "sampled", "own")
 XI_DRAWS = ("sequence", "clip")
 LANDING_RULES = ("significant_maximum", "first_maximum")
 
@@ -39,7 +40,13 @@ class Ma2010Settings(Settings):
         fig3_phase_sd, fig3_max_clips: Fig. 3 claim bound (ours; the paper gives none) and clips.
         loo_max_clips: Fig. 6 held-out cycles; 0 = every one (Sec. 7.1: "repeated until each
             example motion clip ... has been used once as the test data").
-        loo_unit: Fig. 6 fold: the held-out cycle's whole walk ("cycle": it alone).
+        loo_unit: Fig. 6 fold: the held-out cycle alone (Sec. 7.1: "one of the example motion
+            clips" is left out, a clip being a cycle here; "walk": its whole walk, siblings too).
+        loo_xi: Fig. 6 verdict's latent variation: the network's conditional mean given the
+            style ("mean": Sec. 7.1 predicts a held-out clip "according to its style
+            parameters", and Sec. 8 generates xi from the style), a draw from the network
+            ("sampled") or the held-out cycle's own xi (Eq. 7-9, "own": knows the answer's
+            variation). Every kind is a row of the table.
         reliability_grid, reliability_margin: Fig. 7b grid.
         fig8_variants: Fig. 8a shows five clips at one style.
         spread_ratio_bounds: Fig. 8 claim, "of the same order" (ours; the paper gives none).
@@ -73,7 +80,8 @@ class Ma2010Settings(Settings):
     fig3_phase_sd: float = 0.05
     fig3_max_clips: int = 0
     loo_max_clips: int = 0
-    loo_unit: str = "walk"
+    loo_unit: str = "cycle"
+    loo_xi: str = "mean"
     reliability_grid: int = 15
     reliability_margin: float = 0.5
     fig8_variants: int = 5
@@ -102,6 +110,7 @@ class Ma2010Settings(Settings):
             "variogram_scale": VARIOGRAM_SCALES,
             "root_group": ROOT_GROUPS,
             "loo_unit": LOO_UNITS,
+            "loo_xi": LOO_XIS,
             "comparison_xi": XI_DRAWS,
             "comparison_landing": LANDING_RULES,
         }

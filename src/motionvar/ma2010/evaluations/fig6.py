@@ -322,11 +322,11 @@ def loo_measurements(
     folds: pd.DataFrame, summary: pd.DataFrame, settings: Ma2010Settings, root: str, alt: str | None
 ) -> dict:
     """What Fig. 6's claims are judged on (``motionvar.ma2010.claims``): the stride error of ours
-    with the held-out cycle's own xi against the strides asked for, over every held-out cycle
+    with the xi of ``settings.loo_xi`` against the strides asked for, over every held-out cycle
     (max, mean, count, count within 1.2 cm), the summary rows (:func:`summary_measurements`), the
-    folds' setup (root group ``root``, the ablation's ``alt`` or None, fold unit, number of
+    folds' setup (root group ``root``, the ablation's ``alt`` or None, fold unit, xi, number of
     walks, variogram) and MK05's paired pose errors (``mk05``: :func:`paired_pose_errors`)."""
-    err = folds["ours_own_xi_stride_error_cm"].to_numpy()
+    err = folds[f"ours_{settings.loo_xi}_xi_stride_error_cm"].to_numpy()
     return {
         "stride_error_cm": {
             "max": float(err.max()),
@@ -338,6 +338,7 @@ def loo_measurements(
         "root_group": root,
         "ablation_root_group": alt,
         "loo_unit": settings.loo_unit,
+        "loo_xi": settings.loo_xi,
         "walks": int(folds["source_clip"].nunique()),
         "variogram_model": settings.variogram_model,
         "mk05": paired_pose_errors(folds),
@@ -350,12 +351,12 @@ def fig6_leave_one_out(walks: WalkCycles, settings: Ma2010Settings, ablation: bo
     whole walk of the held-out cycle leaves training; "cycle": only the cycle), the
     structure (``settings.structure``) resolved once on all cycles; :func:`leave_one_out`.
     With ``ablation`` the model is refitted with the root rotation in the other joint group
-    than ``walks.root_group``. Claims (on ``walks.root_group``, the held-out cycle's own xi):
+    than ``walks.root_group``. Claims (on ``walks.root_group``, xi by ``settings.loo_xi``):
     every stride error against the strides asked for within the published 1.2 cm; Kriging errs
     less than RBF over the folds (MK05, a paired test), judged on :func:`loo_measurements`.
     Table: summary rows (``kind`` "summary": method x all / steady / closing cycles) then one
     row per held-out cycle (``kind`` "fold"). Figure: ``published_max_stride_error_cm``,
-    ``root_group``, ``ablation`` (the ablation's table prefix or None), ``loo_unit``."""
+    ``root_group``, ``ablation`` (the ablation's table prefix or None), ``loo_unit``, ``loo_xi``."""
     clips = walks.clips
     held_out = held_out_cycles(clips.n_clips, settings.loo_max_clips, settings.seed)
     root, alt = walks.root_group, alternative_root_group(walks.root_group)
@@ -384,5 +385,6 @@ def fig6_leave_one_out(walks: WalkCycles, settings: Ma2010Settings, ablation: bo
         "ablation": alt_name if ablation else None,
         "alt_root_group": alt,
         "loo_unit": settings.loo_unit,
+        "loo_xi": settings.loo_xi,
     }
     return EvaluationResult(table, judge_claims(CLAIMS, "ma2010_fig6", measurements), figure, measurements)
