@@ -163,6 +163,8 @@ def variants_that_are_one_clip() -> dict:
     }
     return {
         "spread_cm": spread,
+        "data_interval_cm": {g: [0.5 * spread["data"][g], 1.5 * spread["data"][g]] for g in GROUPS},
+        "draws": len(variants),
         "groups": list(GROUPS),
         "max_stride_error_cm": 0.4,
         "over_bound": 0,

@@ -36,7 +36,7 @@ from motionvar.ma2010.evaluations.common import PAPER, loo_folds, walk_positions
 from motionvar.ma2010.evaluations.fig3 import circular_sd, fig3_keyframes, step_phases
 from motionvar.ma2010.evaluations.fig6 import fig6_leave_one_out
 from motionvar.ma2010.evaluations.fig7b import fig7b_reliability, reliability_correlation
-from motionvar.ma2010.evaluations.fig8 import fig8_fixed_style
+from motionvar.ma2010.evaluations.fig8 import GROUPS, fig8_fixed_style
 from motionvar.ma2010.evaluations.sec7_4 import sec7_4_comparison
 from motionvar.ma2010.evaluations.sec8 import cpu_model, sec8_timing
 from motionvar.ma2010.examples import WalkCycles, joint_groups, walk_cycles
@@ -294,10 +294,18 @@ def test_fig7b_counts_failed_syntheses_and_asks_for_a_strong_correlation():
 
 
 def test_fig8_variants_vary_and_interpolations_do_not(walks, model):
-    settings = LINEAR.replace(fig8_variants=3, seed=1, spread_ratio_bounds=(0.1, 10.0))
+    settings = LINEAR.replace(
+        fig8_variants=3, fig8_draws=40, fig8_bootstrap=200, seed=1, spread_ratio_bounds=(0.1, 10.0)
+    )
     result = fig8_fixed_style(walks, model, settings)
     t = result.table
     assert (t["kind"] == "variant").sum() == 3 and (t["kind"] == "spread_cm").sum() == 6
+    # ours' spread over the 40 draws; the data's (3 nearest cycles) with its bootstrap interval around it
+    m = result.measurements
+    assert m["draws"] == 40 and "40 cycles at the median stride" in result.claims[0].note
+    for g in GROUPS:
+        lo, hi = m["data_interval_cm"][g]
+        assert lo <= m["spread_cm"]["data"][g] * 1.0001 and hi >= lo and "bootstrap" in result.claims[0].measured
     assert (t["kind"] == "ceiling").sum() == 3 and np.all(t.loc[t["kind"] == "ceiling", "stride_error_cm"] >= 0)
     spreads = result.figure["spreads"]
     assert min(spreads["ours"].values()) > 0 and max(spreads["RBF"].values()) < 1e-6

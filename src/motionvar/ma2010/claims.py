@@ -253,22 +253,26 @@ def _variants_differ(m: Measurements) -> Judgement:
             f"from {FIG8_MIN_SUBJECTS} subjects (the dataset needs walks of more subjects).",
         )
     ratios = {g: ours[g] / max(ref[g], 1e-12) for g in groups}
+    interval = m["data_interval_cm"]
     checks = [all(lo <= r <= hi for r in ratios.values()), m["max_stride_error_cm"] <= PUBLISHED_MAX_STRIDE_ERROR_CM]
     verdict = ("reproduced" if checks[1] else "partial") if checks[0] else "not reproduced"
     return Judgement(
         verdict=verdict,
-        measured="spread ours / ceiling / data per group: "
-        + ", ".join(f"{g} {ours[g]:.2f}/{ceil[g]:.2f}/{ref[g]:.2f} cm (x{ratios[g]:.2f})" for g in groups)
+        measured="spread ours / ceiling / data [95 % bootstrap] per group: "
+        + ", ".join(
+            f"{g} {ours[g]:.2f}/{ceil[g]:.2f}/{ref[g]:.2f} [{interval[g][0]:.2f}, {interval[g][1]:.2f}] cm "
+            f"(x{ratios[g]:.2f})"
+            for g in groups
+        )
         + f"; max stride error {m['max_stride_error_cm']:.2f} cm ({m['over_bound']}/{m['variants']} over "
-        f"{PUBLISHED_MAX_STRIDE_ERROR_CM} cm; ceiling {m['ceiling_max_stride_error_cm']:.2f} cm)",
+        f"{PUBLISHED_MAX_STRIDE_ERROR_CM} cm; ceiling {m['ceiling_max_stride_error_cm']:.2f} cm); the examples "
+        "without their mean posture spread " + ", ".join(f"{g} {static[g]:.2f}" for g in groups) + " cm",
         note=f"Spread (SD across clips of each joint's root-relative position, averaged over a group) of "
-        f"{m['variants']} variants at the median stride (xi sampled, root rotation in {m['root_group']}) against the "
-        f"{m['examples']} example cycles nearest that style, one per subject; checks: within [{lo:g}, {hi:g}] x "
-        f"theirs in every group (required), every stride error <= {PUBLISHED_MAX_STRIDE_ERROR_CM} cm; passed "
-        f"{checks}. The ceiling synthesizes that style from those examples' own xi, which cancels constant posture "
-        "offsets (Eq. 7): the examples without them spread "
-        + ", ".join(f"{g} {static[g]:.2f}" for g in groups)
-        + " cm.",
+        f"{m['draws']} cycles at the median stride (xi sampled, root in {m['root_group']}) against the {m['examples']} "
+        f"example cycles nearest that style, one per subject; checks: within [{lo:g}, {hi:g}] x theirs in every "
+        f"group (required), the shown {m['variants']} variants' stride errors <= {PUBLISHED_MAX_STRIDE_ERROR_CM} cm; "
+        f"passed {checks}. The ceiling synthesizes that style from those examples' own xi, which cancels constant "
+        "posture offsets (Eq. 7).",
         value=sum(checks) / len(checks),
         bound=1.0,
         unit="share",

@@ -48,7 +48,10 @@ class Ma2010Settings(Settings):
             ("sampled") or the held-out cycle's own xi (Eq. 7-9, "own": knows the answer's
             variation). Every kind is a row of the table.
         reliability_grid, reliability_margin: Fig. 7b grid.
-        fig8_variants: Fig. 8a shows five clips at one style.
+        fig8_variants: Fig. 8a shows five clips at one style (table rows, figure, stride check).
+        fig8_draws: Fig. 8a's spread of ours from this many xi draws at the style (the shown
+            variants are the first); the spread of five draws is itself noise.
+        fig8_bootstrap: resamples of the nearest examples for the interval of their spread.
         spread_ratio_bounds: Fig. 8 claim, "of the same order" (ours; the paper gives none).
         comparison_examples: Sec. 7.4 uses the five example clips of Fig. 1.
         comparison_sequences: Sec. 7.4 compares three long sequences.
@@ -85,6 +88,8 @@ class Ma2010Settings(Settings):
     reliability_grid: int = 15
     reliability_margin: float = 0.5
     fig8_variants: int = 5
+    fig8_draws: int = 200
+    fig8_bootstrap: int = 1000
     spread_ratio_bounds: tuple[float, float] = (0.33, 3.0)
     comparison_examples: int = 5
     comparison_seconds: float = 30.0
@@ -117,6 +122,10 @@ class Ma2010Settings(Settings):
         for key, allowed in choices.items():
             if getattr(self, key) not in allowed:
                 raise ValueError(f"{key} must be one of {list(allowed)}; got {getattr(self, key)!r}")
+        if self.fig8_draws < self.fig8_variants:
+            raise ValueError(
+                f"fig8_draws must be at least fig8_variants = {self.fig8_variants}; got {self.fig8_draws!r}"
+            )
         _check_sweep("perlin_amplitude_sweep_rad", self.perlin_amplitude_sweep_rad, 0.0, "amplitudes (rad) >= 0")
         _check_sweep("dbn_max_parents_sweep", self.dbn_max_parents_sweep, 1, "whole numbers of parents >= 1")
 

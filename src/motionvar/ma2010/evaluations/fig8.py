@@ -32,12 +32,15 @@ GROUPS = ("legs", "left_arm", "right_arm", "upper_body")  # A, B, C, D (Fig. 4)
 
 
 def fixed_style_variants(
-    model: StyleVariationModel, style: np.ndarray, n: int, solver: RootSolver, rng: np.random.Generator
-) -> tuple[ClipPrediction, dict[str, np.ndarray], np.ndarray]:
-    """Fig. 8(a): ``n`` clips at one style, xi sampled per clip; returns the clips, their
-    xi and their measured strides (n, 2)."""
-    pred, xi = model.synthesize_clips(np.tile(np.atleast_2d(style), (n, 1)), rng=rng)
-    return pred, xi, predicted_strides(pred, model.reference_keys_, solver, model.fps_)
+    model: StyleVariationModel, style: np.ndarray, draws: int, shown: int, solver: RootSolver, rng: np.random.Generator
+) -> tuple[ClipPrediction, ClipPrediction, dict[str, np.ndarray], np.ndarray]:
+    """Fig. 8(a): ``draws`` clips at one style, xi sampled per clip; returns them, the first
+    ``shown`` of them, their xi and their measured strides (shown, 2)."""
+    every, xi = model.synthesize_clips(np.tile(np.atleast_2d(style), (draws, 1)), rng=rng)
+    root_height = None if every.root_height is None else every.root_height[:shown]
+    pred = ClipPrediction(rotations=every.rotations[:shown], key_times=every.key_times[:shown], root_height=root_height)
+    xi = {g: v[:shown] for g, v in xi.items()}
+    return every, pred, xi, predicted_strides(pred, model.reference_keys_, solver, model.fps_)
 
 
 def ceiling_variants(
@@ -64,6 +67,22 @@ def posture_free_spread(rotations: np.ndarray, groups: dict, solver: RootSolver)
     return {g: float(sd[:, j].mean()) for g, j in groups.items()}
 
 
+def bootstrap_spread(
+    rotations: np.ndarray, groups: dict, solver: RootSolver, resamples: int, rng: np.random.Generator
+) -> dict[str, tuple[float, float]]:
+    """95 % percentile interval of :func:`.common.group_spread` of clips (M, T, J, 4) over
+    ``resamples`` draws of M clips with replacement (None without resamples)."""
+    if not resamples:
+        return {g: (float("nan"), float("nan")) for g in groups}
+    sk = solver.skeleton
+    pos = fk(rotations, np.zeros(rotations.shape[:-2] + (3,)), sk.offsets, sk.parents)  # (M, T, J, 3)
+    picks = rng.integers(0, len(rotations), size=(resamples, len(rotations)))
+    sd = np.stack([np.sqrt(np.sum(pos[k].var(axis=0), axis=-1)) for k in picks])  # (B, T, J)
+    return {
+        g: tuple(float(v) for v in np.percentile(sd[:, :, j].mean(axis=(1, 2)), [2.5, 97.5])) for g, j in groups.items()
+    }
+
+
 def interpolation_variants(interp: StyleClipInterpolation, style: np.ndarray, n: int) -> ClipPrediction:
     """n clips at one style from a style-only interpolation (RBF, Kriging)."""
     return interp.predict(np.tile(np.atleast_2d(style), (n, 1)))
@@ -77,8 +96,8 @@ def fixed_style_spreads(
     style: np.ndarray,
     settings: Ma2010Settings,
 ) -> dict[str, dict[str, float]]:
-    """Spread per joint group (:func:`.common.group_spread`) of ours (``pred``), the ceiling
-    (``ceil_pred``), the nearest examples ``near`` (also with each clip's mean posture
+    """Spread per joint group (:func:`.common.group_spread`) of ours (``pred``: every draw), the
+    ceiling (``ceil_pred``), the nearest examples ``near`` (also with each clip's mean posture
     removed), RBF and style-only Kriging (``settings`` variogram_model, variogram_scale) at
     ``style``, as many clips as ours."""
     clips, groups, solver, n = walks.clips, walks.groups, walks.solver, len(pred)
@@ -134,15 +153,20 @@ def fixed_style_measurements(
     near_subjects: list[str],
     settings: Ma2010Settings,
     root_group: str,
+    data_interval: dict[str, tuple[float, float]],
 ) -> dict:
     """What Fig. 8a's claims are judged on: the spread per joint group of every source
     (``spread_cm``: :data:`SPREAD_KEYS`, the nearest examples' ``data_name`` as ``data``), the
-    groups, the variants' largest stride error and how many exceed 1.2 cm, the ceiling's largest,
-    the numbers of variants, of nearest examples and of their subjects (``near_subjects``: each
-    nearest example's), ``settings.spread_ratio_bounds`` and the root rotation's group."""
+    data's 95 % bootstrap interval per group (``data_interval_cm``), the groups, the shown
+    variants' largest stride error and how many exceed 1.2 cm, the ceiling's largest, the
+    numbers of variants, of draws behind ours' spread, of nearest examples and of their subjects
+    (``near_subjects``: each nearest example's), ``settings.spread_ratio_bounds`` and the root
+    rotation's group."""
     spread = {SPREAD_KEYS.get(name, "data" if name == data_name else name): dict(s) for name, s in spreads.items()}
     return {
         "spread_cm": spread,
+        "data_interval_cm": {g: list(v) for g, v in data_interval.items()},
+        "draws": settings.fig8_draws,
         "groups": list(GROUPS),
         "max_stride_error_cm": float(errors.max()),
         "over_bound": int(np.sum(errors > PUBLISHED_MAX_STRIDE_ERROR_CM)),
@@ -156,11 +180,13 @@ def fixed_style_measurements(
 
 
 def fig8_fixed_style(walks: WalkCycles, model: StyleVariationModel, settings: Ma2010Settings) -> EvaluationResult:
-    """Fig. 8a for ``model`` fitted to ``walks``: ``settings.fig8_variants`` cycles at the
-    median stride (xi sampled, seeded by ``settings.seed``), their xi, strides and stride
-    errors, and the spread per joint group of ours, of the ceiling (the same style from the
+    """Fig. 8a for ``model`` fitted to ``walks``: ``settings.fig8_draws`` cycles at the median
+    stride (xi sampled, seeded by ``settings.seed``), the first ``settings.fig8_variants`` shown
+    with their xi, strides and stride errors; the spread per joint group of ours (over every
+    draw), of the ceiling (the same style from the
     nearest examples' own xi, :func:`ceiling_variants`), of the nearest examples (one per
-    subject; also with each clip's mean posture removed), of RBF and of style-only Kriging
+    subject; also with each clip's mean posture removed, and their 95 % bootstrap interval over
+    ``settings.fig8_bootstrap`` resamples), of RBF and of style-only Kriging
     (:func:`fixed_style_spreads`). Claims, judged on :func:`fixed_style_measurements`: the
     variants differ within ``settings.spread_ratio_bounds`` times the data's spread while
     keeping the stride (not testable with too few nearest examples or subjects); RBF and
@@ -170,13 +196,15 @@ def fig8_fixed_style(walks: WalkCycles, model: StyleVariationModel, settings: Ma
     clips, solver = walks.clips, walks.solver
     n = settings.fig8_variants
     style = np.median(clips.style, axis=0)
-    pred, xi, strides = fixed_style_variants(model, style, n, solver, np.random.default_rng(settings.seed))
+    rng = np.random.default_rng(settings.seed)
+    draws, pred, xi, strides = fixed_style_variants(model, style, settings.fig8_draws, n, solver, rng)
     errors = np.max(np.abs(strides - style), axis=1)
     near = nearest_clips(clips, style, n, walks.subjects)
     data_name = f"data ({len(near)} nearest examples)"
     ceil_pred, ceil_xi, ceil_strides = ceiling_variants(model, clips.rotations[near], style, solver)
     ceil_errors = np.max(np.abs(ceil_strides - style), axis=1)
-    spreads = fixed_style_spreads(walks, pred, ceil_pred, near, style, settings)
+    spreads = fixed_style_spreads(walks, draws, ceil_pred, near, style, settings)
+    interval = bootstrap_spread(clips.rotations[near], walks.groups, solver, settings.fig8_bootstrap, rng)
     rows = [_stride_row("variant", f"variant {k + 1}", xi, k, strides, errors) for k in range(n)]
     rows += [
         _stride_row("ceiling", f"own xi of {clips.clip_ids[i]}", ceil_xi, k, ceil_strides, ceil_errors)
@@ -186,7 +214,7 @@ def fig8_fixed_style(walks: WalkCycles, model: StyleVariationModel, settings: Ma
     motions, keys = variant_motions(model, pred, solver, clips.fps)
     near_subjects = [walks.subjects[i] for i in near]
     measurements = fixed_style_measurements(
-        spreads, data_name, errors, ceil_errors, near_subjects, settings, walks.root_group
+        spreads, data_name, errors, ceil_errors, near_subjects, settings, walks.root_group, interval
     )
     figure = {
         "motions": motions,
