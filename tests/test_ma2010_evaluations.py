@@ -6,6 +6,7 @@ import matplotlib
 
 matplotlib.use("Agg")  # noqa: E402  (tests draw figures to nowhere)
 
+import dataclasses
 import json
 import os
 
@@ -257,6 +258,34 @@ def test_fig6_whole_walk_folds_leave_out_every_sibling(walks):
     assert "ours_own_xi_root_upper_body_stride_error_cm" not in folds
     per_cycle = fig6_leave_one_out(walks, settings.replace(loo_unit="cycle"), ablation=False).table
     assert np.all(per_cycle.loc[per_cycle["kind"] == "fold", "n_train"] == walks.clips.n_clips - 1)
+
+
+def test_trend_rcond_reaches_every_trend_fit(walks):
+    """ma2010.trend_rcond is the cut-off of every trend hyperplane: ours (the model's), and in
+    Fig. 6's folds Kriging's, the RBFs' linear part and the least-squares reference. On a design
+    whose styles lie on a line but for one example, a cut of 0.3 drops the thin direction, so
+    the least-squares clips off the line differ from the literal fit's; on the line they agree."""
+    from motionvar.ma2010.evaluations.fig6 import least_squares_clips
+
+    assert walks.fit_model(LINEAR.replace(trend_rcond=0.3)).trend_rcond == 0.3
+    clips = walks.clips
+    t = np.linspace(-1.0, 1.0, clips.n_clips)
+    on_line = np.column_stack([60.0 + 5.0 * t, 62.0 + 5.0 * t])
+    on_line[0, 1] += 0.05  # the one example off the line: a thin second direction
+    degenerate = dataclasses.replace(clips, style=on_line)
+    off, on = np.array([[60.0, 66.0]]), np.array([[60.0, 62.0]])
+    literal, cut = (least_squares_clips(degenerate, off, r).rotations for r in (0.0, 0.3))
+    assert np.abs(literal - cut).max() > 1e-3
+    literal, cut = (least_squares_clips(degenerate, on, r).rotations for r in (0.0, 0.3))
+    assert (
+        np.abs(literal - cut).max()
+        < 0.5
+        * np.abs(
+            least_squares_clips(degenerate, off, 0.0).rotations - least_squares_clips(degenerate, off, 0.3).rotations
+        ).max()
+    )
+    with pytest.raises(ValueError, match="trend_rcond"):
+        LINEAR.replace(trend_rcond=1.0)
 
 
 def test_fig7b_reliability(walks, model):

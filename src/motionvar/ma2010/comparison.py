@@ -202,11 +202,16 @@ def method_sequences(
     style = five.style.mean(axis=0)
     n_clips = clips_for_duration(five, seconds)
     n_frames = int(round(seconds * fps)) + 1
+    rcond = settings.trend_rcond
     ours = StyleVariationModel(
-        groups, settings.structure, settings.variogram_model, variogram_scale=settings.variogram_scale
+        groups,
+        settings.structure,
+        settings.variogram_model,
+        variogram_scale=settings.variogram_scale,
+        trend_rcond=rcond,
     ).fit(five)
-    krig = mk05_kriging(settings.variogram_model, settings.variogram_scale).fit(five)
-    rbf = rose98_rbf().fit(five)
+    krig = mk05_kriging(settings.variogram_model, settings.variogram_scale, trend_rcond=rcond).fit(five)
+    rbf = rose98_rbf(trend_rcond=rcond).fit(five)
     seqs = example_pose_sequences(five)
     codec = PoseCodec.fit(np.concatenate(seqs))
     gplvm = BayesianGPLVM(settings.gplvm_latent_dim, max_iter=settings.gplvm_iterations, random_state=seed).fit(

@@ -369,5 +369,9 @@ class WalkCycles:
         """The model of Sec. 5-6 fitted to all the cycles, with the structure and variogram of
         ``settings`` ("auto" structure: Fig. 5 by D_l vs D_u of the cycles)."""
         return StyleVariationModel(
-            self.groups, settings.structure, settings.variogram_model, variogram_scale=settings.variogram_scale
+            self.groups,
+            settings.structure,
+            settings.variogram_model,
+            variogram_scale=settings.variogram_scale,
+            trend_rcond=settings.trend_rcond,
         ).fit(self.clips)

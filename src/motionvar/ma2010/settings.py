@@ -33,6 +33,11 @@ class Ma2010Settings(Settings):
             (Sec. 6.1 inherits the variogram from MK05 and does not say which).
         variogram_scale: "sd" weighs each output dimension by 1/its variance in the
             semivariance (the paper gives no units; "none": raw squares).
+        trend_rcond: the trend hyperplane (Eq. 12-13) of ours, MK05 Kriging, RBF's linear part
+            and the least-squares reference drops the directions of the standardized design
+            [1, c, xi] whose singular value is below this fraction of the largest. 0 is the
+            exact least-squares fit Sec. 6.2 asks for; with examples nearly on a line their
+            thinnest direction is noise that Eq. 11 extrapolates off the line (0.05-0.3 cut it).
         root_group: joint group of the root rotation (Fig. 4 does not place it; "legs",
             with "upper_body" as Fig. 6's ablation).
     Evaluations:
@@ -79,6 +84,7 @@ class Ma2010Settings(Settings):
     structure: str = "auto"
     variogram_model: str = "auto"
     variogram_scale: str = "sd"
+    trend_rcond: float = 0.0
     root_group: str = "legs"
     fig3_phase_sd: float = 0.05
     fig3_max_clips: int = 0
@@ -122,6 +128,8 @@ class Ma2010Settings(Settings):
         for key, allowed in choices.items():
             if getattr(self, key) not in allowed:
                 raise ValueError(f"{key} must be one of {list(allowed)}; got {getattr(self, key)!r}")
+        if not (isinstance(self.trend_rcond, (int, float)) and 0.0 <= self.trend_rcond < 1.0):
+            raise ValueError(f"trend_rcond must be a number in [0, 1); got {self.trend_rcond!r}")
         if self.fig8_draws < self.fig8_variants:
             raise ValueError(
                 f"fig8_draws must be at least fig8_variants = {self.fig8_variants}; got {self.fig8_draws!r}"

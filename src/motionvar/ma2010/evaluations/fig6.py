@@ -80,8 +80,10 @@ def fold_predictions(
     each training cycle's walk (:data:`RBFS`). Returns xi per kind (:data:`XI_KINDS`) and group,
     the predictions per method (table prefix), and per RBF whether a kernel reaches each held-out
     style (M,)."""
-    scale = settings.variogram_scale
-    model = StyleVariationModel(groups, structure, settings.variogram_model, variogram_scale=scale).fit(train)
+    scale, rcond = settings.variogram_scale, settings.trend_rcond
+    model = StyleVariationModel(
+        groups, structure, settings.variogram_model, variogram_scale=scale, trend_rcond=rcond
+    ).fit(train)
     delta = joint_variation(truth)
     xi = {
         "own": {g: delta[:, j] for g, j in model.tau_.items()},
@@ -90,18 +92,18 @@ def fold_predictions(
     }
     preds = {f"ours_{k}_xi": model.predict(c, xi[k]) for k in XI_KINDS}
     if ablation_groups is not None:
-        alt = StyleVariationModel(ablation_groups, structure, settings.variogram_model, variogram_scale=scale).fit(
-            train
-        )
+        alt = StyleVariationModel(
+            ablation_groups, structure, settings.variogram_model, variogram_scale=scale, trend_rcond=rcond
+        ).fit(train)
         preds[f"ours_own_xi_{ablation_name}"] = alt.predict(c, {g: delta[:, j] for g, j in alt.tau_.items()})
         preds[f"ours_mean_xi_{ablation_name}"] = alt.predict(c, alt.sample_variation(c, noise=False))
-    preds["kriging"] = mk05_kriging(settings.variogram_model, scale).fit(train).predict(c)
+    preds["kriging"] = mk05_kriging(settings.variogram_model, scale, trend_rcond=rcond).fit(train).predict(c)
     reached = {}
     for name, per_walk in RBFS.items():
-        rbf = rose98_rbf().fit(train, train_walks if per_walk else None)
+        rbf = rose98_rbf(trend_rcond=rcond).fit(train, train_walks if per_walk else None)
         preds[name] = rbf.predict(c)
         reached[name] = rbf.interpolator_.reaches(c)
-    preds["least_squares"] = least_squares_clips(train, c)
+    preds["least_squares"] = least_squares_clips(train, c, rcond)
     return xi, preds, reached
 
 
@@ -177,8 +179,8 @@ def leave_one_out(
     held-out cycle's own clip on the common timeline, measured alike (``validation_*``), tells
     what the time warp alone does to its strides (a diagnostic; Fig. 6 compares "the stride
     length of the validation walking clips", their style, with the predicted clips'). Kriging
-    uses ``settings`` variogram_model and variogram_scale; every trend hyperplane (Kriging,
-    RBF, least squares) is the literal least-squares fit (Eq. 12-13). With
+    uses ``settings`` variogram_model and variogram_scale; every trend hyperplane (ours, Kriging,
+    RBF, least squares) is the least-squares fit of Eq. 12-13 with ``settings.trend_rcond``. With
     ``ablation_groups`` the model is also fitted with those joint groups
     (``ours_own_xi_<ablation_name>``, ``ours_mean_xi_<ablation_name>``). ``held_out`` limits
     the predicted cycles (default: all). ``structure`` is used by every fold as given (resolve
