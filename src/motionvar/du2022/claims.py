@@ -518,25 +518,26 @@ SEC4_6_1_GROWTH_PARTIAL = 1.5
 
 
 def _fig4_9_coverage(m: Measurements) -> Judgement:
-    """Sec. 4.6.1, Fig. 4.9: both ways, the training end-effector points inside the samples'
-    ``level`` density region and the samples inside the training points' ``level`` region, each
-    at least ``coverage_threshold`` in every projection (partial down to 90 % of that)."""
+    """Sec. 4.6.1, Fig. 4.9: the training end-effector points inside the samples' ``level``
+    density region, at least ``coverage_threshold`` in every projection (partial down to 90 % of
+    that). The reverse, the samples inside the training's region, is reported beside it: the
+    thesis states coverage, not that the samples stay inside the training's spread."""
     level, threshold = m["level"], m["coverage_threshold"]
     rows = m["coverage"]
-    worst = float(min(min(c["coverage"], c["samples_inside"]) for c in rows))
+    worst = float(min(c["coverage"] for c in rows))
     return Judgement(
         verdict=verdict_threshold(worst, threshold, ">=", tolerance=0.1),
-        measured=f"training inside the samples' {level:.0%} region, samples inside the training's: "
+        measured=f"training inside the samples' {level:.0%} region (samples inside the training's, diagnostic): "
         + "; ".join(
-            f"{c['primitive']} {c['joint']} {c['view']}: {c['coverage']:.2f}, {c['samples_inside']:.2f}" for c in rows
+            f"{c['primitive']} {c['joint']} {c['view']}: {c['coverage']:.2f} ({c['samples_inside']:.2f})" for c in rows
         ),
         note=(
-            f"Coverage both ways, per primitive, joint and 2-D projection: the share of the training clips' last-frame "
+            f"Coverage per primitive, joint and 2-D projection: the share of the training clips' last-frame "
             f"end-effector positions inside the region holding {level:.0%} of the binned kernel density of "
-            f"{m['n_samples']} sampled motions, and the share of the samples inside the training positions' "
-            f"{level:.0%} region (over-spread samples fail the second). Reproduced when every share is >= "
-            f"{threshold:.0%} (a perfect model gives ~{level:.0%}), partial down to {threshold * 0.9:.0%}; the thesis "
-            "judges coverage by eye from density plots of 60,000 samples."
+            f"{m['n_samples']} sampled motions; the share of the samples inside the training positions' region is "
+            f"a diagnostic (over-spread samples lower it). Reproduced when every share is >= {threshold:.0%} (a "
+            f"perfect model gives ~{level:.0%}), partial down to {threshold * 0.9:.0%}; the thesis judges coverage by "
+            "eye from density plots of 60,000 samples."
         ),
         value=worst,
         bound=threshold,
@@ -1079,8 +1080,8 @@ CLAIMS: tuple[ClaimSpec, ...] = (
         kind="stand-in",
         statement="Random motions sampled from the primitives cover the variation of the training data.",
         published="the samples' density covers the training data (qualitative, Fig. 4.9)",
-        bound="coverage >= coverage_threshold both ways (training in the samples' region, samples in the "
-        "training's) in every projection (partial: >= 90 % of it)",
+        bound="coverage >= coverage_threshold (training in the samples' region) in every projection (partial: "
+        ">= 90 % of it)",
         judge=_fig4_9_coverage,
     ),
     ClaimSpec(
