@@ -228,6 +228,7 @@ def test_a_stylised_start_walk_stop_is_left_out_and_a_plain_walk_kept(tmp_path):
     """CMU 131_01 (start, walk, stop in Michael Jackson's style) detects footfalls no walk has
     (a step asymmetry of 74 cm, step-time CV 65 %, a toe 1.4 cm under its contact height before
     the check); CMU 02_01, a plain walk of two strides, passes."""
+    from motionvar.io import load_dataset, save_dataset
     from motionvar.io.bvh_dataset import import_bvh_folder
     from motionvar.io.joint_map_file import load_joint_map
     from motionvar.realism import dataset_realism
@@ -239,8 +240,6 @@ def test_a_stylised_start_walk_stop_is_left_out_and_a_plain_walk_kept(tmp_path):
         (folder / "labels.csv").write_text(f"file,subject,behaviour,style\n{name},s,walk,neutral\n")
         jm = load_joint_map(ROOT / "config" / "joint_maps" / joint_map)
         motions, meta = import_bvh_folder(folder, "labels.csv", 5.644444, drop_first_frame=True, joint_map=jm)
-        from motionvar.io import load_dataset, save_dataset
-
         save_dataset(tmp_path / f"{name}.ds", motions, meta)
         table = dataset_realism(load_dataset(tmp_path / f"{name}.ds"), jm)[0].set_index(["statistic", "behaviour"])
         note = table.loc[("strides", "walk"), "note"]
