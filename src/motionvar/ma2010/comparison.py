@@ -33,7 +33,7 @@ from .baselines.perlin import add_rotation_noise
 from .examples import foot_contacts
 from .representation import ClipSet, PoseCodec
 from .settings import XI_DRAWS, Ma2010Settings
-from .svi import ClipPrediction, StyleVariationModel
+from .svi import ClipPrediction, StyleVariationModel, style_variation_model
 from .synthesis import RootSolver, realtime_clips, sequence_motion, stitch
 
 #: the method families of Sec. 7.4 (Perlin noise and the DBN come at each setting of their sweep)
@@ -203,13 +203,7 @@ def method_sequences(
     n_clips = clips_for_duration(five, seconds)
     n_frames = int(round(seconds * fps)) + 1
     rcond = settings.trend_rcond
-    ours = StyleVariationModel(
-        groups,
-        settings.structure,
-        settings.variogram_model,
-        variogram_scale=settings.variogram_scale,
-        trend_rcond=rcond,
-    ).fit(five)
+    ours = style_variation_model(groups, settings.structure, settings).fit(five)
     krig = mk05_kriging(settings.variogram_model, settings.variogram_scale, trend_rcond=rcond).fit(five)
     rbf = rose98_rbf(trend_rcond=rcond).fit(five)
     seqs = example_pose_sequences(five)

@@ -23,7 +23,7 @@ from .keyframes import Cycle, KeyframeSignal, find_extrema, keyframe_signal, seg
 from .postprocess import reconstruct_root
 from .representation import ClipSet, rest_hip_height
 from .settings import ROOT_GROUPS, Ma2010Settings
-from .svi import StyleVariationModel
+from .svi import StyleVariationModel, style_variation_model
 from .synthesis import MIN_SUPPORT_S, RootSolver, rest_foot_heights
 
 
@@ -368,10 +368,4 @@ class WalkCycles:
     def fit_model(self, settings: Ma2010Settings) -> StyleVariationModel:
         """The model of Sec. 5-6 fitted to all the cycles, with the structure and variogram of
         ``settings`` ("auto" structure: Fig. 5 by D_l vs D_u of the cycles)."""
-        return StyleVariationModel(
-            self.groups,
-            settings.structure,
-            settings.variogram_model,
-            variogram_scale=settings.variogram_scale,
-            trend_rcond=settings.trend_rcond,
-        ).fit(self.clips)
+        return style_variation_model(self.groups, settings.structure, settings).fit(self.clips)

@@ -15,6 +15,7 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -24,6 +25,9 @@ from .kriging import UniversalKriging
 from .network import LOWER_FIRST, STYLE, UPPER_FIRST, PropagationNetwork, choose_structure
 from .representation import ClipCodec, ClipSet
 from .variation import determinative_joints, joint_importance, joint_variation, latent_variation
+
+if TYPE_CHECKING:
+    from .settings import Ma2010Settings
 
 GROUP_ORDER = ("legs", "left_arm", "right_arm", "upper_body")  # A, B, C, D (Fig. 4)
 
@@ -195,3 +199,18 @@ class StyleVariationModel:
         """Sample xi given c (Eq. 10), then predict the clips (Eq. 11)."""
         xi = self.sample_variation(c, rng=rng, fixed=fixed, noise=noise)
         return self.predict(c, xi), xi
+
+
+def style_variation_model(
+    groups: Mapping[str, np.ndarray], structure: str | Mapping[str, tuple[str, ...]], settings: Ma2010Settings
+) -> StyleVariationModel:
+    """An unfitted :class:`StyleVariationModel` on ``groups`` with ``structure`` and the variogram
+    and trend cut-off of ``settings`` (config ma2010.variogram_model, variogram_scale,
+    trend_rcond)."""
+    return StyleVariationModel(
+        groups,
+        structure,
+        settings.variogram_model,
+        variogram_scale=settings.variogram_scale,
+        trend_rcond=settings.trend_rcond,
+    )

@@ -28,7 +28,7 @@ def realism_figure(table: pd.DataFrame, joints: pd.DataFrame, title: str) -> Fig
     ax.axvspan(0.0, 1.0, color="0.88")
     for k, row in banded.iterrows():
         y = len(banded) - 1 - k
-        gates = bool(row.get("gates", True))
+        gates = bool(row["gates"])
         label = f"{row['statistic']} ({row['behaviour']}{'' if gates else ', descriptive'})"
         if not np.isfinite(row["value"]):
             ax.text(0.5, y, "no value (the data cannot give it)", ha="center", va="center", fontsize=8, color="0.4")

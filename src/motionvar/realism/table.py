@@ -116,6 +116,7 @@ def _walk_rows(st: _WalkStats) -> list[tuple]:
     clear = np.concatenate(st.clearance) if st.clearance else np.zeros(0)
     pct = lambda v: [100.0 * x for x in v]  # noqa: E731
     cv_need = "no walk of 3 plausible strides"
+    left_out = st.note()  # the statistics built on gait events say which walks they leave out
     rows = [
         (
             "stride_cv_pct",
@@ -124,6 +125,7 @@ def _walk_rows(st: _WalkStats) -> list[tuple]:
             _count(st.stride_cv),
             "stride length: SD over mean within a walk (median over walks)",
             cv_need,
+            left_out,
         ),
         (
             "stride_time_cv_pct",
@@ -132,6 +134,7 @@ def _walk_rows(st: _WalkStats) -> list[tuple]:
             _count(st.stride_time_cv),
             "stride time: SD over mean within a walk",
             cv_need,
+            left_out,
         ),
         (
             "step_time_cv_pct",
@@ -140,6 +143,7 @@ def _walk_rows(st: _WalkStats) -> list[tuple]:
             _count(st.step_time_cv),
             "step time: SD over mean within a walk",
             "no walk of 3 plausible steps",
+            left_out,
         ),
         (
             "stance_fraction_sd_pct",
@@ -148,6 +152,7 @@ def _walk_rows(st: _WalkStats) -> list[tuple]:
             _count(st.stance_sd),
             "gait-event jitter: SD of the toe-off's place in the cycle between strides of a walk",
             cv_need,
+            left_out,
         ),
         (
             "step_asymmetry_cm",
@@ -156,6 +161,7 @@ def _walk_rows(st: _WalkStats) -> list[tuple]:
             _count(st.asym_cm),
             "|mean left step - mean right step| of a walk",
             "no walk of 2 plausible steps of each foot",
+            left_out,
         ),
         (
             "step_asymmetry_pct",
@@ -164,6 +170,7 @@ def _walk_rows(st: _WalkStats) -> list[tuple]:
             _count(st.asym_pct),
             "step asymmetry over the mean step",
             "no walk of 2 plausible steps of each foot",
+            left_out,
         ),
         (
             "toe_clearance_median_cm",
@@ -172,6 +179,7 @@ def _walk_rows(st: _WalkStats) -> list[tuple]:
             len(clear),
             "minimum toe clearance in mid-swing, median over swings",
             "no swing between plausible contacts",
+            left_out,
         ),
         (
             "toe_clearance_p5_cm",
@@ -180,24 +188,20 @@ def _walk_rows(st: _WalkStats) -> list[tuple]:
             len(clear),
             "minimum toe clearance in mid-swing, 5th percentile",
             "no swing between plausible contacts",
+            left_out,
         ),
-        ("strides", float(st.n_strides), "", len(st.stride_cv), "steady strides measured", ""),
-    ]
-    events = [(s, "walk", v, u, n, d, _note(v, need, st.note())) for s, v, u, n, d, need in rows]
-    noise = 10.0 * _median(st.noise)
-    events.insert(
-        8,
         (
             "noise_rms_mm",
-            "walk",
-            noise,
+            10.0 * _median(st.noise),
             "mm",
             _count(st.noise),
             "RMS of root-relative joint positions in the noise band",
-            _note(noise, "no walk long enough to filter", ""),
+            "no walk long enough to filter",
+            "",
         ),
-    )
-    return events
+        ("strides", float(st.n_strides), "", len(st.stride_cv), "steady strides measured", "", left_out),
+    ]
+    return [(s, "walk", v, u, n, d, _note(v, missing, why)) for s, v, u, n, d, missing, why in rows]
 
 
 def _note(value: float, missing: str, otherwise: str) -> str:

@@ -47,22 +47,30 @@ def predicted_strides(pred: ClipPrediction, reference_keys: np.ndarray, solver: 
     return out
 
 
+def root_relative_positions(rotations: np.ndarray, solver: RootSolver) -> np.ndarray:
+    """(M, T, J, 3) joint positions (cm) of clips (M, T, J, 4) with the root at the origin."""
+    sk = solver.skeleton
+    return fk(rotations, np.zeros(rotations.shape[:-2] + (3,)), sk.offsets, sk.parents)
+
+
 def clip_pose_error(a: np.ndarray, b: np.ndarray, solver: RootSolver) -> np.ndarray:
     """Mean joint-position distance (cm) between clips a and b (M, T, J, 4) on the common
     timeline, root at the origin (the pose, not the path)."""
-    sk = solver.skeleton
-    pa = fk(a, np.zeros(a.shape[:-2] + (3,)), sk.offsets, sk.parents)
-    pb = fk(b, np.zeros(b.shape[:-2] + (3,)), sk.offsets, sk.parents)
+    pa, pb = root_relative_positions(a, solver), root_relative_positions(b, solver)
     return np.linalg.norm(pa - pb, axis=-1).mean(axis=(-1, -2))
 
 
-def group_spread(rotations: np.ndarray, groups: Mapping[str, np.ndarray], solver: RootSolver) -> dict[str, float]:
-    """Spread of clips (M, T, J, 4) per joint group: the SD across clips of each joint's
-    root-relative position (cm), as a vector norm, averaged over frames and the group's joints."""
-    sk = solver.skeleton
-    pos = fk(rotations, np.zeros(rotations.shape[:-2] + (3,)), sk.offsets, sk.parents)
-    sd = np.sqrt(np.sum(pos.var(axis=0), axis=-1))  # (T, J)
+def position_spread(positions: np.ndarray, groups: Mapping[str, np.ndarray]) -> dict[str, float]:
+    """Spread of clips' joint positions (M, T, J, 3) per joint group: the SD across clips of each
+    joint's position, as a vector norm, averaged over frames and the group's joints."""
+    sd = np.sqrt(np.sum(positions.var(axis=0), axis=-1))  # (T, J)
     return {g: float(sd[:, j].mean()) for g, j in groups.items()}
+
+
+def group_spread(rotations: np.ndarray, groups: Mapping[str, np.ndarray], solver: RootSolver) -> dict[str, float]:
+    """Spread of clips (M, T, J, 4) per joint group (:func:`position_spread` of their
+    root-relative positions, cm)."""
+    return position_spread(root_relative_positions(rotations, solver), groups)
 
 
 def nearest_clips(clips: ClipSet, style: np.ndarray, n: int, distinct_subjects: list[str] | None = None) -> np.ndarray:

@@ -24,7 +24,7 @@ from ..claims import CLAIMS
 from ..examples import WalkCycles, joint_groups
 from ..representation import ClipCodec, ClipSet
 from ..settings import ROOT_GROUPS, Ma2010Settings
-from ..svi import GROUP_ORDER, ClipPrediction, StyleVariationModel, resolve_structure
+from ..svi import GROUP_ORDER, ClipPrediction, resolve_structure, style_variation_model
 from ..synthesis import RootSolver
 from ..variation import joint_variation
 from .common import (
@@ -81,9 +81,7 @@ def fold_predictions(
     the predictions per method (table prefix), and per RBF whether a kernel reaches each held-out
     style (M,)."""
     scale, rcond = settings.variogram_scale, settings.trend_rcond
-    model = StyleVariationModel(
-        groups, structure, settings.variogram_model, variogram_scale=scale, trend_rcond=rcond
-    ).fit(train)
+    model = style_variation_model(groups, structure, settings).fit(train)
     delta = joint_variation(truth)
     xi = {
         "own": {g: delta[:, j] for g, j in model.tau_.items()},
@@ -92,9 +90,7 @@ def fold_predictions(
     }
     preds = {f"ours_{k}_xi": model.predict(c, xi[k]) for k in XI_KINDS}
     if ablation_groups is not None:
-        alt = StyleVariationModel(
-            ablation_groups, structure, settings.variogram_model, variogram_scale=scale, trend_rcond=rcond
-        ).fit(train)
+        alt = style_variation_model(ablation_groups, structure, settings).fit(train)
         preds[f"ours_own_xi_{ablation_name}"] = alt.predict(c, {g: delta[:, j] for g, j in alt.tau_.items()})
         preds[f"ours_mean_xi_{ablation_name}"] = alt.predict(c, alt.sample_variation(c, noise=False))
     preds["kriging"] = mk05_kriging(settings.variogram_model, scale, trend_rcond=rcond).fit(train).predict(c)

@@ -11,7 +11,6 @@ import numpy as np
 import pandas as pd
 
 from ...claims import EvaluationResult, judge_claims
-from ...core.kinematics import fk
 from ..baselines.mukai_kuriyama import StyleClipInterpolation, mk05_kriging, rose98_rbf
 from ..claims import CLAIMS
 from ..correspondence import retime
@@ -24,8 +23,10 @@ from .common import (
     PUBLISHED_MAX_STRIDE_ERROR_CM,
     group_spread,
     nearest_clips,
+    position_spread,
     predicted_strides,
     prediction_key_frames,
+    root_relative_positions,
 )
 
 GROUPS = ("legs", "left_arm", "right_arm", "upper_body")  # A, B, C, D (Fig. 4)
@@ -60,27 +61,21 @@ def posture_free_spread(rotations: np.ndarray, groups: dict, solver: RootSolver)
     """:func:`.common.group_spread` of clips (M, T, J, 4) after each clip's mean posture (its
     root-relative joint positions averaged over the timeline) is subtracted: the spread
     left when constant posture offsets, which cancel out of Eq. 7's xi, are removed."""
-    sk = solver.skeleton
-    pos = fk(rotations, np.zeros(rotations.shape[:-2] + (3,)), sk.offsets, sk.parents)
-    pos = pos - pos.mean(axis=1, keepdims=True)
-    sd = np.sqrt(np.sum(pos.var(axis=0), axis=-1))  # (T, J)
-    return {g: float(sd[:, j].mean()) for g, j in groups.items()}
+    pos = root_relative_positions(rotations, solver)
+    return position_spread(pos - pos.mean(axis=1, keepdims=True), groups)
 
 
 def bootstrap_spread(
     rotations: np.ndarray, groups: dict, solver: RootSolver, resamples: int, rng: np.random.Generator
 ) -> dict[str, tuple[float, float]]:
     """95 % percentile interval of :func:`.common.group_spread` of clips (M, T, J, 4) over
-    ``resamples`` draws of M clips with replacement (None without resamples)."""
+    ``resamples`` draws of M clips with replacement (NaN without resamples)."""
     if not resamples:
         return {g: (float("nan"), float("nan")) for g in groups}
-    sk = solver.skeleton
-    pos = fk(rotations, np.zeros(rotations.shape[:-2] + (3,)), sk.offsets, sk.parents)  # (M, T, J, 3)
+    pos = root_relative_positions(rotations, solver)
     picks = rng.integers(0, len(rotations), size=(resamples, len(rotations)))
-    sd = np.stack([np.sqrt(np.sum(pos[k].var(axis=0), axis=-1)) for k in picks])  # (B, T, J)
-    return {
-        g: tuple(float(v) for v in np.percentile(sd[:, :, j].mean(axis=(1, 2)), [2.5, 97.5])) for g, j in groups.items()
-    }
+    spreads = [position_spread(pos[k], groups) for k in picks]
+    return {g: tuple(float(v) for v in np.percentile([s[g] for s in spreads], [2.5, 97.5])) for g in groups}
 
 
 def interpolation_variants(interp: StyleClipInterpolation, style: np.ndarray, n: int) -> ClipPrediction:
