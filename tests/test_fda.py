@@ -39,6 +39,7 @@ from motionvar.du2022.fda import (
     latent_separation,
     n_basis_of,
     observation_error,
+    scatter_is_cheaper,
 )
 from motionvar.du2022.fda.evaluations import (
     curves_table,
@@ -283,13 +284,14 @@ def test_save_load_round_trip(tmp_path, data):
 # ---- SFPCA (Eq. 3.6-3.8) ------------------------------------------------------------
 
 
-def test_top_eigenvectors_gradient():
+@pytest.mark.parametrize("solver", TopEigenvectors.SOLVERS)
+def test_top_eigenvectors_gradient(solver):
     rng = np.random.default_rng(2)
     X = torch.as_tensor(rng.normal(size=(6, 3)), dtype=torch.float64)  # rank 3: repeated zero eigenvalues
     Y = torch.as_tensor(rng.normal(size=(6, 4)), dtype=torch.float64)
 
     def loss(x):
-        u = TopEigenvectors.apply(x @ x.T, 2)
+        u = TopEigenvectors.apply(x @ x.T, 2, solver)
         return ((u @ (u.T @ Y)) ** 2).sum()
 
     x = X.clone().requires_grad_(True)
@@ -302,6 +304,51 @@ def test_top_eigenvectors_gradient():
         e[idx] = eps
         num[idx] = (loss(X + e) - loss(X - e)).item() / (2 * eps)
     assert np.allclose(g.numpy(), num, atol=1e-6)
+
+
+def test_top_eigenvectors_solvers_agree():
+    """The tridiagonal solver (only the kept eigenvectors transformed back, the backward pass
+    in the tridiagonal basis) gives torch.linalg.eigh's subspace and gradient, on a
+    rank-deficient matrix (repeated zero eigenvalues) and when every eigenvector is kept."""
+    rng = np.random.default_rng(3)
+    X = rng.normal(size=(60, 25))
+    for A, n in ((X @ X.T, 5), (X.T @ X, 25), (np.array([[2.0]]), 1)):
+        G = torch.as_tensor(rng.normal(size=(A.shape[0], n)))
+        out = {}
+        for solver in TopEigenvectors.SOLVERS:
+            a = torch.as_tensor(A).requires_grad_(True)
+            u = TopEigenvectors.apply(a, n, solver)
+            (g,) = torch.autograd.grad((u @ (u.T @ G)).sum(), a)
+            out[solver] = (u @ u.T).detach().numpy(), g.numpy()
+        (p0, g0), (p1, g1) = out["full"], out["tridiagonal"]
+        assert np.abs(p1 - p0).max() < 1e-10
+        assert np.abs(g1 - g0).max() <= 1e-9 * max(np.abs(g0).max(), 1e-300)
+    with pytest.raises(ValueError, match="solver must be one of"):
+        TopEigenvectors.apply(torch.eye(3, dtype=torch.float64), 1, "lanczos")
+
+
+def test_observation_objective_routes_and_solvers_agree(data):
+    """Eq. 3.8 from the Gram or the scatter matrix, with either eigensolver: the same value
+    and gradient to 1e-9 (relative)."""
+    fd, _, _ = data
+    w = np.random.default_rng(4).uniform(0.5, 2.0, fd.layout.n_functions)
+    results = []
+    for solver in TopEigenvectors.SOLVERS:
+        obj = ObservationObjective(fd, 3, dtype=torch.float64, eigensolver=solver)
+        for scatter in (None, obj.centred.T @ obj.centred):
+            obj.scatter = scatter
+            results.append(obj.value_and_grad(w))
+    v0, g0 = results[0]
+    for v, g in results[1:]:
+        assert math.isclose(v, v0, rel_tol=1e-9)
+        assert np.abs(g - g0).max() <= 1e-9 * np.abs(g0).max()
+
+
+def test_scatter_or_gram_by_cost():
+    assert scatter_is_cheaper(1_458, 1_005) and scatter_is_cheaper(1_458, 1_545)
+    assert not scatter_is_cheaper(100, 1_545)  # few clips: the small Gram matrix
+    with pytest.raises(ValueError, match="eigensolver must be one of"):
+        SFPCA(2, eigensolver="lanczos")._check_params()
 
 
 def test_observation_objective_value_and_gradient(data):

@@ -69,7 +69,7 @@ _EXPORTS = {
         "primitive_motions",
         "sfpca_for",
     ],
-    ".sfpca": ["SFPCA", "ObservationObjective", "TopEigenvectors"],
+    ".sfpca": ["SFPCA", "ObservationObjective", "TopEigenvectors", "scatter_is_cheaper"],
     ".evaluations.measures": ["feature_error", "knn_accuracy", "latent_separation", "observation_error"],
 }
 __getattr__, __dir__ = lazy_exports(__name__, _EXPORTS)
@@ -100,6 +100,7 @@ __all__ = [
     "n_basis_of",
     "observation_error",
     "primitive_motions",
+    "scatter_is_cheaper",
     "sfpca_for",
     "zscore_weights",
 ]

@@ -152,4 +152,5 @@ def sfpca_for(fd: FunctionalMotions, n_components: int, settings: SfpcaSettings)
         n_eval_frames=n_eval,
         stop_window=settings.stop_window,
         stop_rtol=settings.stop_rtol,
+        eigensolver=settings.eigensolver,
     )
