@@ -264,15 +264,34 @@ def _parse_hierarchy(t: _Tokens) -> _Hierarchy:
     return h
 
 
-def _header_value(lines: list[str], k: int, regex: re.Pattern, what: str, path: Path) -> tuple[str, int]:
-    """Value of the ``what:`` line at or after line index ``k`` (skipping blank lines)."""
-    while k < len(lines) and not lines[k].strip():
-        k += 1
-    m = regex.match(lines[k]) if k < len(lines) else None
+class _LineCursor:
+    """The lines of ``text`` from offset ``pos`` (0-based line ``index``), one at a time, so
+    that the frame data after the MOTION header is never split into lines."""
+
+    def __init__(self, text: str, pos: int, index: int) -> None:
+        self.text, self.pos, self.index = text, pos, index
+
+    def next(self) -> str | None:
+        """The line at the cursor (None at the end of the text); the cursor moves past it."""
+        if self.pos >= len(self.text):
+            return None
+        end = self.text.find("\n", self.pos)
+        end = len(self.text) if end < 0 else end
+        line = self.text[self.pos : end]
+        self.pos, self.index = end + 1, self.index + 1
+        return line
+
+
+def _header_value(cursor: _LineCursor, regex: re.Pattern, what: str, path: Path) -> tuple[str, int]:
+    """Value of the next non-blank line, a ``what:`` line, and its 0-based line index."""
+    line = cursor.next()
+    while line is not None and not line.strip():
+        line = cursor.next()
+    m = regex.match(line) if line is not None else None
     if m is None:
-        found = repr(lines[k].strip()[:40]) if k < len(lines) else "end of file"
-        raise BVHError(path, min(k, len(lines) - 1) + 1, f"missing '{what}' line in MOTION (found {found})")
-    return m.group(1), k
+        found = repr(line.strip()[:40]) if line is not None else "end of file"
+        raise BVHError(path, cursor.index, f"missing '{what}' line in MOTION (found {found})")
+    return m.group(1), cursor.index - 1
 
 
 def _locate_frame_error(lines: list[str], first: int, n_frames: int, n_channels: int, path: Path) -> BVHError:
@@ -320,9 +339,11 @@ def _frame_values(body: str) -> np.ndarray | None:
     return frame.to_numpy()
 
 
-def _parse_frames(lines: list[str], motion_idx: int, n_channels: int, path: Path) -> tuple[np.ndarray, float]:
-    """(T, C) channel values and the frame time from the lines after MOTION."""
-    val, k = _header_value(lines, motion_idx + 1, _FRAMES_RE, "Frames:", path)
+def _parse_frames(text: str, start: int, index: int, n_channels: int, path: Path) -> tuple[np.ndarray, float]:
+    """(T, C) channel values and the frame time from the lines of ``text`` after MOTION, which
+    begin at offset ``start``, 0-based line ``index``."""
+    cursor = _LineCursor(text, start, index)
+    val, k = _header_value(cursor, _FRAMES_RE, "Frames:", path)
     try:
         n_float = float(val)
     except ValueError:
@@ -332,7 +353,7 @@ def _parse_frames(lines: list[str], motion_idx: int, n_channels: int, path: Path
     n_frames = int(n_float)
     if n_frames == 0:
         raise BVHError(path, k + 1, "zero frames ('Frames: 0')")
-    val, k = _header_value(lines, k + 1, _FRAME_TIME_RE, "Frame Time:", path)
+    val, k = _header_value(cursor, _FRAME_TIME_RE, "Frame Time:", path)
     try:
         frame_time = float(val)
     except ValueError:
@@ -347,10 +368,12 @@ def _parse_frames(lines: list[str], motion_idx: int, n_channels: int, path: Path
             f"'Frame Time: {val}' means {fps:.4g} frames per second, outside "
             f"{FPS_RANGE[0]:g}-{FPS_RANGE[1]:,.0f} (the value is in seconds per frame)",
         )
-    first = k + 1
-    data = _frame_values("\n".join(lines[first:]))
+    data = _frame_values(text[cursor.pos :])
     if data is None or data.shape != (n_frames, n_channels) or not np.all(np.isfinite(data)):
-        raise _locate_frame_error(lines, first, n_frames, n_channels, path)
+        lines = text.split("\n")
+        if lines[-1] == "":
+            lines.pop()
+        raise _locate_frame_error(lines, k + 1, n_frames, n_channels, path)
     return data, frame_time
 
 
@@ -415,15 +438,14 @@ def read_bvh(path: str | Path, scale: float = 1.0, encoding: str = "utf-8") -> M
         raise BVHError(path, None, f"unknown text encoding {encoding!r}") from exc
     text = text.removeprefix("\ufeff").replace("\r\n", "\n").replace("\r", "\n")
     m = _MOTION_RE.search(text)
-    header_end = text.count("\n", 0, m.start()) if m else None
-    lines = text.split("\n")
+    header = text if m is None else text[: m.end()]  # through the MOTION line
+    lines = header.split("\n")
     if lines[-1] == "":
         lines.pop()  # the final newline does not start a line
-    header = lines if header_end is None else lines[: header_end + 1]
-    t = _Tokens(header, path, eof_line=max(1, len(header)))
+    t = _Tokens(lines, path, eof_line=max(1, len(lines)))
     h = _parse_hierarchy(t)
     _, motion_line = t.peek()
-    data, frame_time = _parse_frames(lines, motion_line - 1, h.n_channels, path)
+    data, frame_time = _parse_frames(text, m.end() + 1, motion_line, h.n_channels, path)
     return _to_motion(h, data, frame_time, scale)
 
 
