@@ -75,6 +75,7 @@ class PrimitiveOptions:
             the latent dimensions (scikit-learn's is absolute; with few clips per component
             an absolute 1e-6 lets BIC pick near-singular components).
         sfpca_eval_frames: canonical frames at which SFPCA's objective runs FK (None: all).
+        sfpca_eigensolver: SFPCA's eigensolver ("full" or "tridiagonal", the same to rounding).
         dtw_window: optional Sakoe-Chiba band of the DTW (frames; not a config key).
         seed: random state of the GMM fits and of sampling defaults (config ``graph.seed``).
     """
@@ -87,6 +88,7 @@ class PrimitiveOptions:
     sfpca_weight_groups: str = _MODEL.sfpca_weight_groups
     reg_covar: float = _MODEL.reg_covar
     sfpca_eval_frames: int | None = _MODEL.sfpca_eval_frames
+    sfpca_eigensolver: str = _MODEL.sfpca_eigensolver
     dtw_window: int | None = None
     seed: int = GraphSettings.seed
 
@@ -102,6 +104,7 @@ class PrimitiveOptions:
             sfpca_weight_groups=model.sfpca_weight_groups,
             reg_covar=model.reg_covar,
             sfpca_eval_frames=model.sfpca_eval_frames,
+            sfpca_eigensolver=model.sfpca_eigensolver,
             seed=seed,
         )
 
@@ -294,6 +297,7 @@ class MotionPrimitive:
             max_iter=opt.sfpca_max_iter,
             weight_groups=opt.sfpca_weight_groups,
             n_eval_frames=opt.sfpca_eval_frames,
+            eigensolver=opt.sfpca_eigensolver,
         ).fit(fd)
         w_sp = sfpca.function_weights_
         gram_sqrt, _ = fd.basis.gram_sqrt()

@@ -31,7 +31,11 @@ class ModelSettings(Settings):
     reg_covar: GMM covariance regularisation, relative to the mean latent variance.
     sfpca_max_iter: L-BFGS-B iterations of the SFPCA function weights (Eq. 3.8); 0 keeps the start weights.
     sfpca_weight_groups: one SFPCA weight per function (thesis) or per joint (DFKI).
-    sfpca_eval_frames: canonical frames at which the SFPCA objective runs FK (None: all frames)."""
+    sfpca_eval_frames: canonical frames at which the SFPCA objective runs FK (None: all frames).
+    sfpca_eigensolver: the SFPCA objective's eigensolver (``full`` or ``tridiagonal``, as config
+        ``fda.sfpca.eigensolver``; the same to rounding). ``full``: these fits are small (20
+        iterations, ~10 s at full size) and Fig. 4.12's verdicts, which turn on 2-4 comparisons,
+        change under the solvers' 1e-11 difference in the gradient (docs/speed.md)."""
 
     SECTION: ClassVar[str] = "graph.model"
 
@@ -44,6 +48,7 @@ class ModelSettings(Settings):
     sfpca_max_iter: int = 20
     sfpca_weight_groups: str = "function"
     sfpca_eval_frames: int | None = 30
+    sfpca_eigensolver: str = "full"
 
 
 @dataclass(frozen=True)
