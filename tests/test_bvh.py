@@ -471,6 +471,35 @@ def test_latin1_bytes_give_a_clear_error_or_read_with_the_encoding(tmp_path):
     assert read_bvh(path, encoding="latin-1").skeleton.names[1] == "Brustkörper"
 
 
+def test_ascii_bytes_and_decoded_text_read_alike(tmp_path):
+    """A pure-ASCII file's frames are parsed from its bytes; one with a byte-order mark, CRLF
+    line ends or other characters, from the decoded text: the same values."""
+    path = small_bvh(tmp_path)
+    ref = read_bvh(path)
+    for name, data in (
+        ("bom.bvh", b"\xef\xbb\xbf" + path.read_bytes()),
+        ("crlf.bvh", path.read_bytes().replace(b"\n", b"\r\n")),
+        ("umlaut.bvh", path.read_text().replace("JOINT Chest", "JOINT Brustkörper").encode()),
+    ):
+        target = tmp_path / name
+        target.write_bytes(data)
+        other = read_bvh(target)
+        assert np.array_equal(other.rotations, ref.rotations) and np.array_equal(other.root_pos, ref.root_pos)
+
+
+def test_latin1_byte_in_the_frames_names_its_line(tmp_path):
+    """One byte per character but not ASCII (latin-1): a non-numeric byte in a frame line is
+    reported at its line, as in a UTF-8 file."""
+    path = small_bvh(tmp_path)
+    text = path.read_text()
+    lines = text.split("\n")
+    k = line_of(text, "Frame Time") + 1  # the 2nd frame line (1-based)
+    lines[k] = lines[k].replace(" ", " \xb5", 1)
+    path.write_bytes("\n".join(lines).encode("latin-1"))
+    with pytest.raises(BVHError, match=rf"{path.name}:{k + 1}: frame 2: non-numeric value"):
+        read_bvh(path, encoding="latin-1")
+
+
 @pytest.mark.parametrize("frame_time", ["1e-320", "1e-5", "2.0"])
 def test_frame_time_giving_an_implausible_rate_is_rejected(tmp_path, frame_time):
     path = small_bvh(tmp_path, header=HEADER.replace("Frame Time: 0.02", f"Frame Time: {frame_time}"))

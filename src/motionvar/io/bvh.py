@@ -320,7 +320,7 @@ def _locate_frame_error(lines: list[str], first: int, n_frames: int, n_channels:
     return BVHError(path, first + 1, "frame data cannot be parsed")
 
 
-def _frame_values(body: str) -> np.ndarray | None:
+def _frame_values(body: str | bytes) -> np.ndarray | None:
     """(T, C) values of the whitespace-separated frame lines (blank lines skipped), or None
     where a value does not parse or a line has more or fewer values than the first (the caller
     then finds the line; it also rejects non-finite values, which may parse). pandas' C reader:
@@ -332,16 +332,24 @@ def _frame_values(body: str) -> np.ndarray | None:
 
     try:
         frame = pd.read_csv(
-            io.StringIO(body), sep=r"\s+", header=None, dtype=float, quoting=csv.QUOTE_NONE, na_filter=False
+            io.BytesIO(body) if isinstance(body, bytes) else io.StringIO(body),
+            sep=r"\s+",
+            header=None,
+            dtype=float,
+            quoting=csv.QUOTE_NONE,
+            na_filter=False,
         )
-    except (ValueError, pd.errors.ParserError, pd.errors.EmptyDataError):
+    except (ValueError, pd.errors.ParserError, pd.errors.EmptyDataError):  # a UnicodeDecodeError is a ValueError
         return None
     return frame.to_numpy()
 
 
-def _parse_frames(text: str, start: int, index: int, n_channels: int, path: Path) -> tuple[np.ndarray, float]:
+def _parse_frames(
+    text: str, start: int, index: int, n_channels: int, path: Path, raw: bytes | None = None
+) -> tuple[np.ndarray, float]:
     """(T, C) channel values and the frame time from the lines of ``text`` after MOTION, which
-    begin at offset ``start``, 0-based line ``index``."""
+    begin at offset ``start``, 0-based line ``index``. ``raw``: the file's bytes where each is
+    one character of ``text`` (ASCII), parsed as they are instead of the text."""
     cursor = _LineCursor(text, start, index)
     val, k = _header_value(cursor, _FRAMES_RE, "Frames:", path)
     try:
@@ -368,7 +376,7 @@ def _parse_frames(text: str, start: int, index: int, n_channels: int, path: Path
             f"'Frame Time: {val}' means {fps:.4g} frames per second, outside "
             f"{FPS_RANGE[0]:g}-{FPS_RANGE[1]:,.0f} (the value is in seconds per frame)",
         )
-    data = _frame_values(text[cursor.pos :])
+    data = _frame_values(text[cursor.pos :] if raw is None else raw[cursor.pos :])
     if data is None or data.shape != (n_frames, n_channels) or not np.all(np.isfinite(data)):
         lines = text.split("\n")
         if lines[-1] == "":
@@ -391,14 +399,14 @@ def _skeleton(h: _Hierarchy, scale: float) -> Skeleton:
 def _to_motion(h: _Hierarchy, data: np.ndarray, frame_time: float, scale: float) -> Motion:
     skeleton = _skeleton(h, scale)
     T, J = data.shape[0], len(h.names)
-    angles = data[:, np.array(h.rot_cols)]  # (T, J, 3) in each joint's channel order
+    rot_cols = np.array(h.rot_cols)  # (J, 3): each joint's angle columns in its channel order
     if len(set(h.orders)) == 1:  # one rotation order for the whole rig
-        rotations = euler_to_quat(angles, h.orders[0])
+        rotations = euler_to_quat(data[:, rot_cols], h.orders[0])
     else:
         rotations = np.empty((T, J, 4))
         for order in sorted(set(h.orders)):
             idx = np.array([j for j, o in enumerate(h.orders) if o == order])
-            rotations[:, idx] = euler_to_quat(angles[:, idx], order)
+            rotations[:, idx] = euler_to_quat(data[:, rot_cols[idx]], order)
     if h.pos_cols[0] is not None:
         root_pos = data[:, h.pos_cols[0]] * scale
     else:
@@ -436,7 +444,8 @@ def read_bvh(path: str | Path, scale: float = 1.0, encoding: str = "utf-8") -> M
         ) from None
     except LookupError as exc:
         raise BVHError(path, None, f"unknown text encoding {encoding!r}") from exc
-    text = text.removeprefix("\ufeff").replace("\r\n", "\n").replace("\r", "\n")
+    if len(text) != len(raw) or "\r" in text:  # not ASCII with \n line ends: parse the text
+        text, raw = text.removeprefix("\ufeff").replace("\r\n", "\n").replace("\r", "\n"), None
     m = _MOTION_RE.search(text)
     header = text if m is None else text[: m.end()]  # through the MOTION line
     lines = header.split("\n")
@@ -445,7 +454,7 @@ def read_bvh(path: str | Path, scale: float = 1.0, encoding: str = "utf-8") -> M
     t = _Tokens(lines, path, eof_line=max(1, len(lines)))
     h = _parse_hierarchy(t)
     _, motion_line = t.peek()
-    data, frame_time = _parse_frames(text, m.end() + 1, motion_line, h.n_channels, path)
+    data, frame_time = _parse_frames(text, m.end() + 1, motion_line, h.n_channels, path, raw)
     return _to_motion(h, data, frame_time, scale)
 
 
