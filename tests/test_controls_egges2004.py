@@ -170,6 +170,26 @@ def test_identification_control_setup(generated, verdict):
     assert claim.verdict == verdict, claim.measured
 
 
+@pytest.mark.parametrize(
+    "cut, gen, verdict",
+    [
+        (0.50, 0.50, "reproduced"),  # as repetitive as the recording: the equality control
+        (0.54, 0.54, "reproduced"),  # within the 10 % tolerance above it
+        (0.40, 0.40, "reproduced"),  # less than the recording: not asked, not held against it
+        (0.60, 0.60, "partial"),  # far below the loop, but 20 % above the recording
+        (0.50, 0.95, "not reproduced"),  # over the whole sequence within 10 % of a loop
+    ],
+)
+def test_repetition_verdict_against_loop_and_recording(cut, gen, verdict):
+    """Sec. 6.2 compares with looping: reproduced = far below the looped clip (more than the
+    tolerance) and, at the recorded length, within the tolerance of the recorded rest or below it."""
+    m = _repetition_measurements(gen, 0.50, 1.0, dict.fromkeys(("generated", "recorded"), 0.0))
+    m["median_best_ncc"]["generated_cut"] = cut
+    claim = spec("egges2004.sec6.variations_show_little_repetition").claim(m)
+    assert claim.verdict == verdict, claim.measured
+    assert claim.bound == pytest.approx(0.55)
+
+
 def test_structure_control_setup():
     """The control's setup is not broken: generated variations that are more of the recorded
     process keep its structure (reproduced), and white noise repeats very little all the same (the

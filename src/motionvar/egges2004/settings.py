@@ -78,8 +78,9 @@ class RepetitionSettings(Settings):
     stride_s: step (s) between the candidate windows compared with each window.
     fps: frame rate (Hz) the sequences are subsampled to before comparing.
     loop_clip_s: length (s) of the recorded clip that is looped.
-    tolerance: relative margin by which generated variations may exceed the recorded ones'
-        repetition for a partial verdict.
+    tolerance: relative margin of the repetition claim: generated variations must repeat more
+        than this much less than the looped clip, and at most this much more than the recorded
+        rest variations (at the recorded length) to reproduce it.
     subjects: subjects evaluated (the first ones); 0 = all.
     """
 
