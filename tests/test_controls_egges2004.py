@@ -11,6 +11,7 @@ from motionvar.egges2004.evaluations.identification import (
     GEN,
     PERLIN,
     REC,
+    binomial_power,
     identification_measurements,
     identification_table,
 )
@@ -168,6 +169,31 @@ def test_identification_control_setup(generated, verdict):
     m = identification_of_anonymous_motion(generated)
     claim = spec("egges2004.sec8.generated_idle_identifies_person").claim(m)
     assert claim.verdict == verdict, claim.measured
+
+
+def test_identification_with_too_few_windows_is_not_testable():
+    """A failing test against chance counts only with the power to detect recording-level
+    accuracy: below ``min_power`` the claim is not testable, never failed; a success stands."""
+    m = identification_of_anonymous_motion("anonymous")
+    judge = spec("egges2004.sec8.generated_idle_identifies_person").claim
+    assert judge(m).verdict == "not reproduced" and min(m["power"].values()) >= m["min_power"]
+    m["power"]["all"] = 0.5
+    claim = judge(m)
+    assert claim.verdict == "not testable" and "Too few generated windows" in claim.note and claim.value is None
+    personal = identification_of_anonymous_motion("personal")
+    personal["power"] = dict.fromkeys(personal["power"], 0.1)
+    assert judge(personal).verdict == "reproduced"
+
+
+@pytest.mark.parametrize("n, chance, accuracy", [(12, 0.25, 0.5), (12, 0.25, 0.8), (48, 0.25, 0.6), (30, 1 / 3, 0.9)])
+def test_binomial_power_agrees_with_the_test_itself(n, chance, accuracy):
+    """The power is the chance, at the true accuracy, of a count whose binomial test reaches
+    p < alpha (scipy's binomtest decides which counts do)."""
+    from scipy.stats import binom, binomtest
+
+    reach = [k for k in range(n + 1) if binomtest(k, n, chance, alternative="greater").pvalue < 0.01]
+    assert binomial_power(n, chance, accuracy, 0.01) == pytest.approx(sum(binom.pmf(reach, n, accuracy)), abs=1e-12)
+    assert binomial_power(3, 0.25, 1.0, 0.01) == 0.0  # even 3 of 3 cannot reach p < 0.01
 
 
 @pytest.mark.parametrize(

@@ -19,7 +19,7 @@ from motionvar.core import cmu_joint_map
 from motionvar.egges2004 import figures
 from motionvar.egges2004.evaluations import category_check, idle_animation, pc_extrema
 from motionvar.egges2004.evaluations.fitting import FIGURE_BALANCE_S, fitting
-from motionvar.egges2004.evaluations.identification import identification
+from motionvar.egges2004.evaluations.identification import binomial_power, identification
 from motionvar.egges2004.evaluations.repetition import repetition
 from motionvar.egges2004.evaluations.speed import speed
 from motionvar.egges2004.pipeline import fit_idle_model, idle_clips, model_recordings, split_clips
@@ -146,8 +146,17 @@ def test_evaluations_on_toy_subjects(fitted):
     for fs in ("all", "dynamics"):  # the paired comparison with the Perlin windows, per feature set
         assert gen.loc[fs, "better_than_perlin"] + gen.loc[fs, "worse_than_perlin"] <= gen.loc[fs, "windows"]
         assert m["vs_perlin"][fs]["p_value"] == gen.loc[fs, "p_vs_perlin"]
+    rec = table[table["source"] == "recorded (held out)"].set_index("features")
+    for fs in ("all", "dynamics"):  # power at the recordings' accuracy with the generated windows
+        assert m["power"][fs] == binomial_power(int(gen.loc[fs, "windows"]), 1 / 3, rec.loc[fs, "accuracy"], 0.01)
+    # 12 windows of 5 s: a failing test against chance has too little power to count
     tests = (gen.loc["all", "p_value"], gen.loc["all", "p_vs_perlin"], gen.loc["dynamics", "p_value"])
-    assert (claim.value, claim.bound, claim.direction) == (max(tests), 0.01, "<")
+    weak = [t >= 0.01 and m["power"][fs] < 0.8 for fs, t in (("all", tests[0]), ("dynamics", tests[2]))]
+    assert (claim.verdict == "not testable") == any(weak)
+    if any(weak):
+        assert claim.value is None and "Too few generated windows" in claim.note
+    else:
+        assert (claim.value, claim.bound, claim.direction) == (max(tests), 0.01, "<")
     check_value_bound(claim)  # reproduced needs all three tests below alpha
     assert isinstance(figures.draw_identification(result), Figure)
 

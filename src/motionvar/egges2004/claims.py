@@ -68,6 +68,23 @@ def _identification(m: Measurements) -> Judgement:
     tests = (p["generated"]["all"], vs["p_value"], p["generated"]["dynamics"])
     above = tests[0] < alpha
     verdict = "reproduced" if max(tests) < alpha else ("partial" if above else "not reproduced")
+    # a test against chance that fails with too few windows to detect recording-level accuracy
+    weak = [
+        fs for fs, t in (("all", tests[0]), ("dynamics", tests[2])) if t >= alpha and m["power"][fs] < m["min_power"]
+    ]
+    if weak:
+        powers = ", ".join(f"{fs} features {m['power'][fs]:.2f}" for fs in weak)
+        return Judgement(
+            verdict="not testable",
+            measured="-",
+            note=(
+                f"Too few generated windows to tell: {m['generated_windows']} windows of {m['window_s']:g} s give the "
+                f"binomial test against chance (p < {alpha:g}) power {powers} to detect a classifier as accurate as on "
+                f"the held-out recordings, below {m['min_power']:.0%}; generated accuracy "
+                f"{acc['generated']['all']:.2f} (p = {tests[0]:.2g}), movement-only {acc['generated']['dynamics']:.2f} "
+                f"(p = {tests[2]:.2g}), recordings {acc['recorded']['all']:.2f} / {acc['recorded']['dynamics']:.2f}."
+            ),
+        )
     return Judgement(
         verdict=verdict,
         measured=(

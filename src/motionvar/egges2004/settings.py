@@ -57,6 +57,9 @@ class IdentificationSettings(Settings):
     generated_s: seconds of idle motion generated per subject (and of the Perlin baseline).
     alpha: significance level of each test of the claim: accuracy against chance (1/N) with all
         and with movement-only features (binomial), generated against Perlin (paired, McNemar).
+    min_power: the power a binomial test against chance must have, with the generated windows, to
+        detect a classifier as accurate as on the held-out recordings; a test below it that fails
+        makes the claim not testable (too few windows to tell), not failed.
     """
 
     SECTION = "egges2004.identification"
@@ -65,6 +68,7 @@ class IdentificationSettings(Settings):
     feature_pcs: int = 8
     generated_s: float = 120.0
     alpha: float = 0.01
+    min_power: float = 0.8
 
 
 @dataclass(frozen=True)

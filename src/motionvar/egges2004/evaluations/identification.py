@@ -194,6 +194,17 @@ def mcnemar_greater(a_ok: np.ndarray, b_ok: np.ndarray) -> tuple[int, int, float
     return better, worse, float(p)
 
 
+def binomial_power(n: int, chance: float, accuracy: float, alpha: float) -> float:
+    """Power of the one-sided binomial test against ``chance`` at level ``alpha`` with ``n``
+    windows, when the classifier's true accuracy is ``accuracy``: the probability of at least the
+    fewest correct windows that reach p < alpha (0 when even n of n do not)."""
+    from scipy.stats import binom
+
+    k = np.arange(n + 1)
+    reach = k[binom.sf(k - 1, n, chance) < alpha]  # P(X >= k) under chance
+    return float(binom.sf(reach[0] - 1, n, accuracy)) if len(reach) else 0.0
+
+
 def _test_sequences(
     model: IdleModel,
     recordings: dict[str, list[Recording]],
@@ -242,9 +253,18 @@ def identification_measurements(table: pd.DataFrame, params: IdentificationSetti
     def per_source(col: str) -> dict[str, dict[str, float]]:
         return {key: {fs: get(source, fs, col) for fs in FEATURE_SETS} for source, key in SOURCE_KEYS.items()}
 
+    subjects = int(table["subjects"].iloc[0])
+    n_generated = {fs: int(get(GEN, fs, "windows")) for fs in FEATURE_SETS}
     return {
         "accuracy": per_source("accuracy"),
         "p_value": per_source("p_value"),
+        # each test against chance, as many windows as generated, at the held-out recordings' accuracy
+        "power": {
+            fs: binomial_power(n_generated[fs], 1.0 / subjects, get(REC, fs, "accuracy"), params.alpha)
+            for fs in FEATURE_SETS
+        },
+        "generated_windows": n_generated["all"],
+        "min_power": params.min_power,
         "vs_perlin": {
             fs: {
                 "better": int(get(GEN, fs, "better_than_perlin")),
@@ -253,7 +273,7 @@ def identification_measurements(table: pd.DataFrame, params: IdentificationSetti
             }
             for fs in FEATURE_SETS
         },
-        "subjects": int(table["subjects"].iloc[0]),
+        "subjects": subjects,
         "alpha": params.alpha,
         "window_s": params.window_s,
     }
