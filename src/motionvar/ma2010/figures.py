@@ -240,8 +240,8 @@ def draw_fig7b(result: EvaluationResult) -> Figure:
     axes[1].set_ylabel("stride error (cm)")
     c = corr["all"]
     axes[1].set_title(
-        f"Spearman rho = {c['rho']:.2f} (p = {c['p']:.1g}) over all {c['n']} grid points, the {c['failed']} failed "
-        "syntheses ranked worst",
+        f"Spearman rho = {c['rho']:.2f} (p = {c['p']:.1g}) over all {c['n']} grid points; "
+        + (f"{c['failed']} failed syntheses, ranked worst" if c["failed"] else "no synthesis failed"),
         fontsize=9,
     )
     fig.suptitle("Ma 2010 Fig. 7b: reliability of the style parameters")
