@@ -21,12 +21,16 @@ from motionvar.ma2010 import (
     structure_evidence,
 )
 from motionvar.ma2010.correspondence import (
+    decode_key_times,
+    encode_key_times,
+    key_times_increase,
     reference_key_positions,
     retime,
     space_warp,
     standard_skeleton,
     time_warp,
 )
+from motionvar.ma2010.evaluations.common import predicted_strides
 from motionvar.ma2010.keyframes import find_extrema, keyframe_signal
 from motionvar.ma2010.network import LOWER_FIRST, UPPER_FIRST
 from motionvar.ma2010.postprocess import (
@@ -37,7 +41,8 @@ from motionvar.ma2010.postprocess import (
     support_foot,
     transition,
 )
-from motionvar.ma2010.settings import Ma2010Settings
+from motionvar.ma2010.settings import KEY_TIMINGS, Ma2010Settings
+from motionvar.ma2010.svi import ClipPrediction
 from motionvar.ma2010.variation import determinative_joints, joint_importance, joint_variation
 from motionvar.synth.intervals import parse_ranges
 
@@ -147,6 +152,34 @@ def test_time_warp_maps_key_frames_to_reference_and_is_monotonic():
     assert np.allclose(w.root_pos[np.round(ref).astype(int), 0], keys, atol=3)
     rot, extra = retime(w.rotations, ref, keys / m.fps, m.fps, w.root_pos)
     assert len(rot) == 141 and np.allclose(extra[[0, -1]], src_root[[0, -1]], atol=1e-6)
+
+
+def test_key_times_as_log_intervals_always_move_forward():
+    """Sec. 4.2: the progression through a synthesized clip increases. Key times interpolated as
+    log intervals decode to increasing times whatever the features; absolute ones need not."""
+    kt = np.array([[0.0, 0.2, 0.45, 0.7, 1.0], [0.0, 0.3, 0.5, 0.8, 1.1]])
+    for how in KEY_TIMINGS:
+        assert np.allclose(decode_key_times(encode_key_times(kt, how), how), kt)
+    far = 3.0 * encode_key_times(kt[:1], "log_intervals") - 5.0 * encode_key_times(kt[1:], "log_intervals")
+    assert key_times_increase(decode_key_times(far, "log_intervals")).all()  # an extrapolation
+    far = 3.0 * kt[:1] - 5.0 * kt[1:]
+    assert not key_times_increase(decode_key_times(far, "absolute")).any()
+    with pytest.raises(ValueError, match="key times must increase"):
+        encode_key_times(kt[:, ::-1], "log_intervals")
+    with pytest.raises(ValueError, match="key_timing must be one of"):
+        encode_key_times(kt, "relative")
+
+
+def test_a_synthesis_that_would_run_backwards_is_failed(toy_clips):
+    """A prediction whose key times do not increase has no strides (a failed synthesis in Fig. 6
+    and 7b), where the inverse warp alone would clamp it into a zero-length segment."""
+    solver = root_solver(toy_clips.skeleton, JM)
+    good = ClipPrediction(rotations=toy_clips.rotations[:2], key_times=toy_clips.key_times[:2].copy())
+    backward = good.key_times.copy()
+    backward[1, 2] = backward[1, 1] - 0.01
+    pred = ClipPrediction(rotations=good.rotations, key_times=backward)
+    strides = predicted_strides(pred, toy_clips.reference_keys, solver, toy_clips.fps)
+    assert np.isfinite(strides[0]).all() and np.isnan(strides[1]).all()
 
 
 def test_standard_skeleton_is_the_mean_and_checks_topology():

@@ -202,10 +202,9 @@ def method_sequences(
     style = five.style.mean(axis=0)
     n_clips = clips_for_duration(five, seconds)
     n_frames = int(round(seconds * fps)) + 1
-    rcond = settings.trend_rcond
     ours = style_variation_model(groups, settings.structure, settings).fit(five)
-    krig = mk05_kriging(settings.variogram_model, settings.variogram_scale, trend_rcond=rcond).fit(five)
-    rbf = rose98_rbf(trend_rcond=rcond).fit(five)
+    krig = mk05_kriging(settings).fit(five)
+    rbf = rose98_rbf(settings).fit(five)
     seqs = example_pose_sequences(five)
     codec = PoseCodec.fit(np.concatenate(seqs))
     gplvm = BayesianGPLVM(settings.gplvm_latent_dim, max_iter=settings.gplvm_iterations, random_state=seed).fit(

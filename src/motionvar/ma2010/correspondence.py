@@ -4,8 +4,12 @@ warping (Eq. 5-6) and incremental time warping to a common duration [PSS02].
 Time warping here is piecewise linear between corresponding key frames: the key frames
 of every clip are mapped onto common reference key times, so the warp is monotonically
 increasing by construction. The inverse warp of a synthesized clip runs through its
-predicted key times (see :func:`retime`), so the progression through the synthesized
-clip is monotonic too, as [PSS02]'s incremental time warping guarantees.
+predicted key times (see :func:`retime`). Those are interpolated as the logarithms of the
+intervals between key frames (``key_timing="log_intervals"``, :func:`encode_key_times`), so
+every interval a synthesis predicts is positive and its progression increases, as [PSS02]'s
+incremental time warping guarantees; interpolating the absolute key times (``"absolute"``)
+can predict a key before the one it follows, and such a synthesis counts as failed
+(:func:`key_times_increase`).
 """
 
 from __future__ import annotations
@@ -22,6 +26,7 @@ from ..core.skeleton import Skeleton
 from ..prep.alignment import align_motion, clip_directions
 from ..prep.options import PrepOptions
 from ..prep.resample import sample_motion
+from .settings import KEY_TIMINGS
 
 
 def standard_skeleton(skeletons: Sequence[Skeleton]) -> Skeleton:
@@ -99,6 +104,36 @@ def time_warp(motion: Motion, key_frames: np.ndarray, reference: np.ndarray) -> 
     n = int(round(reference[-1])) + 1
     src = np.interp(np.arange(n, dtype=float), reference, key_frames)
     return replace(sample_motion(motion, src), translations=None)
+
+
+def encode_key_times(key_times: np.ndarray, key_timing: str) -> np.ndarray:
+    """Features (N, K) of key times (N, K), s: the first key time and the logarithms of the K - 1
+    intervals (``"log_intervals"``; every interval must be positive), or the times themselves."""
+    kt = np.atleast_2d(np.asarray(key_times, dtype=float))
+    if key_timing == "absolute":
+        return kt
+    if key_timing != "log_intervals":
+        raise ValueError(f"key_timing must be one of {KEY_TIMINGS}; got {key_timing!r}")
+    intervals = np.diff(kt, axis=1)
+    if np.any(intervals <= 0):
+        raise ValueError("encode_key_times: key times must increase within every clip")
+    return np.concatenate([kt[:, :1], np.log(intervals)], axis=1)
+
+
+def decode_key_times(features: np.ndarray, key_timing: str) -> np.ndarray:
+    """Key times (M, K) of features (M, K) written by :func:`encode_key_times`."""
+    f = np.atleast_2d(np.asarray(features, dtype=float))
+    if key_timing == "absolute":
+        return f
+    if key_timing != "log_intervals":
+        raise ValueError(f"key_timing must be one of {KEY_TIMINGS}; got {key_timing!r}")
+    return np.concatenate([f[:, :1], f[:, :1] + np.cumsum(np.exp(f[:, 1:]), axis=1)], axis=1)
+
+
+def key_times_increase(key_times: np.ndarray) -> np.ndarray:
+    """Whether each clip's key times (..., K) increase strictly: a synthesis whose keys do not
+    would run backwards and is failed."""
+    return np.all(np.diff(np.asarray(key_times, dtype=float), axis=-1) > 0, axis=-1)
 
 
 def retime_frames(reference: np.ndarray, key_times: np.ndarray, fps: float) -> np.ndarray:

@@ -19,6 +19,7 @@ import numpy as np
 from ..core.kinematics import fk
 from ..core.quaternions import qexp, qinv, qlog, qmul, qnormalize
 from ..core.skeleton import Skeleton
+from .correspondence import decode_key_times, encode_key_times
 
 
 def mean_rotation(q: np.ndarray, axis: int = 0) -> np.ndarray:
@@ -159,17 +160,27 @@ class ClipSet:
 @dataclass(frozen=True)
 class ClipCodec:
     """Clip <-> feature vector for a subset of joints, optionally with the clip's key
-    times (timing, for the inverse time warp) and root height curve (Sec. 6.3, behaviours
+    times (timing, for the inverse time warp; encoded by ``key_timing``,
+    :func:`.correspondence.encode_key_times`) and root height curve (Sec. 6.3, behaviours
     with flight phases). Layout: [tangents (T*|I|*3), key times (K), root height (T)]."""
 
     reference: np.ndarray  # (T, J, 4) per-frame mean rotations of the examples
     joints: np.ndarray
     timing: bool = False
     root_height: bool = False
+    key_timing: str = "log_intervals"
 
     @classmethod
-    def fit(cls, clips: ClipSet, joints: np.ndarray, timing: bool = False, root_height: bool = False) -> "ClipCodec":
-        return cls(mean_rotation(clips.rotations, axis=0), np.asarray(joints, dtype=np.int64), timing, root_height)
+    def fit(
+        cls,
+        clips: ClipSet,
+        joints: np.ndarray,
+        timing: bool = False,
+        root_height: bool = False,
+        key_timing: str = "log_intervals",
+    ) -> "ClipCodec":
+        reference = mean_rotation(clips.rotations, axis=0)
+        return cls(reference, np.asarray(joints, dtype=np.int64), timing, root_height, key_timing)
 
     @property
     def n_frames(self) -> int:
@@ -180,7 +191,7 @@ class ClipCodec:
         v = to_tangent(clips.rotations[:, :, self.joints], self.reference[None, :, self.joints])
         parts = [v.reshape(clips.n_clips, -1)]
         if self.timing:
-            parts.append(clips.key_times)
+            parts.append(encode_key_times(clips.key_times, self.key_timing))
         if self.root_height:
             parts.append(clips.root_height)
         return np.concatenate(parts, axis=1)
@@ -195,7 +206,7 @@ class ClipCodec:
         pos = n_rot
         keys = height = None
         if self.timing:
-            keys, pos = features[:, pos : pos + n_keys], pos + n_keys
+            keys, pos = decode_key_times(features[:, pos : pos + n_keys], self.key_timing), pos + n_keys
         if self.root_height:
             height = features[:, pos : pos + T]
         return rot, keys, height

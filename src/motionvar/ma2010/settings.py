@@ -14,6 +14,8 @@ VARIOGRAM_MODELS = ("linear", "power", "exponential", "gaussian", "spherical", "
 VARIOGRAM_SCALES = ("sd", "none")
 ROOT_GROUPS = ("legs", "upper_body")
 LOO_UNITS = ("walk", "cycle")
+#: how a clip's key times are interpolated (:func:`.correspondence.encode_key_times`)
+KEY_TIMINGS = ("log_intervals", "absolute")
 LOO_XIS = ("mean", "sampled", "own")
 XI_DRAWS = ("sequence", "clip")
 LANDING_RULES = ("significant_maximum", "first_maximum")
@@ -38,6 +40,11 @@ class Ma2010Settings(Settings):
             [1, c, xi] whose singular value is below this fraction of the largest. 0 is the
             exact least-squares fit Sec. 6.2 asks for; with examples nearly on a line their
             thinnest direction is noise that Eq. 11 extrapolates off the line (0.05-0.3 cut it).
+        key_timing: key times interpolated as the logarithms of the intervals between key
+            frames ("log_intervals": every predicted interval is positive, so a synthesis always
+            moves forward, as Sec. 4.2's incremental time warping ensures) or as absolute times
+            ("absolute": a synthesis far from the examples can put a key before the one it
+            follows, and counts as failed).
         root_group: joint group of the root rotation (Fig. 4 does not place it; "legs",
             with "upper_body" as Fig. 6's ablation).
     Evaluations:
@@ -85,6 +92,7 @@ class Ma2010Settings(Settings):
     variogram_model: str = "auto"
     variogram_scale: str = "sd"
     trend_rcond: float = 0.0
+    key_timing: str = "log_intervals"
     root_group: str = "legs"
     fig3_phase_sd: float = 0.05
     fig3_max_clips: int = 0
@@ -120,6 +128,7 @@ class Ma2010Settings(Settings):
             "variogram_model": VARIOGRAM_MODELS,
             "variogram_scale": VARIOGRAM_SCALES,
             "root_group": ROOT_GROUPS,
+            "key_timing": KEY_TIMINGS,
             "loo_unit": LOO_UNITS,
             "loo_xi": LOO_XIS,
             "comparison_xi": XI_DRAWS,

@@ -116,6 +116,7 @@ def save_style_variation_model(
         v = krig.variogram_
         interps[g] = {
             "timing": bool(codec.timing),
+            "key_timing": codec.key_timing,
             "root_height": bool(codec.root_height),
             "kriging": _init_settings(krig),
             "variogram": {"model": v.model, "nugget": float(v.nugget), "params": [float(p) for p in v.params]},
@@ -196,7 +197,11 @@ def load_style_variation_model(path: str | Path) -> SavedStyleModel:
         model.interpolators_ = {}
         for g, spec in info["interpolators"].items():
             codec = ClipCodec(
-                arrays[f"codec.{g}.reference"], arrays[f"codec.{g}.joints"], spec["timing"], spec["root_height"]
+                arrays[f"codec.{g}.reference"],
+                arrays[f"codec.{g}.joints"],
+                spec["timing"],
+                spec["root_height"],
+                spec.get("key_timing", "absolute"),  # files written before the setting: absolute
             )
             model.interpolators_[g] = (codec, _kriging(arrays, g, spec))
         jm = JointMap.from_dict(info["joint_map"], origin=f"{source}.json")

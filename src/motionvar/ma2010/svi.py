@@ -96,6 +96,7 @@ class StyleVariationModel:
         flight: predict the root height curve (behaviours with flight phases, Sec. 6.3).
         trend_rcond: relative cut-off of the pseudo-inverse of each group's Kriging trend
             (Eq. 12-13; :class:`.kriging.UniversalKriging`); 0 is the literal fit.
+        key_timing: how the key times are interpolated (:data:`.settings.KEY_TIMINGS`).
     """
 
     def __init__(
@@ -108,9 +109,11 @@ class StyleVariationModel:
         *,
         variogram_scale: str,
         trend_rcond: float = 0.0,
+        key_timing: str = "log_intervals",
     ):
         self.groups = {g: np.asarray(v, dtype=np.int64) for g, v in groups.items()}
         self.trend_rcond = trend_rcond
+        self.key_timing = key_timing
         self.structure = structure
         self.variogram_model = variogram_model
         self.variogram_scale = variogram_scale
@@ -154,7 +157,9 @@ class StyleVariationModel:
         self.interpolators_: dict[str, tuple[ClipCodec, UniversalKriging]] = {}
         for g, joints in self.groups.items():
             lead = g == self.timing_group_
-            codec = ClipCodec.fit(clips, joints, timing=lead, root_height=lead and self.flight)
+            codec = ClipCodec.fit(
+                clips, joints, timing=lead, root_height=lead and self.flight, key_timing=self.key_timing
+            )
             x = np.concatenate([clips.style, self.xi_[g][:, None]], axis=1)
             krig = UniversalKriging(
                 self.variogram_model, self.n_bins, variogram_scale=self.variogram_scale, trend_rcond=self.trend_rcond
@@ -204,13 +209,14 @@ class StyleVariationModel:
 def style_variation_model(
     groups: Mapping[str, np.ndarray], structure: str | Mapping[str, tuple[str, ...]], settings: Ma2010Settings
 ) -> StyleVariationModel:
-    """An unfitted :class:`StyleVariationModel` on ``groups`` with ``structure`` and the variogram
-    and trend cut-off of ``settings`` (config ma2010.variogram_model, variogram_scale,
-    trend_rcond)."""
+    """An unfitted :class:`StyleVariationModel` on ``groups`` with ``structure`` and the variogram,
+    trend cut-off and key timing of ``settings`` (config ma2010.variogram_model, variogram_scale,
+    trend_rcond, key_timing)."""
     return StyleVariationModel(
         groups,
         structure,
         settings.variogram_model,
         variogram_scale=settings.variogram_scale,
         trend_rcond=settings.trend_rcond,
+        key_timing=settings.key_timing,
     )

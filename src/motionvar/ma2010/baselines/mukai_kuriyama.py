@@ -12,6 +12,7 @@ import numpy as np
 
 from ..kriging import UniversalKriging
 from ..representation import ClipCodec, ClipSet
+from ..settings import Ma2010Settings
 from ..svi import ClipPrediction
 from .rbf import RBFInterpolation
 
@@ -28,6 +29,7 @@ class StyleClipInterpolation:
         variogram_scale: str | None,
         flight: bool = False,
         trend_rcond: float = 0.0,
+        key_timing: str = "log_intervals",
     ):
         if method not in ("kriging", "rbf"):
             raise ValueError(f"StyleClipInterpolation: method must be 'kriging' or 'rbf'; got {method!r}")
@@ -36,12 +38,14 @@ class StyleClipInterpolation:
         self.variogram_scale = variogram_scale
         self.flight = flight
         self.trend_rcond = trend_rcond  # cut-off of the hyperplane's pseudo-inverse (both methods)
+        self.key_timing = key_timing  # how the key times are interpolated (as ours)
 
     def fit(self, clips: ClipSet, groups: np.ndarray | None = None) -> "StyleClipInterpolation":
         """Fit to ``clips``. For RBF, ``groups`` (N,) labels clips that are one example (the cycles
         of one walk: one kernel at their mean style, :meth:`.rbf.RBFInterpolation.fit`); Kriging
         takes every clip as it is."""
-        self.codec_ = ClipCodec.fit(clips, np.arange(clips.skeleton.n_joints), timing=True, root_height=self.flight)
+        joints = np.arange(clips.skeleton.n_joints)
+        self.codec_ = ClipCodec.fit(clips, joints, timing=True, root_height=self.flight, key_timing=self.key_timing)
         self.n_keys_ = len(clips.reference_keys)
         self.reference_keys_ = clips.reference_keys
         y = self.codec_.encode(clips)
@@ -59,13 +63,20 @@ class StyleClipInterpolation:
         return ClipPrediction(rotations=rot, key_times=keys, root_height=height)
 
 
-def mk05_kriging(
-    variogram_model: str, variogram_scale: str, flight: bool = False, trend_rcond: float = 0.0
-) -> StyleClipInterpolation:
-    """Universal Kriging over the style parameters only (Mukai & Kuriyama 2005)."""
-    return StyleClipInterpolation("kriging", variogram_model, variogram_scale, flight, trend_rcond)
+def mk05_kriging(settings: Ma2010Settings, flight: bool = False) -> StyleClipInterpolation:
+    """Universal Kriging over the style parameters only (Mukai & Kuriyama 2005), with the
+    variogram, trend cut-off and key timing of ``settings`` (as ours)."""
+    return StyleClipInterpolation(
+        "kriging",
+        settings.variogram_model,
+        settings.variogram_scale,
+        flight,
+        settings.trend_rcond,
+        settings.key_timing,
+    )
 
 
-def rose98_rbf(flight: bool = False, trend_rcond: float = 0.0) -> StyleClipInterpolation:
-    """RBF interpolation with a linear term (Rose et al. 1998)."""
-    return StyleClipInterpolation("rbf", None, None, flight, trend_rcond)
+def rose98_rbf(settings: Ma2010Settings, flight: bool = False) -> StyleClipInterpolation:
+    """RBF interpolation with a linear term (Rose et al. 1998), with the trend cut-off of its
+    linear part and the key timing of ``settings`` (as ours)."""
+    return StyleClipInterpolation("rbf", None, None, flight, settings.trend_rcond, settings.key_timing)

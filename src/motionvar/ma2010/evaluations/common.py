@@ -13,7 +13,7 @@ import pandas as pd
 
 from ...core.kinematics import fk
 from ..claims import PUBLISHED_MAX_STRIDE_ERROR_CM  # noqa: F401  (re-exported: Fig. 6's bound)
-from ..correspondence import retime
+from ..correspondence import key_times_increase, retime
 from ..examples import normalized_strides
 from ..representation import ClipSet
 from ..settings import LOO_UNITS
@@ -36,10 +36,12 @@ def prediction_key_frames(key_times: np.ndarray, fps: float, n_frames: int) -> n
 def predicted_strides(pred: ClipPrediction, reference_keys: np.ndarray, solver: RootSolver, fps: float) -> np.ndarray:
     """(M, 2) support-phase strides of predicted clips: each is retimed to real time and
     measured as every example cycle's style is (:func:`..examples.normalized_strides`). NaN for
-    a clip whose predicted key times leave no frames between its key frames (a failed
-    synthesis, far outside the examples)."""
+    a failed synthesis (far outside the examples): predicted key times that do not increase
+    (it would run backwards, :func:`..correspondence.key_times_increase`) or that leave no
+    frame between key frames."""
     out = np.full((len(pred), 2), np.nan)
-    for m in range(len(pred)):  # loop over clips
+    forward = key_times_increase(pred.key_times)
+    for m in np.flatnonzero(forward):  # loop over clips
         rot, _ = retime(pred.rotations[m], reference_keys, pred.key_times[m], fps)
         kf = prediction_key_frames(pred.key_times[m], fps, len(rot))
         if np.all(np.diff(kf) > 0):

@@ -44,11 +44,13 @@ RBFS = {"rbf": True, "rbf_cycles": False}
 MIN_PAIRED_FOLDS = 5
 
 
-def least_squares_clips(train: ClipSet, c: np.ndarray, rcond: float = 0.0) -> ClipPrediction:
+def least_squares_clips(
+    train: ClipSet, c: np.ndarray, rcond: float = 0.0, key_timing: str = "log_intervals"
+) -> ClipPrediction:
     """Whole clips at styles c (M, d) from a linear least-squares fit on style alone (the
     trend of universal Kriging without its residual interpolation): the reference that
     tells whether Kriging or RBF interpolate anything beyond a hyperplane."""
-    codec = ClipCodec.fit(train, np.arange(train.skeleton.n_joints), timing=True)
+    codec = ClipCodec.fit(train, np.arange(train.skeleton.n_joints), timing=True, key_timing=key_timing)
     sd = train.style.std(axis=0)
     mean, scale = train.style.mean(axis=0), np.where(sd > 1e-12, sd, 1.0)  # standardized, as the interpolators
     design = np.column_stack([np.ones(train.n_clips), (train.style - mean) / scale])
@@ -80,7 +82,6 @@ def fold_predictions(
     each training cycle's walk (:data:`RBFS`). Returns xi per kind (:data:`XI_KINDS`) and group,
     the predictions per method (table prefix), and per RBF whether a kernel reaches each held-out
     style (M,)."""
-    scale, rcond = settings.variogram_scale, settings.trend_rcond
     model = style_variation_model(groups, structure, settings).fit(train)
     delta = joint_variation(truth)
     xi = {
@@ -93,13 +94,13 @@ def fold_predictions(
         alt = style_variation_model(ablation_groups, structure, settings).fit(train)
         preds[f"ours_own_xi_{ablation_name}"] = alt.predict(c, {g: delta[:, j] for g, j in alt.tau_.items()})
         preds[f"ours_mean_xi_{ablation_name}"] = alt.predict(c, alt.sample_variation(c, noise=False))
-    preds["kriging"] = mk05_kriging(settings.variogram_model, scale, trend_rcond=rcond).fit(train).predict(c)
+    preds["kriging"] = mk05_kriging(settings).fit(train).predict(c)
     reached = {}
     for name, per_walk in RBFS.items():
-        rbf = rose98_rbf(trend_rcond=rcond).fit(train, train_walks if per_walk else None)
+        rbf = rose98_rbf(settings).fit(train, train_walks if per_walk else None)
         preds[name] = rbf.predict(c)
         reached[name] = rbf.interpolator_.reaches(c)
-    preds["least_squares"] = least_squares_clips(train, c, rcond)
+    preds["least_squares"] = least_squares_clips(train, c, settings.trend_rcond, settings.key_timing)
     return xi, preds, reached
 
 

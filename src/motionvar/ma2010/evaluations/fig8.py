@@ -96,14 +96,14 @@ def fixed_style_spreads(
     removed), RBF and style-only Kriging (``settings`` variogram_model, variogram_scale) at
     ``style``, as many clips as ours."""
     clips, groups, solver, n = walks.clips, walks.groups, walks.solver, len(pred)
-    kriging = mk05_kriging(settings.variogram_model, settings.variogram_scale, trend_rcond=settings.trend_rcond)
+    kriging = mk05_kriging(settings)
     return {
         "ours": group_spread(pred.rotations, groups, solver),
         "ceiling (their own xi)": group_spread(ceil_pred.rotations, groups, solver),
         f"data ({len(near)} nearest examples)": group_spread(clips.rotations[near], groups, solver),
         "data, mean posture removed": posture_free_spread(clips.rotations[near], groups, solver),
         "RBF": group_spread(
-            interpolation_variants(rose98_rbf(trend_rcond=settings.trend_rcond).fit(clips), style, n).rotations,
+            interpolation_variants(rose98_rbf(settings).fit(clips), style, n).rotations,
             groups,
             solver,
         ),
