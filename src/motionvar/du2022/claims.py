@@ -664,16 +664,14 @@ def _fig4_12_beam_text(m: Measurements, case: Mapping[str, Any], measure) -> str
 
 def _fig4_12_halves(m: Measurements, kind: str) -> Judgement:
     """Sec. 4.6.2, Fig. 4.12: the k-means tree's median error is below :data:`FIG4_12_HALF` of
-    random sampling's for every primitive (position and orientation constraints, every case
-    counted; ``not testable`` where brute force over the same samples is above it in every case),
-    and for pose constraints it closes more than that share of the gap between random sampling
-    and brute force (:func:`_fig4_12_halves_gap`)."""
+    random sampling's for every primitive (position, orientation and pose constraints alike, the
+    thesis' bar). A primitive where brute force over the same samples does not get below it
+    either cannot show the claim: it is left out (not testable there), and the claim is ``not
+    testable`` when every primitive is."""
     cases = _fig4_12_cases(m, kind)
     if not cases:
         return Judgement("not applicable", "-", note=f"No {kind} constraints were searched.")
-    if kind == "pose":
-        return _fig4_12_halves_gap(m, cases)
-    parts, ok, brutes = [], 0, []
+    parts, ok, unreachable = [], 0, []
     for c in cases:
         rand = _fig4_12_method(c, "random")
         ratio, brute = _fig4_12_method(c, "kmeans") / rand, _fig4_12_method(c, "brute_force") / rand
@@ -681,11 +679,13 @@ def _fig4_12_halves(m: Measurements, kind: str) -> Judgement:
             f"{c['primitive']}: {ratio:.2f} ({_fig4_12_beam_text(m, c, lambda v, r=rand: v / r)}; "
             f"brute force {brute:.2f})"
         )
-        brutes.append((c["primitive"], brute))
-        ok += ratio < FIG4_12_HALF
+        if brute < FIG4_12_HALF:
+            ok += ratio < FIG4_12_HALF
+        else:
+            unreachable.append(f"{c['primitive']} ({brute:.2f})")
+    testable = len(cases) - len(unreachable)
     measured = "k-means / random median error: " + "; ".join(parts)
-    unreachable = [f"{p} ({b:.2f})" for p, b in brutes if not b < FIG4_12_HALF]
-    if len(unreachable) == len(cases):
+    if testable == 0:
         return Judgement(
             verdict="not testable",
             measured=measured,
@@ -696,51 +696,15 @@ def _fig4_12_halves(m: Measurements, kind: str) -> Judgement:
             ),
         )
     return Judgement(
-        verdict=verdict_from_fraction(ok, len(cases)),
+        verdict=verdict_from_fraction(ok, testable),
         measured=measured,
         note=(
-            f"{ok} of {len(cases)} primitives below {FIG4_12_HALF}, every one counted, at the verdict beam fixed in "
-            f"advance (graph.search.beam); partial when at least half are. The trees hold {m['n_samples']} samples "
-            "(thesis: 10,000)."
-            + (
-                f" Brute force itself stays at or above {FIG4_12_HALF} in {', '.join(unreachable)}."
-                if unreachable
-                else ""
-            )
+            f"{ok} of {testable} primitives below {FIG4_12_HALF} at the verdict beam fixed in advance "
+            f"(graph.search.beam), counted where brute force over the same {m['n_samples']} samples (thesis: 10,000) "
+            "gets below it; partial when at least half are."
+            + (f" Not testable where brute force does not: {', '.join(unreachable)}." if unreachable else "")
         ),
-        value=ok / len(cases),
-        bound=1.0,
-        unit="share",
-        direction=">=",
-    )
-
-
-def _fig4_12_halves_gap(m: Measurements, cases: Sequence[Mapping[str, Any]]) -> Judgement:
-    """Sec. 4.6.2, Fig. 4.12, pose constraints: the k-means tree closes more than
-    :data:`FIG4_12_HALF` of the gap between random sampling's and brute force's median errors
-    (leaves less than that share) for every primitive."""
-    parts, ok, brutes = [], 0, []
-    for c in cases:
-        rand, gap = _fig4_12_method(c, "random"), _fig4_12_gap_left(c)
-        brutes.append(_fig4_12_method(c, "brute_force") / rand)
-        parts.append(
-            f"{c['primitive']}: {gap:.2f} (k-means / random {_fig4_12_method(c, 'kmeans') / rand:.2f}, brute force "
-            f"{brutes[-1]:.2f}; {_fig4_12_beam_text(m, c, lambda v, c=c: _fig4_12_gap_left(c, v))})"
-        )
-        ok += gap < FIG4_12_HALF
-    finite = [b for b in brutes if not math.isnan(b)]
-    lo, hi = (min(finite), max(finite)) if finite else (float("nan"), float("nan"))
-    return Judgement(
-        verdict=verdict_from_fraction(ok, len(cases)),
-        measured="share of the random-to-brute-force gap left by k-means: " + "; ".join(parts),
-        note=(
-            f"A pose error averages several joints, and brute force over the same {m['n_samples']} samples reaches "
-            f"{lo:.2f}-{hi:.2f} of random sampling's median error, so 'by more than half' is read against that "
-            f"floor: k-means must close more than {FIG4_12_HALF:.0%} of the random-to-brute-force gap. {ok} of "
-            f"{len(cases)} primitives do, every one counted, at the verdict beam fixed in advance; partial when at "
-            "least half do."
-        ),
-        value=ok / len(cases),
+        value=ok / testable,
         bound=1.0,
         unit="share",
         direction=">=",
@@ -938,8 +902,9 @@ def _sec4_6_1_size_constant(m: Measurements) -> Judgement:
         note=(
             "Each primitive refitted with its own saved settings to a seeded random half of its clips; model bytes are "
             f"its files on disk, summed over the primitives. Reproduced when the models grow by at most "
-            f"{SEC4_6_1_GROWTH - 1:.0%} while the clips double, partial up to {SEC4_6_1_GROWTH_PARTIAL - 1:.0%}; the "
-            "latent dimension is capped at clips - 1 and the GMM size is chosen by BIC, so both may grow with the data."
+            f"{SEC4_6_1_GROWTH - 1:.0%} while the clips double, partial up to {SEC4_6_1_GROWTH_PARTIAL - 1:.0%}; a "
+            "check, not a replication: the latent dimension is fixed (capped at clips - 1), so only the GMM's component "
+            "count, chosen by BIC, can change the size."
         ),
         value=growth,
         bound=SEC4_6_1_GROWTH,
@@ -949,7 +914,6 @@ def _sec4_6_1_size_constant(m: Measurements) -> Judgement:
 
 
 def _fig4_12_halves_spec(kind: str) -> ClaimSpec:
-    gap = kind == "pose"
     return ClaimSpec(
         claim_id=f"du2022.fig4_12.kmeans_halves_random_error_{kind}",
         evaluation="du2022_fig4_12",
@@ -958,11 +922,8 @@ def _fig4_12_halves_spec(kind: str) -> ClaimSpec:
         statement="The k-means tree search reduces the median error of random sampling (100 samples) by more than "
         f"half for every primitive ({kind} constraints).",
         published=f"median error ratio k-means / random < {FIG4_12_HALF} for all primitives",
-        bound=(
-            f"k-means closes > {FIG4_12_HALF:.0%} of the random-to-brute-force gap, every primitive (partial: half)"
-            if gap
-            else f"k-means / random < {FIG4_12_HALF}, every primitive, at the fixed verdict beam (partial: half)"
-        ),
+        bound=f"k-means / random < {FIG4_12_HALF}, every primitive where brute force / random is (the others not "
+        "testable), at the fixed verdict beam (partial: half)",
         judge=partial(_fig4_12_halves, kind=kind),
     )
 
@@ -1156,7 +1117,7 @@ CLAIMS: tuple[ClaimSpec, ...] = (
         claim_id="du2022.sec4_6_1.model_size_constant_as_data_doubles",
         evaluation="du2022_sec4_6_1",
         source="Sec. 4.6.1",
-        kind="replication",
+        kind="consistency",
         statement="The size of the parametric statistical model is invariant to the number of samples: the models "
         "stay (nearly) the same size when the data they are fitted to doubles.",
         published="model size invariant to the number of samples",
