@@ -284,12 +284,20 @@ def draw_fig8(result: EvaluationResult) -> Figure:
     )
     names = list(spreads)
     width = 0.8 / len(names)
+    interval = f.get("data_interval")
     for i, name in enumerate(names):
+        heights = [spreads[name][g] for g in groups]
+        yerr = None
+        if name == f.get("data_name") and interval is not None:  # the nearest examples' 95 % bootstrap interval
+            lo, hi = (np.array([interval[g][k] for g in groups]) for k in (0, 1))
+            yerr = np.clip([np.array(heights) - lo, hi - np.array(heights)], 0.0, None)
         axes[1].bar(
             np.arange(len(groups)) + i * width,
-            [spreads[name][g] for g in groups],
+            heights,
             width,
-            label=name,
+            yerr=yerr,
+            capsize=3,
+            label=name + (" (95 % bootstrap interval)" if yerr is not None else ""),
             hatch="//" if "posture removed" in name else None,
             color=COLOURS[i % len(COLOURS)],
         )
@@ -298,7 +306,10 @@ def draw_fig8(result: EvaluationResult) -> Figure:
     axes[1].set_ylabel("SD across clips of joint positions (cm)")
     axes[1].set_title("spread at one style, per joint group (ceiling: the examples' own xi)", fontsize=9)
     axes[1].legend(fontsize=7, loc="upper left")
-    axes[1].set_ylim(0, 1.45 * max(max(v.values()) for v in spreads.values()))
+    tallest = max(max(v.values()) for v in spreads.values())
+    if interval is not None:
+        tallest = max(tallest, max(hi for _, hi in interval.values()))
+    axes[1].set_ylim(0, 1.45 * tallest)
     fig.suptitle("Ma 2010 Fig. 8a: variation at a fixed style")
     fig.tight_layout()
     return fig

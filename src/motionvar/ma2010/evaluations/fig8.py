@@ -191,7 +191,7 @@ def fig8_fixed_style(walks: WalkCycles, model: StyleVariationModel, settings: Ma
     keeping the stride (not testable with too few nearest examples or subjects); RBF and
     Kriging do not vary. Figure: ``motions`` and ``key_frames`` of the variants in real
     time, ``style``, ``errors``, ``spreads``, ``ceiling_errors``, ``data_name`` (the key of
-    the data's spread)."""
+    the data's spread), ``data_interval`` (group -> its 95 % bootstrap interval)."""
     clips, solver = walks.clips, walks.solver
     n = settings.fig8_variants
     style = np.median(clips.style, axis=0)
@@ -224,6 +224,7 @@ def fig8_fixed_style(walks: WalkCycles, model: StyleVariationModel, settings: Ma
         "groups": GROUPS,
         "ceiling_errors": ceil_errors,
         "data_name": data_name,
+        "data_interval": interval,
     }
     claims = judge_claims(CLAIMS, "ma2010_fig8", measurements)
     return EvaluationResult(pd.DataFrame(rows), claims, figure, measurements)
