@@ -213,8 +213,9 @@ def _error_grows_with_distance(m: Measurements) -> Judgement:
     setup = (
         "Rank correlation between the distance to the nearest example and the stride error of the cycle synthesized "
         "(xi at the conditional mean) on a grid over the examples' range widened by "
-        f"{m['margin']:g} of it each side, over all {m['grid_points']} grid points; the {m['failed']} failed "
-        "syntheses rank as the largest errors. The paper's 'reliability level' is undefined; the stride error stands "
+        f"{m['margin']:g} of it each side, over all {m['grid_points']} grid points; "
+        + (f"the {m['failed']} failed syntheses rank as the largest errors. " if m["failed"] else "none failed. ")
+        + "The paper's 'reliability level' is undefined; the stride error stands "
         "in for it (hence a stand-in claim), and off the examples' line (left = right stride) a model of symmetric "
         "walks errs by at least half the asymmetry asked for, reported with that floor removed."
     )
