@@ -21,8 +21,7 @@ from dataclasses import dataclass
 
 import numpy as np
 from scipy.signal import butter, find_peaks, sosfiltfilt
-
-from ..core.quaternions import qinv, qmul, quat_to_rotvec
+from scipy.spatial.transform import Rotation
 
 SIDES = ("left", "right")
 
@@ -251,10 +250,13 @@ def rotation_channel_sd(rotations: np.ndarray) -> np.ndarray:
     hemisphere of the joint's first frame).
     """
     q = np.asarray(rotations, dtype=float)
+    T, J = q.shape[:2]
     q = q * np.where(np.sum(q * q[:1], axis=-1, keepdims=True) < 0, -1.0, 1.0)
     mean = q.mean(axis=0)
     mean /= np.linalg.norm(mean, axis=-1, keepdims=True)
-    return np.degrees(quat_to_rotvec(qmul(qinv(mean), q)).std(axis=0))
+    inverse = Rotation.from_quat(np.broadcast_to(mean, q.shape).reshape(-1, 4), scalar_first=True).inv()
+    relative = inverse * Rotation.from_quat(q.reshape(-1, 4), scalar_first=True)
+    return np.degrees(relative.as_rotvec().reshape(T, J, 3).std(axis=0))
 
 
 def channel_classes(sd_deg: np.ndarray, static_deg: float, near_static_deg: float) -> np.ndarray:
