@@ -106,14 +106,19 @@ def time_warp(motion: Motion, key_frames: np.ndarray, reference: np.ndarray) -> 
     return replace(sample_motion(motion, src), translations=None)
 
 
+def _absolute(key_timing: str) -> bool:
+    """Whether ``key_timing`` (one of :data:`.settings.KEY_TIMINGS`) keeps the times as they are."""
+    if key_timing not in KEY_TIMINGS:
+        raise ValueError(f"key_timing must be one of {KEY_TIMINGS}; got {key_timing!r}")
+    return key_timing == "absolute"
+
+
 def encode_key_times(key_times: np.ndarray, key_timing: str) -> np.ndarray:
     """Features (N, K) of key times (N, K), s: the first key time and the logarithms of the K - 1
     intervals (``"log_intervals"``; every interval must be positive), or the times themselves."""
     kt = np.atleast_2d(np.asarray(key_times, dtype=float))
-    if key_timing == "absolute":
+    if _absolute(key_timing):
         return kt
-    if key_timing != "log_intervals":
-        raise ValueError(f"key_timing must be one of {KEY_TIMINGS}; got {key_timing!r}")
     intervals = np.diff(kt, axis=1)
     if np.any(intervals <= 0):
         raise ValueError("encode_key_times: key times must increase within every clip")
@@ -123,10 +128,8 @@ def encode_key_times(key_times: np.ndarray, key_timing: str) -> np.ndarray:
 def decode_key_times(features: np.ndarray, key_timing: str) -> np.ndarray:
     """Key times (M, K) of features (M, K) written by :func:`encode_key_times`."""
     f = np.atleast_2d(np.asarray(features, dtype=float))
-    if key_timing == "absolute":
+    if _absolute(key_timing):
         return f
-    if key_timing != "log_intervals":
-        raise ValueError(f"key_timing must be one of {KEY_TIMINGS}; got {key_timing!r}")
     return np.concatenate([f[:, :1], f[:, :1] + np.cumsum(np.exp(f[:, 1:]), axis=1)], axis=1)
 
 

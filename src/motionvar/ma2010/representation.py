@@ -20,6 +20,7 @@ from ..core.kinematics import fk
 from ..core.quaternions import qexp, qinv, qlog, qmul, qnormalize
 from ..core.skeleton import Skeleton
 from .correspondence import decode_key_times, encode_key_times
+from .settings import Ma2010Settings
 
 
 def mean_rotation(q: np.ndarray, axis: int = 0) -> np.ndarray:
@@ -168,7 +169,7 @@ class ClipCodec:
     joints: np.ndarray
     timing: bool = False
     root_height: bool = False
-    key_timing: str = "log_intervals"
+    key_timing: str = Ma2010Settings.key_timing
 
     @classmethod
     def fit(
@@ -177,7 +178,7 @@ class ClipCodec:
         joints: np.ndarray,
         timing: bool = False,
         root_height: bool = False,
-        key_timing: str = "log_intervals",
+        key_timing: str = Ma2010Settings.key_timing,
     ) -> "ClipCodec":
         reference = mean_rotation(clips.rotations, axis=0)
         return cls(reference, np.asarray(joints, dtype=np.int64), timing, root_height, key_timing)

@@ -15,7 +15,6 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -24,10 +23,8 @@ from .keyframes import keyframe_signal
 from .kriging import UniversalKriging
 from .network import LOWER_FIRST, STYLE, UPPER_FIRST, PropagationNetwork, choose_structure
 from .representation import ClipCodec, ClipSet
+from .settings import Ma2010Settings
 from .variation import determinative_joints, joint_importance, joint_variation, latent_variation
-
-if TYPE_CHECKING:
-    from .settings import Ma2010Settings
 
 GROUP_ORDER = ("legs", "left_arm", "right_arm", "upper_body")  # A, B, C, D (Fig. 4)
 
@@ -109,7 +106,7 @@ class StyleVariationModel:
         *,
         variogram_scale: str,
         trend_rcond: float = 0.0,
-        key_timing: str = "log_intervals",
+        key_timing: str = Ma2010Settings.key_timing,
     ):
         self.groups = {g: np.asarray(v, dtype=np.int64) for g, v in groups.items()}
         self.trend_rcond = trend_rcond

@@ -98,7 +98,7 @@ class TopEigenvectors:
     _fn = None
 
     @classmethod
-    def apply(cls, A, n: int, solver: str = "tridiagonal"):
+    def apply(cls, A, n: int, solver: str = SfpcaSettings.eigensolver):
         if cls._fn is None:
             torch = _torch()
 
@@ -227,7 +227,7 @@ class ObservationObjective:
         n_components: int,
         n_eval_frames: int | None = None,
         dtype=None,
-        eigensolver: str = "tridiagonal",
+        eigensolver: str = SfpcaSettings.eigensolver,
     ) -> None:
         torch = _torch()
         self.torch = torch

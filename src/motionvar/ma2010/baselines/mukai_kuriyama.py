@@ -29,7 +29,7 @@ class StyleClipInterpolation:
         variogram_scale: str | None,
         flight: bool = False,
         trend_rcond: float = 0.0,
-        key_timing: str = "log_intervals",
+        key_timing: str = Ma2010Settings.key_timing,
     ):
         if method not in ("kriging", "rbf"):
             raise ValueError(f"StyleClipInterpolation: method must be 'kriging' or 'rbf'; got {method!r}")

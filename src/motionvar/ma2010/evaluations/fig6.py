@@ -45,7 +45,7 @@ MIN_PAIRED_FOLDS = 5
 
 
 def least_squares_clips(
-    train: ClipSet, c: np.ndarray, rcond: float = 0.0, key_timing: str = "log_intervals"
+    train: ClipSet, c: np.ndarray, rcond: float = 0.0, key_timing: str = Ma2010Settings.key_timing
 ) -> ClipPrediction:
     """Whole clips at styles c (M, d) from a linear least-squares fit on style alone (the
     trend of universal Kriging without its residual interpolation): the reference that
