@@ -86,6 +86,25 @@ def test_rotation_channel_sd():
     np.testing.assert_array_equal(rm.channel_classes(sd[0], 1e-3, 0.5), ["moving", "static", "static"])
 
 
+def test_rotation_channel_sd_agrees_with_scipy():
+    """The channels are the rotation vectors of each frame relative to the joint's mean rotation:
+    scipy's Rotation composition and ``as_rotvec`` give the same SDs (small angles and a joint
+    that never moves included)."""
+    from scipy.spatial.transform import Rotation
+
+    rng = np.random.default_rng(1)
+    q = rng.normal(size=(500, 5, 4)) * [4.0, 1.0, 1.0, 1.0]  # spreads past 90 degrees
+    q[:, 3] = [10.0, 1e-7, 0.0, 0.0] + rng.normal(scale=1e-9, size=(500, 4))  # tiny angles
+    q[:, 4] = [0.5, 0.5, 0.5, 0.5]  # still: relative rotations of exactly zero
+    q /= np.linalg.norm(q, axis=-1, keepdims=True)
+    aligned = q * np.where(np.sum(q * q[:1], axis=-1, keepdims=True) < 0, -1.0, 1.0)
+    mean = aligned.mean(axis=0) / np.linalg.norm(aligned.mean(axis=0), axis=-1, keepdims=True)
+    inverse = Rotation.from_quat(np.broadcast_to(mean, q.shape).reshape(-1, 4), scalar_first=True).inv()
+    relative = inverse * Rotation.from_quat(aligned.reshape(-1, 4), scalar_first=True)
+    expected = np.degrees(relative.as_rotvec().reshape(q.shape[:2] + (3,)).std(axis=0))
+    np.testing.assert_allclose(rm.rotation_channel_sd(q), expected, rtol=1e-9, atol=1e-12)
+
+
 def test_speed_peaks_and_path_ratio():
     t = np.linspace(0, 1, 200)
     bell = np.exp(-(((t - 0.4) / 0.1) ** 2))

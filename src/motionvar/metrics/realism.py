@@ -21,7 +21,6 @@ from dataclasses import dataclass
 
 import numpy as np
 from scipy.signal import butter, find_peaks, sosfiltfilt
-from scipy.spatial.transform import Rotation
 
 SIDES = ("left", "right")
 
@@ -250,13 +249,27 @@ def rotation_channel_sd(rotations: np.ndarray) -> np.ndarray:
     hemisphere of the joint's first frame).
     """
     q = np.asarray(rotations, dtype=float)
-    T, J = q.shape[:2]
     q = q * np.where(np.sum(q * q[:1], axis=-1, keepdims=True) < 0, -1.0, 1.0)
     mean = q.mean(axis=0)
     mean /= np.linalg.norm(mean, axis=-1, keepdims=True)
-    inverse = Rotation.from_quat(np.broadcast_to(mean, q.shape).reshape(-1, 4), scalar_first=True).inv()
-    relative = inverse * Rotation.from_quat(q.reshape(-1, 4), scalar_first=True)
-    return np.degrees(relative.as_rotvec().reshape(T, J, 3).std(axis=0))
+    # conj(mean) (x) q as a linear map of q: one (4, 4) matrix per joint
+    w, x, y, z = mean[:, 0], -mean[:, 1], -mean[:, 2], -mean[:, 3]
+    left = np.stack(
+        [
+            np.stack([w, -x, -y, -z], -1),
+            np.stack([x, w, -z, y], -1),
+            np.stack([y, z, w, -x], -1),
+            np.stack([z, -y, x, w], -1),
+        ],
+        axis=1,
+    )
+    relative = np.einsum("jab,tjb->tja", left, q)
+    relative *= np.where(relative[..., :1] < 0, -1.0, 1.0)  # the shorter way round
+    vec = relative[..., 1:]
+    sin_half = np.linalg.norm(vec, axis=-1, keepdims=True)
+    angle = 2.0 * np.arctan2(sin_half, relative[..., :1])
+    scale = np.divide(angle, sin_half, out=np.full_like(angle, 2.0), where=sin_half > 0)
+    return np.degrees((vec * scale).std(axis=0))
 
 
 def channel_classes(sd_deg: np.ndarray, static_deg: float, near_static_deg: float) -> np.ndarray:
