@@ -36,6 +36,8 @@ def test_shipped_configs_are_valid():
     full = load("config.yaml")
     validate(full, SCHEMA)
     validate(merged(load("config.yaml"), load("ci.yaml")), SCHEMA)
+    for variant in sorted((ROOT / "config" / "variants").glob("*.yaml")):
+        validate(merged(load("config.yaml"), load(f"variants/{variant.name}")), SCHEMA)
 
 
 def test_seeds_config_is_the_ci_config_for_five_seeds():

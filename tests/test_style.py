@@ -32,6 +32,7 @@ from motionvar.du2022.style import (
     gram_distance_maps,
     heading_angles,
     kl_loss,
+    latent_spread_penalty,
     load_vae,
     motion_features,
     motions_features,
@@ -298,6 +299,81 @@ def test_gram_sum_and_mean_differ_by_the_frame_count_in_the_style_terms():
         style_loss(a, b, 1.0, "frobenius", gram_reduce="median")
 
 
+def test_batch_mean_style_target_lets_samples_differ():
+    """Eq. 5.10 on the minibatch's mean Gram matrix (the author's code) is zero for two decodes
+    that differ, each carrying half the style example's Gram matrix; compared sample by sample
+    the same decodes pay, and only copies of one Gram matrix are free."""
+    style = torch.tensor([[1.0, -1.0, 1.0, -1.0], [1.0, 1.0, -1.0, -1.0]])  # Gram: 4 I summed, I averaged
+    a = torch.stack([np.sqrt(2.0) * style[0], torch.zeros(4)])  # Gram diag(2, 0) averaged
+    b = torch.stack([torch.zeros(4), np.sqrt(2.0) * style[1]])  # diag(0, 2)
+    pair = torch.stack([a, b])[None]  # (L = 1, N = 2, K, T)
+    for reduce in ("mean", "sum"):
+        together = style_loss(pair, style, 200.0, "frobenius", reduce, target="batch_mean")
+        apart = style_loss(pair, style, 200.0, "frobenius", reduce, target="per_sample")
+        assert float(together) < 1e-3 < float(apart), (reduce, float(together), float(apart))
+        copies = style_loss(style.expand(1, 3, 2, 4), style, 200.0, "frobenius", reduce, target="per_sample")
+        assert float(copies) < 1e-3
+    # the mean of the decodes' Gram matrices, as an explicit mean over samples
+    gen = torch.Generator().manual_seed(2)
+    maps, ref = torch.rand(3, 5, 6, 10, generator=gen, dtype=torch.float64), torch.rand(6, 12, generator=gen)
+    for reduce in ("mean", "sum"):
+        mean_gram = gram(maps.reshape(-1, 6, 10), reduce).mean(dim=0)
+        expected = 200.0 * float(torch.linalg.norm(mean_gram - gram(ref.double(), reduce)))
+        got = float(style_loss(maps, ref.double(), 200.0, "frobenius", reduce, target="batch_mean"))
+        assert got == pytest.approx(expected, rel=1e-9)
+    with pytest.raises(ValueError, match="target must be one of"):
+        style_loss(pair, style, 1.0, "frobenius", "mean", target="every")
+
+
+def test_author_code_terms():
+    """The author's code's content term sums over the minibatch (L = 1: its reconstruction_loss)
+    and its spread penalty w exp(-mean (z - mean z)^2) is w for draws on one point."""
+    y = torch.tensor([[1.0, 2.0], [0.0, 0.0]])
+    recon = torch.stack([y + 1.0, y])  # L = 2: a squared error of 4 in one draw, 0 in the other
+    assert float(content_loss(recon, y, "sum")) == pytest.approx(4.0 / 2)
+    assert float(content_loss(recon, y, "sum")) == pytest.approx(2 * 2 * float(content_loss(recon, y)))
+    assert float(latent_spread_penalty(torch.ones(3, 5, 4), 10.0)) == pytest.approx(10.0)
+    z = torch.tensor([[-1.0, 1.0], [1.0, -1.0]])  # squared deviations 1 everywhere
+    assert float(latent_spread_penalty(z, 10.0)) == pytest.approx(10.0 * np.exp(-1.0))
+    with pytest.raises(ValueError, match="reduce must be one of"):
+        content_loss(recon, y, "max")
+
+
+def _toy_maps(seed: int = 0):
+    """Toy feature maps (64 clips, 16 x 30) from 4 latent factors, and a style example."""
+    gen = torch.Generator().manual_seed(seed)
+    base = torch.rand(16, 30, generator=gen)
+    factors = 0.5 * torch.randn(4, 16, 30, generator=gen)
+    maps = torch.relu(base + torch.einsum("nk,kct->nct", torch.randn(64, 4, generator=gen), factors))
+    example = torch.relu(1.5 * base + 0.3 * torch.randn(16, 30, generator=gen))
+    return maps, example
+
+
+def test_default_training_keeps_latent_units_over_seeds():
+    """Regressions over four training seeds on toy maps, at one budget (30 epochs at lr 1e-3):
+    the default optimiser (Adam) trains VAEs that use their latent space in most seeds, plain
+    SGD in none; CVAEs from the live ones keep latent units in use with the default style term
+    (the minibatch's mean Gram matrix) in most seeds and lose them all in every seed when each
+    sample is pulled to the example (per_sample)."""
+    maps, example = _toy_maps()
+    hidden, live_vaes, kept = (64, 32, 16), 0, {"batch_mean": 0, "per_sample": 0}
+    assert VaeSettings().optimizer == "adam" and CvaeSettings().style_target == "batch_mean"
+    for seed in range(4):
+        sgd = VaeSettings(latent=4, samples_per_input=3, epochs=30, lr=1e-3, batch_size=16, optimizer="sgd")
+        assert train_vae(maps, sgd, seed, hidden)[1]["active"].iloc[-1] == 0, seed
+        vae_settings = VaeSettings(latent=4, samples_per_input=3, epochs=30, lr=1e-3, batch_size=16)
+        vae, hist = train_vae(maps, vae_settings, seed, hidden)
+        if hist["active"].iloc[-1] == 0:
+            continue
+        live_vaes += 1
+        for target in kept:
+            cvae_settings = CvaeSettings(epochs=20, lr=1e-3, batch_size=16, style_target=target)
+            _, chist = train_cvae(maps, example, vae_settings, cvae_settings, seed, vae, hidden)
+            kept[target] += int(chist["active"].iloc[-1] > 0)
+    assert live_vaes >= 3
+    assert kept["per_sample"] == 0 and kept["batch_mean"] >= 2, kept
+
+
 def test_gram_distance_from_maps_equals_the_explicit_one():
     gen = torch.Generator().manual_seed(0)
     a, b = (
@@ -309,14 +385,12 @@ def test_gram_distance_from_maps_equals_the_explicit_one():
         assert ref.shape == (3, 5)
         assert torch.allclose(gram_distance_maps(a, b, reduce), ref, rtol=1e-10)
         assert float(style_distance(a[0], b, reduce)) == pytest.approx(float(ref[0].mean()))
-        # Eq. 5.10 as printed: the Frobenius norm of the Gram difference
+        # Eq. 5.10 as printed, sample by sample: the Frobenius norm of the Gram difference
         fro = torch.linalg.matrix_norm(gram(a, reduce) - gram(b, reduce)).mean()
-        assert float(style_loss(a, b, 2.0, "frobenius", gram_reduce=reduce)) == pytest.approx(
-            2.0 * float(fro), rel=1e-6
-        )
-        assert float(style_loss(a, b, 2.0, norm="mean_squared", gram_reduce=reduce)) == pytest.approx(
-            2.0 * float(ref.mean())
-        )
+        per_sample = float(style_loss(a, b, 2.0, "frobenius", gram_reduce=reduce, target="per_sample"))
+        assert per_sample == pytest.approx(2.0 * float(fro), rel=1e-6)
+        ms = float(style_loss(a, b, 2.0, norm="mean_squared", gram_reduce=reduce, target="per_sample"))
+        assert ms == pytest.approx(2.0 * float(ref.mean()))
     with pytest.raises(ValueError, match="norm must be"):
         style_loss(a, b, 2.0, norm="l1", gram_reduce="sum")
 
@@ -658,7 +732,8 @@ def style_run(tmp_path_factory, layout):
         )
         assert cinfo["example"] in set(meta.loc[meta["style"] == style, "clip_id"]) and (hist["style"] > 0).all()
         assert cinfo["regime"] == (
-            "adam lr 0.001, 2 epochs, batch 4; alpha 1, frobenius norm, Gram sum over frames, from the neutral VAE"
+            "adam lr 0.001, 2 epochs, batch 4; alpha 1, frobenius norm, batch-mean Gram (mean over frames), "
+            "from the neutral VAE"
         )
         assert cinfo["active_units"] == hist["active"].iloc[-1]
         save_vae(path / f"{style}.pt", cvae, cshape, cinfo)
@@ -851,8 +926,14 @@ def test_settings_defaults_are_the_thesis_values():
     assert (s.autoencoder.kernels, s.autoencoder.kernel_width, s.autoencoder.window_stride) == (256, 15, 30)
     assert (s.autoencoder.epochs, s.autoencoder.lr) == (300, 1e-4)
     for sub in (s.vae, s.cvae):
-        assert (sub.epochs, sub.lr, sub.optimizer) == (1000, 1e-5, "sgd")
-    assert (s.vae.latent, s.vae.samples_per_input, s.cvae.alpha, s.cvae.gram) == (32, 10, 200.0, "sum")
+        assert (sub.epochs, sub.lr, sub.optimizer) == (1000, 1e-5, "adam")
+    assert (s.vae.latent, s.vae.samples_per_input, s.cvae.alpha, s.cvae.gram) == (32, 10, 200.0, "mean")
+    assert (s.cvae.style_target, s.cvae.content, s.cvae.spread_weight, s.cvae.init_from_neutral) == (
+        "batch_mean",
+        "mean",
+        0.0,
+        True,
+    )
     assert (s.distance_samples, s.diversity_samples) == (1000, 10000)
     with pytest.raises(ValueError, match="style.vae.epoch"):
         StyleSettings.from_dict({"vae": {"epoch": 3}})

@@ -326,7 +326,7 @@ def _diagonal_dominant(m: Measurements) -> Judgement:
     off = [f"{r}->{row_min[r]}" for r in distances if r not in on_diag]
     regimes, active = m["cvae_regimes"], m["active_units"]
     training = (
-        f"CVAEs: {'; '.join(regimes)} (the thesis: SGD lr 1e-5, 1000 epochs)."
+        f"CVAEs: {'; '.join(regimes)} (the thesis: lr 1e-5, 1000 epochs)."
         if regimes
         else "Training budgets are a fraction of the thesis' (see the caption)."
     )

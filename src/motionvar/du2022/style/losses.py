@@ -15,12 +15,19 @@
   forming the K x K Gram matrices (exact algebra, ~10x less work for K = 256 kernels and
   T = 30 frames: ||A A'/T - B B'/S||^2 = ||A'A||^2/T^2 - 2 ||A'B||^2/(T S) + ||B'B||^2/S^2,
   without the divisions for the summed Gram matrix).
-- :func:`style_loss`: Eq. 5.10, alpha ||Gram(decoder(z)) - Gram(y_s)||: by default the
-  Frobenius norm as printed (``norm="frobenius"``) of the summed Gram matrices
-  (``gram_reduce="sum"``); ``norm="mean_squared"`` uses Eq. 5.12's mean squared distance instead.
+- :func:`style_loss`: Eq. 5.10, alpha ||Gram(decoder(z)) - Gram(y_s)||, the Frobenius norm as
+  printed (``norm="frobenius"``) or Eq. 5.12's mean squared distance (``norm="mean_squared"``).
+  ``target="batch_mean"`` compares the mean of the minibatch's decoded Gram matrices with the
+  style example's, as the author's code does (``models/conditional_vae_autoencoder.py`` of
+  DeepMotionModeling: ``tf.norm(reduce_mean(gram(style)) - reduce_mean(gram(decoded)))``):
+  the decodes must carry the style on average and may differ from each other.
+  ``target="per_sample"`` compares every decode's Gram matrix and averages the norms, which
+  pulls each sample to the one example: a decoder that ignores z is its cheapest optimum.
   The choices set the balance against the content term (Eq. 5.7, a sum over 7,680
   features) for a given alpha: with 256 x 256 entries the Frobenius norm is 256 times the
   root of the mean squared distance.
+- :func:`latent_spread_penalty`: the author's code's term w exp(-mean (z - mean z)^2) over a
+  minibatch's latent draws, which the thesis does not mention (``author_code`` variant).
 - :func:`style_distance`: Eq. 5.12 (Table 5.1), by default on frame-averaged Gram matrices:
   the thesis' neutral-to-neutral distance (0.0149) has the scale of the average (ours
   0.0135); the sum multiplies every entry of Table 5.1 by 30^2 = 900 (same pattern).
@@ -30,11 +37,17 @@ from __future__ import annotations
 
 import torch
 
+CONTENT_REDUCTIONS = ("mean", "sum")
 
-def content_loss(recon: torch.Tensor, y: torch.Tensor) -> torch.Tensor:
-    """Eq. 5.7: 1 / (2 N L) sum_i sum_l ||decoder(z_il) - y_i||^2; recon (L, N, D), y (N, D)."""
+
+def content_loss(recon: torch.Tensor, y: torch.Tensor, reduce: str = "mean") -> torch.Tensor:
+    """Eq. 5.7: 1 / (2 N L) sum_i sum_l ||decoder(z_il) - y_i||^2 (``reduce="mean"``); recon
+    (L, N, D), y (N, D). ``reduce="sum"``: 1 / L sum_i sum_l ||...||^2, the author's code's
+    sum over the minibatch (its ``reconstruction_loss``, one draw per input)."""
+    if reduce not in CONTENT_REDUCTIONS:
+        raise ValueError(f"content_loss: reduce must be one of {CONTENT_REDUCTIONS}; got {reduce!r}")
     L, N = recon.shape[0], recon.shape[1]
-    return ((recon - y) ** 2).sum() / (2.0 * N * L)
+    return ((recon - y) ** 2).sum() / (2.0 * N * L if reduce == "mean" else L)
 
 
 def kl_loss(mu: torch.Tensor, logvar: torch.Tensor) -> torch.Tensor:
@@ -84,6 +97,7 @@ def gram_distance_maps(maps: torch.Tensor, ref_maps: torch.Tensor, reduce: str =
 
 
 STYLE_NORMS = ("frobenius", "mean_squared")
+STYLE_TARGETS = ("batch_mean", "per_sample")
 
 
 def style_loss(
@@ -92,18 +106,37 @@ def style_loss(
     alpha: float,
     norm: str,
     gram_reduce: str,
+    target: str = "batch_mean",
 ) -> torch.Tensor:
-    """Eq. 5.10: alpha ||Gram(decoder(z)) - Gram(y_s)||, averaged over samples;
-    recon_maps (..., K, T) decoded feature maps, style_maps (K, S) the encoded style example,
-    ``norm`` frobenius (as printed) or mean_squared, ``gram_reduce`` the reduction of Eq.
-    5.9 (:func:`gram`; config style.cvae.style_norm and style.cvae.gram)."""
-    msd = gram_distance_maps(recon_maps, style_maps, gram_reduce)
+    """Eq. 5.10: alpha ||Gram(decoder(z)) - Gram(y_s)||; recon_maps (..., K, T) decoded
+    feature maps, style_maps (K, S) the encoded style example, ``norm`` frobenius (as
+    printed) or mean_squared, ``gram_reduce`` the reduction of Eq. 5.9 (:func:`gram`),
+    ``target`` batch_mean (the distance of the decodes' mean Gram matrix) or per_sample (the
+    mean of each decode's distance); config style.cvae.style_norm, .gram and .style_target."""
+    if norm not in STYLE_NORMS:
+        raise ValueError(f"style_loss: norm must be one of {STYLE_NORMS}; got {norm!r}")
+    if target not in STYLE_TARGETS:
+        raise ValueError(f"style_loss: target must be one of {STYLE_TARGETS}; got {target!r}")
+    K = recon_maps.shape[-2]
+    if target == "batch_mean":
+        maps = recon_maps.reshape(-1, K, recon_maps.shape[-1])
+        # the mean of the decodes' Gram matrices is the Gram matrix of their frames side by side
+        side_by_side = maps.transpose(0, 1).reshape(K, -1)
+        g = gram(side_by_side, gram_reduce) * (1.0 if gram_reduce == "mean" else 1.0 / len(maps))
+        msd = gram_distance(g, gram(style_maps, gram_reduce))
+    else:
+        msd = gram_distance_maps(recon_maps, style_maps, gram_reduce)
     if norm == "frobenius":
-        K = recon_maps.shape[-2]
         return alpha * (K * torch.sqrt(msd + 1e-12)).mean()
-    if norm == "mean_squared":
-        return alpha * msd.mean()
-    raise ValueError(f"style_loss: norm must be one of {STYLE_NORMS}; got {norm!r}")
+    return alpha * msd.mean()
+
+
+def latent_spread_penalty(z: torch.Tensor, weight: float) -> torch.Tensor:
+    """``weight`` exp(-mean over draws and dimensions of (z - mean z)^2), z (..., k) latent draws
+    pooled over the leading axes: the author's code's ``variational_error`` (weight 10), which
+    grows as the draws of a minibatch close in on one point."""
+    flat = z.reshape(-1, z.shape[-1])
+    return weight * torch.exp(-((flat - flat.mean(dim=0)) ** 2).mean())
 
 
 def style_distance(sample_maps: torch.Tensor, style_maps: torch.Tensor, gram_reduce: str = "mean") -> torch.Tensor:

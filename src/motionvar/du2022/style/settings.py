@@ -4,9 +4,14 @@ autoencoder (Sec. 5.3.1, Eq. 5.1-5.2), the VAE of each motion primitive (Sec. 5.
 evaluations (Table 5.1, Tables 5.2-5.3, Fig. 5.4-5.5).
 
 The defaults are the thesis' values where it gives them (Sec. 5.4.1: the autoencoder 300
-epochs at learning rate 1e-4, each VAE and CVAE 1000 epochs at 1e-5 by "stochastic gradient
-descent", Sec. 5.3.2); ``config/config.yaml`` sets the training budgets that fit a 2-core
-CPU. The thesis names no batch size; those defaults are ours.
+epochs at learning rate 1e-4, each VAE and CVAE 1000 epochs at 1e-5, alpha 200); where it is
+silent or reads two ways, the author's code decides (DeepMotionModeling,
+``models/conditional_vae_autoencoder.py``): Adam for "stochastic gradient descent", the
+frame-averaged Gram matrix, the CVAE's style term on the minibatch's mean Gram matrix.
+``config/config.yaml`` sets the training budgets that fit a 2-core CPU;
+``config/variants/du2022_author_code.yaml`` selects the author's code's other choices (fresh
+weights, summed content, its latent-spread penalty, alpha 500). The thesis names no batch
+size; those defaults are ours.
 """
 
 from __future__ import annotations
@@ -55,9 +60,10 @@ class NetworkTraining(Settings):
     """Learning rate (Sec. 5.4.1: 0.00001)."""
     batch_size: int = 32
     """Clips per minibatch (not given in the thesis)."""
-    optimizer: str = "sgd"
-    """adam, or sgd: plain minibatch gradient descent, the thesis' "stochastic gradient
-    descent" (Sec. 5.3.2)."""
+    optimizer: str = "adam"
+    """adam, as every trainer of the author's code (the thesis' "stochastic gradient descent",
+    Sec. 5.3.2, names the family), or sgd: plain minibatch gradient descent (at the thesis' lr
+    1e-5 it leaves the VAE untrained)."""
 
 
 @dataclass(frozen=True)
@@ -83,11 +89,22 @@ class CvaeSettings(NetworkTraining):
     style_norm: str = "frobenius"
     """The norm of Eq. 5.10: frobenius (as printed) or mean_squared (Eq. 5.12's mean squared
     distance over the Gram entries)."""
-    gram: str = "sum"
-    """The Gram matrix of Eq. 5.9: sum over the feature frames (as printed) or mean."""
+    gram: str = "mean"
+    """The Gram matrix of Eq. 5.9: mean over the feature frames (Sec. 5.4.1: style frames "will
+    be averaged by the calculation of gram matrix"; the author's ``gram_matrix``) or sum (Eq.
+    5.9 as printed)."""
+    style_target: str = "batch_mean"
+    """What Eq. 5.10 compares with the style example's Gram matrix: batch_mean, the mean of the
+    minibatch's decoded Gram matrices (the author's code), or per_sample, each decode's."""
     init_from_neutral: bool = True
     """Start from the neutral VAE's weights (the stylistic primitives are "deformed from" the
-    neutral ones, Fig. 5.5)."""
+    neutral ones, Fig. 5.5); the author's code starts from fresh weights."""
+    content: str = "mean"
+    """Eq. 5.7's content term: mean (1 / (2 N L), as printed) or sum (over the minibatch, the
+    author's code)."""
+    spread_weight: float = 0.0
+    """Weight of the author's code's latent-spread penalty w exp(-mean (z - mean z)^2) (its 10);
+    0 leaves it out, as the thesis does."""
 
 
 @dataclass(frozen=True)

@@ -11,16 +11,13 @@
 
 The thesis trains with "stochastic gradient descent" at learning rates 1e-4 (autoencoder,
 300 epochs) and 1e-5 (VAE/CVAE, 1000 epochs) and names no optimiser or batch size; we use
-the optimiser (Adam by default, or plain minibatch SGD), epochs, learning rate and batch
-size of the config (:class:`~.settings.StyleSettings`; its defaults are the thesis'). A CVAE's regime decides whether its posterior
-collapses: its Frobenius style term (Eq. 5.10) starts one (frame-averaged Gram) to three
-(summed Gram, Eq. 5.9) orders of magnitude above the content term and, left to run, drives
-the decoder to one output that matches the style example whatever z is. Measured at full
-size (walk left and right stance, 10 epochs from the neutral VAE, alpha 200): Adam at lr
-1e-3 with the averaged Gram left 0 of 32 latent dimensions in use; with the summed Gram, lr
-1e-4 left 0 for 2 of 6 left-stance styles, 3e-5 left 1 for 4 of 6 right-stance ones and 1e-5
-keeps 10-19 in all 12; plain SGD at 1e-5 blows up the content term with the sum. Lower rates
-only stop earlier on the same path: the style moves in as the latent dimensions go out.
+the optimiser (Adam by default, as every trainer of the author's code, or plain minibatch
+SGD), epochs, learning rate and batch size of the config (:class:`~.settings.StyleSettings`;
+its defaults are the thesis'). A CVAE's style term decides whether its posterior collapses:
+compared sample by sample (``style_target: per_sample``) it pulls every decode to the one
+style example, and a decoder that ignores z is its cheapest optimum; on the minibatch's mean
+Gram matrix (``batch_mean``, the author's code) the decodes need carry the style only on
+average.
 Every run draws its shuffles and noise from one ``torch.Generator`` seeded by ``seed``,
 so the same inputs give the same weights. Histories are DataFrames, one row per epoch.
 
@@ -51,7 +48,16 @@ from ...core.threads import fixed_threads
 from ...io.dataset import MotionDataset
 from .data import example_features, primitive_features, select_style_example, training_windows, window_counts
 from .features import FeatureLayout, FeatureScaler
-from .losses import GRAM_REDUCTIONS, STYLE_NORMS, content_loss, kl_loss, style_loss
+from .losses import (
+    CONTENT_REDUCTIONS,
+    GRAM_REDUCTIONS,
+    STYLE_NORMS,
+    STYLE_TARGETS,
+    content_loss,
+    kl_loss,
+    latent_spread_penalty,
+    style_loss,
+)
 from .model import FeatureSpace, active_units
 from .networks import VAE_HIDDEN, ConvAutoencoder, MotionVAE
 from .settings import AutoencoderSettings, CvaeSettings, StyleSettings, VaeSettings
@@ -262,11 +268,13 @@ def train_cvae(
 ) -> tuple[MotionVAE, pd.DataFrame]:
     """Train a primitive's CVAE on its clips' feature maps (N, K, T') and ``style_maps``
     (K, T_s), the encoded style example: the loss of Eq. 5.11 with the style term of Eq.
-    5.10 (weight ``cvae.alpha``, norm ``cvae.style_norm``, Gram matrices of Eq. 5.9 summed
-    or averaged over frames by ``cvae.gram``, :func:`~.losses.style_loss`), the neutral
-    VAE's latent size and L (``vae``), the run of ``cvae`` seeded by ``seed``. ``init`` (a
-    trained VAE) gives the starting weights, or None. History columns: those of
-    :func:`train_vae`."""
+    5.10 (weight ``cvae.alpha``, norm ``cvae.style_norm``, Gram matrices of Eq. 5.9 averaged
+    or summed over frames by ``cvae.gram``, on the minibatch's mean Gram matrix or each
+    sample's by ``cvae.style_target``, :func:`~.losses.style_loss`), the content term reduced
+    by ``cvae.content`` and the latent-spread penalty weighted ``cvae.spread_weight``, the
+    neutral VAE's latent size and L (``vae``), the run of ``cvae`` seeded by ``seed``. ``init``
+    (a trained VAE) gives the starting weights, or None. History columns: those of
+    :func:`train_vae` (loss includes the spread penalty)."""
     cfg = TrainConfig.of(cvae, seed)
     return _train_vae(maps, cfg, vae.samples_per_input, vae.latent, hidden, init, (style_maps, cvae))
 
@@ -303,6 +311,12 @@ def _train_vae(
             raise ValueError(f"train_cvae: style_norm must be one of {STYLE_NORMS}; got {style_norm!r}")
         if gram_reduce not in GRAM_REDUCTIONS:
             raise ValueError(f"train_cvae: gram must be one of {GRAM_REDUCTIONS}; got {gram_reduce!r}")
+        if style_term.style_target not in STYLE_TARGETS:
+            raise ValueError(
+                f"train_cvae: style_target must be one of {STYLE_TARGETS}; got {style_term.style_target!r}"
+            )
+        if style_term.content not in CONTENT_REDUCTIONS:
+            raise ValueError(f"train_cvae: content must be one of {CONTENT_REDUCTIONS}; got {style_term.content!r}")
         style_maps = torch.as_tensor(style_maps, dtype=torch.float32)
         if style_maps.ndim != 2 or style_maps.shape[0] != K:
             raise ValueError(f"train_vae: style_maps must be ({K}, T_s); got {tuple(style_maps.shape)}")
@@ -315,14 +329,19 @@ def _train_vae(
             yb = y[idx]
             mu, logvar = model.encode(yb)
             eps = torch.randn((n_samples, len(idx), model.latent), generator=gen)
-            recon = model.decode(model.reparameterize(mu, logvar, eps))
-            c, k = content_loss(recon, yb), kl_loss(mu, logvar)
-            s = (
-                style_loss(recon.reshape(n_samples, len(idx), K, Tf), style_maps, alpha, style_norm, gram_reduce)
-                if style_maps is not None
-                else torch.zeros(())
-            )
-            loss = c + k + s
+            z = model.reparameterize(mu, logvar, eps)
+            recon = model.decode(z)
+            k = kl_loss(mu, logvar)
+            if style_term is None:
+                c, s = content_loss(recon, yb), torch.zeros(())
+                loss = c + k
+            else:
+                c = content_loss(recon, yb, style_term.content)
+                recon_maps = recon.reshape(n_samples, len(idx), K, Tf)
+                s = style_loss(recon_maps, style_maps, alpha, style_norm, gram_reduce, style_term.style_target)
+                loss = c + k + s
+                if style_term.spread_weight:
+                    loss = loss + latent_spread_penalty(z, style_term.spread_weight)
             opt.zero_grad()
             loss.backward()
             opt.step()
@@ -493,7 +512,10 @@ def fit_style_cvae(
         "example": example_id,
         "n_clips": len(rows),
         "active_units": int(history["active"].iloc[-1]),
-        "regime": f"{cfg.describe()}; alpha {c.alpha:g}, {c.style_norm.replace('_', ' ')} norm, Gram {c.gram} "
-        f"over frames" + (", from the neutral VAE" if c.init_from_neutral else ""),
+        "regime": f"{cfg.describe()}; alpha {c.alpha:g}, {c.style_norm.replace('_', ' ')} norm, "
+        f"{c.style_target.replace('_', '-')} Gram ({c.gram} over frames)"
+        + (", summed content" if c.content == "sum" else "")
+        + (f", spread penalty {c.spread_weight:g}" if c.spread_weight else "")
+        + (", from the neutral VAE" if c.init_from_neutral else ", from fresh weights"),
     }
     return cvae, tuple(maps.shape[1:]), info, history
