@@ -15,7 +15,7 @@ from motionvar.core.quaternions import qexp, qmul
 from motionvar.ma2010.comparison import NaturalnessReference, family, method_variants
 from motionvar.ma2010.evaluations.common import group_spread
 from motionvar.ma2010.evaluations.fig3 import circular_sd, step_phases
-from motionvar.ma2010.evaluations.fig6 import paired_pose_errors
+from motionvar.ma2010.evaluations.fig6 import failure_causes, paired_pose_errors
 from motionvar.ma2010.evaluations.fig7b import reliability_correlation
 from motionvar.ma2010.evaluations.fig8 import GROUPS, posture_free_spread
 from motionvar.ma2010.evaluations.sec7_4 import comparison_measurements, sequence_rows
@@ -101,6 +101,18 @@ def _fig6_measurements(ours: np.ndarray, floor: np.ndarray, pose: dict[str, np.n
         "walks": len(ours),
         "variogram_model": "linear",
         "mk05": paired_pose_errors(_pose_folds(pose)),
+        "failure_causes": failure_causes(
+            pd.DataFrame(
+                {
+                    "ours_mean_xi_stride_error_cm": ours,
+                    "validation_stride_error_cm": floor,
+                    "kriging_stride_error_cm": ours,
+                    "least_squares_stride_error_cm": ours,
+                }
+            ),
+            "ours_mean_xi",
+            1.2,
+        ),
     }
 
 

@@ -25,6 +25,7 @@ from motionvar.ma2010 import figures
 from motionvar.ma2010.comparison import (
     METHODS,
     NATURALNESS_SCORES,
+    covering,
     family,
     held_out_pose_distance,
     method_variants,
@@ -34,7 +35,7 @@ from motionvar.ma2010.comparison import (
 )
 from motionvar.ma2010.evaluations.common import PAPER, loo_folds, walk_positions
 from motionvar.ma2010.evaluations.fig3 import circular_sd, fig3_keyframes, step_phases
-from motionvar.ma2010.evaluations.fig6 import fig6_leave_one_out
+from motionvar.ma2010.evaluations.fig6 import failure_causes, fig6_leave_one_out
 from motionvar.ma2010.evaluations.fig7b import fig7b_reliability, reliability_correlation
 from motionvar.ma2010.evaluations.fig8 import GROUPS, fig8_fixed_style
 from motionvar.ma2010.evaluations.sec7_4 import sec7_4_comparison
@@ -160,6 +161,27 @@ def test_fig6_leave_one_out(walks):
     assert kriging.verdict == "not testable" and "fewer than 5 differing folds" in kriging.note
     assert result.measurements["mk05"]["folds"] == folds["fold"].nunique() == 2
     check(result, figures.draw_fig6, "")
+
+
+def test_fig6_failure_causes_follow_the_stated_rule():
+    """Each cycle above the bound gets the first matching cause: the measure's own floor, then no
+    style-only interpolant within the bound, then ours; cycles within the bound get none; the
+    note names them, most frequent first."""
+    from motionvar.ma2010.claims import _failure_causes
+
+    folds = pd.DataFrame(
+        {
+            "ours_mean_xi_stride_error_cm": [0.5, 2.0, 2.0, 2.0, 2.0],
+            "validation_stride_error_cm": [0.1, 1.5, 0.2, 0.2, 0.2],
+            "kriging_stride_error_cm": [0.4, 0.3, 1.9, 1.9, 0.8],
+            "least_squares_stride_error_cm": [0.4, 0.3, 1.6, 1.4, 1.6],
+        }
+    )
+    causes = failure_causes(folds, "ours_mean_xi", 1.2)
+    assert causes == {"measure_floor": 1, "no_interpolant": 2, "ours": 1}
+    note = _failure_causes({"failure_causes": causes})
+    assert note.index("2 the data") < note.index("1 the method") and "1 our measure" in note
+    assert _failure_causes({"failure_causes": failure_causes(folds.iloc[:1], "ours_mean_xi", 1.2)}) == ""
 
 
 def test_fig6_compares_with_the_strides_asked_for(walks):
@@ -440,6 +462,39 @@ def test_sec7_4_comparison(walks):
         sec7_4_comparison(
             WalkCycles(walks.clips, ["one"] * walks.clips.n_clips, JM, "toy walks", root_group="legs"), settings
         )
+
+
+def test_sequences_cover_the_seconds_with_the_same_draws():
+    """Sec. 7.4's sequences: a walker whose cycles are shorter than the examples' mean gets more
+    cycles from the same draws (the same sequence, longer) instead of ending early and scoring
+    as broken down; a sequence that lasts is made once, as before, and leaves the generator where
+    one make leaves it."""
+    from motionvar.core import Motion, cmu_skeleton
+
+    sk = cmu_skeleton()
+
+    def make(cycle_s: float):
+        def walker(n: int, rng: np.random.Generator) -> Motion:
+            values = rng.normal(size=n)  # one draw per cycle, in order
+            frames = int(round(cycle_s * 120))
+            root = np.zeros((n * frames, 3))
+            root[:, 0] = np.repeat(values, frames)
+            rotations = np.tile([1.0, 0.0, 0.0, 0.0], (n * frames, sk.n_joints, 1))
+            return Motion(skeleton=sk, root_pos=root, rotations=rotations, fps=120.0)
+
+        return walker
+
+    slow, fast = make(1.0), make(0.8)
+    lasting = covering(slow, 12, 10.0, rng := np.random.default_rng(3))
+    reference = np.random.default_rng(3)
+    once = slow(12, reference)
+    np.testing.assert_array_equal(lasting.root_pos, once.root_pos[: lasting.n_frames])
+    assert rng.bit_generator.state == reference.bit_generator.state
+    short = fast(12, np.random.default_rng(3))
+    assert short.duration < 10.0 - 1 / 120
+    covered = covering(fast, 12, 10.0, np.random.default_rng(3))
+    assert covered.duration == pytest.approx(10.0)
+    np.testing.assert_array_equal(covered.root_pos[: short.n_frames], short.root_pos)
 
 
 def test_sec7_4_pose_score_does_not_reward_copying():

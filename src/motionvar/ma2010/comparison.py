@@ -15,7 +15,8 @@ and jerk is reported for the whole body and without the root's path (root-free).
 
 from __future__ import annotations
 
-from collections.abc import Mapping, Sequence
+import copy
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -77,6 +78,31 @@ def clips_for_duration(clips: ClipSet, seconds: float) -> int:
 def trim(motion: Motion, seconds: float) -> Motion:
     """The first ``seconds`` of a motion."""
     return motion.slice(0, min(motion.n_frames, int(round(seconds * motion.fps)) + 1))
+
+
+def covering(
+    make: Callable[[int, np.random.Generator], Motion],
+    n_clips: int,
+    seconds: float,
+    rng: np.random.Generator,
+    max_doublings: int = 6,
+) -> Motion:
+    """The first ``seconds`` of ``make(n_clips, rng)``; when that motion ends earlier (its cycles
+    shorter than the examples' mean, e.g. a sampled walker who steps faster), made again from
+    the same draws with twice the cycles until it lasts (at most ``max_doublings`` times): the
+    same sequence, longer, since the draws for n cycles are the first of those for more, never
+    a fresh draw that would favour slow walkers. ``rng`` ends as the last ``make`` left it. A
+    motion still short after that is returned as it is (a sequence that broke down)."""
+    start = copy.deepcopy(rng)
+    motion = make(n_clips, rng)
+    for _ in range(max_doublings):
+        if motion.duration >= seconds - 1.0 / motion.fps:
+            break
+        n_clips *= 2
+        trial = copy.deepcopy(start)
+        motion = make(n_clips, trial)
+        rng.bit_generator.state = trial.bit_generator.state
+    return trim(motion, seconds)
 
 
 def ours_clips(
@@ -216,7 +242,9 @@ def method_sequences(
     out: dict[str, list[Motion]] = {v: [] for v in method_variants(settings)}
     for s in range(k):  # n_sequences sequences per method
         rng = np.random.default_rng([seed, s])
-        out["ours"].append(trim(ours_sequence(ours, style, n_clips, solver, rng, xi_per, landing_rule), seconds))
+        out["ours"].append(
+            covering(lambda n, r: ours_sequence(ours, style, n, solver, r, xi_per, landing_rule), n_clips, seconds, rng)
+        )
         noisy = perlin_sequences(five, n_clips, solver, rng, amplitudes, settings.perlin_frequency_hz, landing_rule)
         for a, m in zip(amplitudes, noisy):
             out[f"perlin_{a:g}"].append(trim(m, seconds))

@@ -317,6 +317,24 @@ def paired_pose_errors(folds: pd.DataFrame) -> dict:
     }
 
 
+def failure_causes(folds: pd.DataFrame, method: str, bound: float) -> dict[str, int]:
+    """Why each held-out cycle whose stride error under ``method`` exceeds ``bound`` does, by a
+    rule fixed before any run, first match: ``measure_floor`` when the cycle's own clip, retimed
+    and re-measured, already errs above the bound (the measure cannot reach it on this cycle);
+    ``no_interpolant`` when the style-only interpolants of the same examples (Kriging and least
+    squares on the style parameters) both err above it too (the cycle departs from what the
+    other examples' styles predict: the data's cycle-to-cycle variation); ``ours`` otherwise (an
+    interpolant of the same examples gets within the bound, ours does not)."""
+    over = folds[folds[f"{method}_stride_error_cm"] > bound]
+    floor = over["validation_stride_error_cm"] > bound
+    rivals = (over["kriging_stride_error_cm"] > bound) & (over["least_squares_stride_error_cm"] > bound)
+    return {
+        "measure_floor": int(floor.sum()),
+        "no_interpolant": int((~floor & rivals).sum()),
+        "ours": int((~floor & ~rivals).sum()),
+    }
+
+
 def loo_measurements(
     folds: pd.DataFrame, summary: pd.DataFrame, settings: Ma2010Settings, root: str, alt: str | None
 ) -> dict:
@@ -324,8 +342,10 @@ def loo_measurements(
     with the xi of ``settings.loo_xi`` against the strides asked for, over every held-out cycle
     (max, mean, count, count within 1.2 cm), the summary rows (:func:`summary_measurements`), the
     folds' setup (root group ``root``, the ablation's ``alt`` or None, fold unit, xi, number of
-    walks, variogram) and MK05's paired pose errors (``mk05``: :func:`paired_pose_errors`)."""
-    err = folds[f"ours_{settings.loo_xi}_xi_stride_error_cm"].to_numpy()
+    walks, variogram), MK05's paired pose errors (``mk05``: :func:`paired_pose_errors`) and why
+    the cycles above 1.2 cm are (``failure_causes``: :func:`failure_causes`)."""
+    method = f"ours_{settings.loo_xi}_xi"
+    err = folds[f"{method}_stride_error_cm"].to_numpy()
     return {
         "stride_error_cm": {
             "max": float(err.max()),
@@ -333,6 +353,7 @@ def loo_measurements(
             "n": len(err),
             "n_within": int(np.sum(err <= PUBLISHED_MAX_STRIDE_ERROR_CM)),
         },
+        "failure_causes": failure_causes(folds, method, PUBLISHED_MAX_STRIDE_ERROR_CM),
         "summary": summary_measurements(summary),
         "root_group": root,
         "ablation_root_group": alt,
