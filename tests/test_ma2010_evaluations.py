@@ -24,7 +24,9 @@ from motionvar.io import load_dataset, save_dataset
 from motionvar.ma2010 import figures
 from motionvar.ma2010.comparison import (
     METHODS,
+    NATURALNESS_MEASURES,
     NATURALNESS_SCORES,
+    NaturalnessReference,
     covering,
     family,
     held_out_pose_distance,
@@ -38,7 +40,7 @@ from motionvar.ma2010.evaluations.fig3 import circular_sd, fig3_keyframes, step_
 from motionvar.ma2010.evaluations.fig6 import failure_causes, fig6_leave_one_out
 from motionvar.ma2010.evaluations.fig7b import fig7b_reliability, reliability_correlation
 from motionvar.ma2010.evaluations.fig8 import GROUPS, fig8_fixed_style
-from motionvar.ma2010.evaluations.sec7_4 import sec7_4_comparison
+from motionvar.ma2010.evaluations.sec7_4 import sec7_4_comparison, sequence_rows
 from motionvar.ma2010.evaluations.sec8 import cpu_model, sec8_timing
 from motionvar.ma2010.examples import WalkCycles, joint_groups, walk_cycles
 from motionvar.ma2010.settings import Ma2010Settings
@@ -592,6 +594,34 @@ def test_ours_draws_xi_once_per_sequence_or_per_clip(walks, model):
     assert sequence.n_frames > 2
     with pytest.raises(ValueError, match="xi_per"):
         ours_clips(model, style, 3, np.random.default_rng(0), xi_per="frame")
+
+
+def test_a_sequence_breaks_down_at_its_first_failed_synthesis(walks, model):
+    """Under ma2010.key_timing absolute a predicted clip may have key times that do not
+    increase: Sec. 7.4's sequence stops before it (and so scores as broken down) instead of
+    clamping it into a zero-length segment; a first clip that fails leaves one frame."""
+    from motionvar.ma2010.comparison import until_failed
+    from motionvar.ma2010.svi import ClipPrediction
+    from motionvar.ma2010.synthesis import sequence_motion
+
+    style = np.median(walks.clips.style, axis=0)
+    good = ours_clips(model, style, 4, np.random.default_rng(0), xi_per="clip")
+    assert until_failed(good) is good
+    bad = good.key_times.copy()
+    bad[2, 2] = bad[2, 1] - 0.01  # the third clip runs backwards
+    cut = until_failed(ClipPrediction(good.rotations, bad, good.root_height))
+    assert len(cut) == 2 and np.array_equal(cut.key_times, good.key_times[:2])
+    bad[0, 1] = bad[0, 0]  # and the first stands still
+    first = until_failed(ClipPrediction(good.rotations, bad, good.root_height))
+    motion = sequence_motion(first.rotations, first.key_times, model.reference_keys_, walks.solver, model.fps_)
+    assert len(first) == 1 and motion.n_frames == 1
+    from motionvar.ma2010.comparison import example_pose_sequences
+
+    examples = [walks.solver.motion(r, walks.clips.fps) for r in example_pose_sequences(walks.clips)]
+    ref = NaturalnessReference.from_examples(examples, walks.solver, 3.0, 3.0)
+    row = sequence_rows({"ours": [motion]}, examples, ref, 1.0)[0]
+    assert np.isnan([row[k] for k in NATURALNESS_MEASURES if k not in NATURALNESS_SCORES]).all()
+    assert np.isinf([row[k] for k in NATURALNESS_SCORES]).all()
 
 
 def test_sec8_timing_with_a_fake_clock(walks, model):

@@ -31,6 +31,7 @@ from .baselines.dbn import LauDBN
 from .baselines.gplvm import helix_trajectory
 from .baselines.mukai_kuriyama import StyleClipInterpolation, mk05_kriging, rose98_rbf
 from .baselines.perlin import add_rotation_noise
+from .correspondence import key_times_increase
 from .examples import foot_contacts
 from .representation import ClipSet, PoseCodec
 from .settings import XI_DRAWS, Ma2010Settings
@@ -121,6 +122,23 @@ def ours_clips(
     return model.predict(c, {g: np.repeat(v, n_clips) for g, v in xi.items()})
 
 
+def until_failed(pred: ClipPrediction) -> ClipPrediction:
+    """The clips of ``pred`` before its first failed synthesis (key times that do not increase,
+    possible under ``ma2010.key_timing: absolute``; at least the first clip's first frame): a
+    sequence breaks down there instead of having the clip clamped into a zero-length segment."""
+    ok = key_times_increase(pred.key_times)
+    if ok.all():
+        return pred
+    n = int(np.argmin(ok))
+    if n == 0:
+        one = pred.key_times[:1].copy()
+        one[0] = one[0, 0] + np.arange(one.shape[1]) * 1e-9  # the first frame only
+        return ClipPrediction(pred.rotations[:1], one, None if pred.root_height is None else pred.root_height[:1])
+    return ClipPrediction(
+        pred.rotations[:n], pred.key_times[:n], None if pred.root_height is None else pred.root_height[:n]
+    )
+
+
 def ours_sequence(
     model: StyleVariationModel,
     style: np.ndarray,
@@ -132,7 +150,7 @@ def ours_sequence(
 ) -> Motion:
     """Ours: n_clips cycles at one style (:func:`ours_clips`), retimed, stitched and
     root-solved."""
-    pred = ours_clips(model, style, n_clips, rng, xi_per)
+    pred = until_failed(ours_clips(model, style, n_clips, rng, xi_per))
     return sequence_motion(
         pred.rotations, pred.key_times, model.reference_keys_, solver, model.fps_, pred.root_height, landing_rule
     )
@@ -147,7 +165,7 @@ def interpolation_sequence(
     landing_rule: str,
 ) -> Motion:
     """RBF or plain Kriging: the same clip (one style) repeated n_clips times."""
-    pred = interp.predict(np.tile(np.atleast_2d(style), (n_clips, 1)))
+    pred = until_failed(interp.predict(np.tile(np.atleast_2d(style), (n_clips, 1))))
     return sequence_motion(
         pred.rotations, pred.key_times, interp.reference_keys_, solver, fps, pred.root_height, landing_rule
     )
@@ -317,6 +335,17 @@ def held_out_pose_distance(examples: Sequence[np.ndarray]) -> float:
         raise ValueError(f"held_out_pose_distance: need poses of 2 or more examples; got {len(examples)}")
     others = [np.concatenate([e for j, e in enumerate(examples) if j != i]) for i in range(len(examples))]
     return float(np.mean([nearest_pose_distance(e, o).mean() for e, o in zip(examples, others)]))
+
+
+NATURALNESS_MEASURES = (
+    "jerk_cm_s3",
+    "root_free_jerk_cm_s3",
+    "foot_skating_cm_s",
+    "contact_share",
+    "low_joint_speed_cm_s",
+    "pose_distance_cm",
+    "discontinuities_per_min",
+)
 
 
 def naturalness(motion: Motion, ref: NaturalnessReference) -> dict[str, float]:

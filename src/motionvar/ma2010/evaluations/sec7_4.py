@@ -19,6 +19,7 @@ from ...core.threads import fixed_threads
 from ...metrics.jerk import mean_jerk, root_free_jerk
 from ..claims import CLAIMS, NO_VARIATION_CM
 from ..comparison import (
+    NATURALNESS_MEASURES,
     NATURALNESS_SCORES,
     NaturalnessReference,
     at_least_as_natural,
@@ -59,7 +60,8 @@ def sequence_rows(
         diverged = any(m.duration < full for m in motions)
         var = np.inf if diverged else variation_between(motions)
         for s, m in enumerate(motions):
-            meas = naturalness(m, ref)
+            # one frame: the sequence failed at its first clip (until_failed), nothing to measure
+            meas = naturalness(m, ref) if m.n_frames > 1 else dict.fromkeys(NATURALNESS_MEASURES, np.nan)
             scores = naturalness_scores(meas, example_jerk, example_root_free_jerk, held_out)
             if m.duration < full:  # the sequence broke down before its end: unusable, least natural
                 scores = {k: np.inf for k in scores}
