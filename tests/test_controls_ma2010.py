@@ -220,7 +220,7 @@ def sec7_4_measurements(ours: str = "shaky", rivals: str = "examples") -> dict:
     )
     full = min(m.duration for motions in out.values() for m in motions)
     table = pd.DataFrame(sequence_rows(out, examples, ref, full))
-    return comparison_measurements(table, out, full, len(examples), ref.held_out_pose_distance, settings)
+    return comparison_measurements(table, out, full, len(examples), ref, settings)
 
 
 CONTROLS = {

@@ -499,6 +499,23 @@ def test_sequences_cover_the_seconds_with_the_same_draws():
     np.testing.assert_array_equal(covered.root_pos[: short.n_frames], short.root_pos)
 
 
+def test_sec7_4_pose_cause_class():
+    """Ours outside the examples' range on the pose score: the data when its excess stays within
+    what one held-out example alone shows over the examples' mean, the method beyond it; nothing
+    when ours is inside."""
+    from motionvar.ma2010.claims import _pose_cause
+
+    def m(excess, inside=False):
+        return {
+            "natural": {"ours": {"pose_excess_vs_held_out": inside, "jerk_vs_examples": True}},
+            "scores": {"ours": {"pose_excess_vs_held_out": excess}},
+            "held_out_pose_spread": 0.1,
+        }
+
+    assert "by the data" in _pose_cause(m(0.08)) and "by the method" in _pose_cause(m(0.15))
+    assert _pose_cause(m(0.0, inside=True)) == ""
+
+
 def test_sec7_4_pose_score_does_not_reward_copying():
     """Sec. 7.4: the distance to the example poses counts only beyond a held-out example's, so a
     copy of an example and a new walker as close as a held-out one both score 0; farther poses

@@ -356,6 +356,19 @@ def _score_text(m: Measurements, method: str, keys) -> str:
     )
 
 
+def _pose_cause(m: Measurements) -> str:
+    """When ours lies outside the examples' range on the pose score: its cause class, by whether
+    ours' excess stays within the reference's own spread (one held-out example against their
+    mean: the data, too few example cycles to set the reference) or goes beyond it (the method);
+    a clause of the note."""
+    if "pose_excess_vs_held_out" not in _outside(m, "ours"):
+        return ""
+    excess, spread = m["scores"]["ours"]["pose_excess_vs_held_out"], m["held_out_pose_spread"]
+    if excess <= spread:
+        return f"; pose score outside by the data (excess {excess:.3g}, one held-out example alone {spread:.3g})"
+    return f"; pose score outside by the method (excess {excess:.3g}, any held-out example at most {spread:.3g})"
+
+
 def _ours_natural_and_varied(m: Measurements) -> Judgement:
     """Sec. 7.4, ours: its long sequences are natural (within the examples' range on every score)
     and differ from one another (variation between them above :data:`NO_VARIATION_CM`, which RBF
@@ -374,7 +387,7 @@ def _ours_natural_and_varied(m: Measurements) -> Judgement:
         + ", ".join(f"{m['labels'][x]} {m['variation_cm'][x]:.2g} cm" for x in still)
         + ")",
         note=f"{_sec7_4_note(m)} Varies = more than {NO_VARIATION_CM:g} cm between its sequences; ours draws xi once "
-        f"per {m['xi_per']}, from the cycles nearest the median stride, one per subject (Fig. 1's five).",
+        f"per {m['xi_per']}, from the cycles nearest the median stride, one per subject{_pose_cause(m)}.",
         value=n_in / n,
         bound=1.0,
         unit="share",

@@ -303,19 +303,23 @@ class NaturalnessReference:
     contact_height: float
     acceleration_threshold: float
     held_out_pose_distance: float
+    held_out_pose_spread: float
 
     @classmethod
     def from_examples(
         cls, motions: Sequence[Motion], solver: RootSolver, contact_height: float, threshold_factor: float
     ) -> "NaturalnessReference":
         """From two or more (root-solved) example motions: their poses, their feet's planted
-        heights, ``threshold_factor`` times the largest joint acceleration in them, and the
-        held-out pose distance."""
+        heights, ``threshold_factor`` times the largest joint acceleration in them, the
+        held-out pose distance (the mean over examples) and its spread (the largest log-ratio
+        of one example's held-out distance to that mean: how far the reference itself moves
+        with the example left out)."""
         positions = [m.positions() for m in motions]
         foot_joints = np.asarray(solver.feet).reshape(-1)
         features = [pose_features(p) for p in positions]
         heights = np.concatenate([p[:, foot_joints, 1] for p in positions])
         peak = max(float(peak_acceleration(p, m.fps).max()) for p, m in zip(positions, motions))
+        held_out = held_out_pose_distances(features)
         return cls(
             np.concatenate(features),
             solver,
@@ -323,18 +327,24 @@ class NaturalnessReference:
             np.percentile(heights, 5, axis=0),
             contact_height,
             threshold_factor * peak,
-            held_out_pose_distance(features),
+            float(held_out.mean()),
+            float(np.log(held_out.max() / held_out.mean())),
         )
 
 
-def held_out_pose_distance(examples: Sequence[np.ndarray]) -> float:
-    """How far a new walker's poses stand from the examples': the mean over examples of each
-    one's mean nearest-pose distance (cm, RMS per joint) to the poses of the others (pose
-    features, :func:`..metrics.pose_distance.pose_features`; two or more examples)."""
+def held_out_pose_distances(examples: Sequence[np.ndarray]) -> np.ndarray:
+    """Each example's mean nearest-pose distance (cm, RMS per joint) to the poses of the others
+    (pose features, :func:`..metrics.pose_distance.pose_features`; two or more examples)."""
     if len(examples) < 2:
         raise ValueError(f"held_out_pose_distance: need poses of 2 or more examples; got {len(examples)}")
     others = [np.concatenate([e for j, e in enumerate(examples) if j != i]) for i in range(len(examples))]
-    return float(np.mean([nearest_pose_distance(e, o).mean() for e, o in zip(examples, others)]))
+    return np.array([nearest_pose_distance(e, o).mean() for e, o in zip(examples, others)])
+
+
+def held_out_pose_distance(examples: Sequence[np.ndarray]) -> float:
+    """How far a new walker's poses stand from the examples': the mean over examples of
+    :func:`held_out_pose_distances`."""
+    return float(np.mean(held_out_pose_distances(examples)))
 
 
 NATURALNESS_MEASURES = (

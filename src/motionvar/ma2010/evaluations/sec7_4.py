@@ -98,7 +98,7 @@ def comparison_measurements(
     out: dict[str, list[Motion]],
     full: float,
     n_examples: int,
-    held_out_pose_cm: float,
+    ref: NaturalnessReference,
     settings: Ma2010Settings,
 ) -> dict:
     """What Sec. 7.4's claims are judged on, from the table (:func:`sequence_rows`): every method's
@@ -109,7 +109,7 @@ def comparison_measurements(
     as natural as every rival (``ours_best``: RBF and Kriging included) and as every rival that varies
     (``ours_best_varying``), the best rival per score, the labels and families, the methods whose
     sequences stopped before ``full`` s (the shortest one's length), the number of example cycles,
-    the held-out pose distance (cm), and the settings of ours (xi draws, transition landing) and of
+    the held-out pose distance (cm) and its spread over the examples (``ref``), and the settings of ours (xi draws, transition landing) and of
     the swept rivals."""
     means = table.groupby("method", sort=False).mean(numeric_only=True)
     examples = table[table["method"] == "examples"]
@@ -132,7 +132,8 @@ def comparison_measurements(
         "score_labels": dict(NATURALNESS_SCORES),
         "diverged_s": {m: min(x.duration for x in out[m]) for m in labels if any(x.duration < full for x in out[m])},
         "examples": n_examples,
-        "held_out_pose_cm": held_out_pose_cm,
+        "held_out_pose_cm": ref.held_out_pose_distance,
+        "held_out_pose_spread": ref.held_out_pose_spread,
         "xi_per": settings.comparison_xi,
         "landing": settings.comparison_landing,
         "perlin_amplitude_sweep_rad": list(settings.perlin_amplitude_sweep_rad),
@@ -184,7 +185,7 @@ def sec7_4_comparison(walks: WalkCycles, settings: Ma2010Settings, threads: int 
         "sweeps": sweeps_text(settings),
         "sequences": out,
     }
-    measurements = comparison_measurements(table, out, full, len(near), ref.held_out_pose_distance, settings)
+    measurements = comparison_measurements(table, out, full, len(near), ref, settings)
     return EvaluationResult(table, judge_claims(CLAIMS, "ma2010_sec7_4", measurements), figure, measurements)
 
 
