@@ -25,12 +25,19 @@ class BasisSettings(Settings):
         chooses K = 10 to 25).
     min_relative_drop: cut-off rule: K is the smallest candidate from which on every next one
         lowers the joint-space RMSE by no more than this fraction per added basis function
-        (the thesis picks "the cut-off point" without a number)."""
+        (the thesis picks "the cut-off point" without a number); the K of the models.
+    claim_rule: what Fig. 3.9's complex-motion claim compares: equal_error (the K each primitive
+        needs to reach each of ``equal_error_cm``: the thesis' "require more basis functions to
+        achieve the same reconstruction error") or relative_drop (the cut-off rule's K, which
+        mostly finds where a curve meets its noise floor).
+    equal_error_cm: the joint-space RMSEs (cm) of ``claim_rule: equal_error``."""
 
     SECTION = "fda.basis"
 
     n_basis: tuple[int, ...] = (5, 6, 8, 10, 12, 15, 20, 25, 30)
     min_relative_drop: float = 0.05
+    claim_rule: str = "equal_error"
+    equal_error_cm: tuple[float, ...] = (0.25, 0.5, 1.0)
 
 
 @dataclass(frozen=True)

@@ -20,14 +20,20 @@ def evaluate_fig3_9(rmse: pd.DataFrame, settings: FdaSettings) -> EvaluationResu
     (columns primitive, behaviour, n_clips, canonical_frames, n_basis, rmse_cm, chosen) made
     with ``settings.basis``.
 
-    Table: the per-primitive rows, then per behaviour the RMSE pooled over its primitives'
-    clips and frames (primitive "(all)"). Figure: ``pooled`` (behaviour, n_basis,
+    Table: the per-primitive rows (``chosen``: the cut-off rule's K; ``first_within_<t>_cm``: the
+    first K within each of ``settings.basis.equal_error_cm``), then per behaviour the RMSE pooled
+    over its primitives' clips and frames (primitive "(all)"). Figure: ``pooled`` (behaviour, n_basis,
     rmse_cm), ``per_primitive`` (the input rows), ``min_relative_drop``. Measurements
     (:func:`fig3_9_measurements`): the pooled RMSE per behaviour and the per-primitive curves
     with their chosen K, judged in :mod:`motionvar.du2022.claims`; the complex-motion claim
     compares ``settings.reconstruction.pick_primitive`` with the other Fig. 3.10 primitives
-    (``settings.reconstruction.primitives``; Table 3.1: walk leftStance and two-hand picking reach)."""
-    table = rmse.copy()
+    (``settings.reconstruction.primitives``; Table 3.1: walk leftStance and two-hand picking reach)
+    by ``settings.basis.claim_rule``."""
+    table = rmse.sort_values(["primitive", "n_basis"]).copy()
+    # the equal-error rule beside the cut-off rule's chosen K: the first K within each RMSE
+    for t in settings.basis.equal_error_cm:
+        within = table["rmse_cm"] <= t
+        table[f"first_within_{t:g}_cm"] = within & (within.groupby(table["primitive"]).cumsum() == 1)
 
     # per behaviour: RMSE pooled over its primitives' clips and frames
     table["weight"] = table["n_clips"] * table["canonical_frames"]
@@ -35,13 +41,18 @@ def evaluate_fig3_9(rmse: pd.DataFrame, settings: FdaSettings) -> EvaluationResu
     pooled = table.groupby(["behaviour", "n_basis"])[["sq", "weight"]].sum()
     pooled = np.sqrt(pooled["sq"] / pooled["weight"]).rename("rmse_cm").reset_index()
     table = table.drop(columns=["weight", "sq"])
-    behaviour_rows = pooled.assign(primitive="(all)", chosen=False)
+    behaviour_rows = pooled.assign(primitive="(all)", chosen=False).assign(
+        **{c: False for c in table.columns if c.startswith("first_within_")}
+    )
     out = pd.concat([table, behaviour_rows], ignore_index=True)
 
     figure = {"pooled": pooled, "per_primitive": table, "min_relative_drop": settings.basis.min_relative_drop}
     rec = settings.reconstruction
     simple = [p for p in rec.primitives if p != rec.pick_primitive]
-    measurements = fig3_9_measurements(pooled, table, simple, rec.pick_primitive)
+    measurements = fig3_9_measurements(pooled, table, simple, rec.pick_primitive) | {
+        "claim_rule": settings.basis.claim_rule,
+        "equal_error_cm": [float(t) for t in settings.basis.equal_error_cm],
+    }
     return EvaluationResult(out, judge_claims(CLAIMS, "du2022_fig3_9", measurements), figure, measurements)
 
 
