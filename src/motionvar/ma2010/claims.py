@@ -138,7 +138,8 @@ def _failure_causes(m: Measurements) -> str:
         return ""
     total = sum(n for n, _ in causes)
     parts = ", ".join(f"{n} {CAUSE_TEXT[k]}" for n, k in causes)
-    return f" Cause of the {total} cycles above 1.2 cm (ma2010 fig6.failure_causes): {parts}."
+    cycles = "the cycle" if total == 1 else f"the {total} cycles"
+    return f" Cause of {cycles} above 1.2 cm (ma2010 fig6.failure_causes): {parts}."
 
 
 def _loo_stride(m: Measurements) -> Judgement:
