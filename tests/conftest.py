@@ -33,14 +33,6 @@ def run_snakemake(*args, cwd, timeout=900, env=None):
     )
 
 
-def pytest_collection_modifyitems(config, items):
-    """The tests marked ``e2e`` or ``long_fixture`` (Snakemake runs, a fresh install, the
-    five-seed realism tables: a minute or more each) run first. pytest-xdist hands out modules
-    in collection order, so these start at once and the short tests fill the cores beside them,
-    instead of one process finishing a long module alone at the end."""
-    items.sort(key=lambda item: not (item.get_closest_marker("e2e") or item.get_closest_marker("long_fixture")))
-
-
 @pytest.fixture(scope="session")
 def ci_run(tmp_path_factory):
     """(working directory, wall s, CPU s of the process tree, CompletedProcess) of one local

@@ -25,8 +25,6 @@ from motionvar.synth import (
 )
 from motionvar.synth.dataset import REACH_REGIONS
 
-pytestmark = pytest.mark.long_fixture
-
 SEEDS = range(5)
 CI_SUBJECTS = 4  # config/ci.yaml
 # the statistics that need more subjects or reaches than the CI size has (realism.min_subjects,
