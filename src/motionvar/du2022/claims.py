@@ -78,9 +78,10 @@ def _complex_motions_need_more_basis(m: Measurements) -> Judgement:
             measured="-",
             note=f"Fig. 3.9 has no chosen K for {hard!r} or for any of {list(m['simple'])} (config fda.behaviours).",
         )
-    if m["claim_rule"] == "equal_error":
-        return _more_basis_at_equal_error(m, simple)
-    return _more_basis_by_cutoff(m, simple)
+    rules = {"equal_error": _more_basis_at_equal_error, "relative_drop": _more_basis_by_cutoff}
+    if m["claim_rule"] not in rules:
+        raise ValueError(f"fda.basis.claim_rule must be one of {list(rules)}; got {m['claim_rule']!r}")
+    return rules[m["claim_rule"]](m, simple)
 
 
 def _more_basis_at_equal_error(m: Measurements, simple: Sequence[str]) -> Judgement:

@@ -90,10 +90,11 @@ def covering(
 ) -> Motion:
     """The first ``seconds`` of ``make(n_clips, rng)``; when that motion ends earlier (its cycles
     shorter than the examples' mean, e.g. a sampled walker who steps faster), made again from
-    the same draws with twice the cycles until it lasts (at most ``max_doublings`` times): the
-    same sequence, longer, since the draws for n cycles are the first of those for more, never
-    a fresh draw that would favour slow walkers. ``rng`` ends as the last ``make`` left it. A
-    motion still short after that is returned as it is (a sequence that broke down)."""
+    the generator's same state with twice the cycles until it lasts (at most ``max_doublings``
+    times), never from fresh draws, which would favour slow walkers: with xi drawn once per
+    sequence (ours' default) the same sequence, longer; per cycle, the same cycle lengths.
+    ``rng`` ends as the last ``make`` left it. A motion still short after that is returned as it
+    is (a sequence that broke down)."""
     start = copy.deepcopy(rng)
     motion = make(n_clips, rng)
     for _ in range(max_doublings):

@@ -37,6 +37,8 @@ from __future__ import annotations
 
 import torch
 
+from .settings import CvaeSettings
+
 CONTENT_REDUCTIONS = ("mean", "sum")
 
 
@@ -106,7 +108,7 @@ def style_loss(
     alpha: float,
     norm: str,
     gram_reduce: str,
-    target: str = "batch_mean",
+    target: str = CvaeSettings.style_target,
 ) -> torch.Tensor:
     """Eq. 5.10: alpha ||Gram(decoder(z)) - Gram(y_s)||; recon_maps (..., K, T) decoded
     feature maps, style_maps (K, S) the encoded style example, ``norm`` frobenius (as
