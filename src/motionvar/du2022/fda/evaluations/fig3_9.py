@@ -23,7 +23,7 @@ def evaluate_fig3_9(rmse: pd.DataFrame, settings: FdaSettings) -> EvaluationResu
     Table: the per-primitive rows (``chosen``: the cut-off rule's K; ``first_within_<t>_cm``: the
     first K within each of ``settings.basis.equal_error_cm``), then per behaviour the RMSE pooled
     over its primitives' clips and frames (primitive "(all)"). Figure: ``pooled`` (behaviour, n_basis,
-    rmse_cm), ``per_primitive`` (the input rows), ``min_relative_drop``. Measurements
+    rmse_cm), ``per_primitive`` (the input rows), ``min_relative_drop``, ``equal_error_cm``. Measurements
     (:func:`fig3_9_measurements`): the pooled RMSE per behaviour and the per-primitive curves
     with their chosen K, judged in :mod:`motionvar.du2022.claims`; the complex-motion claim
     compares ``settings.reconstruction.pick_primitive`` with the other Fig. 3.10 primitives
@@ -46,7 +46,12 @@ def evaluate_fig3_9(rmse: pd.DataFrame, settings: FdaSettings) -> EvaluationResu
     )
     out = pd.concat([table, behaviour_rows], ignore_index=True)
 
-    figure = {"pooled": pooled, "per_primitive": table, "min_relative_drop": settings.basis.min_relative_drop}
+    figure = {
+        "pooled": pooled,
+        "per_primitive": table,
+        "min_relative_drop": settings.basis.min_relative_drop,
+        "equal_error_cm": list(settings.basis.equal_error_cm),
+    }
     rec = settings.reconstruction
     simple = [p for p in rec.primitives if p != rec.pick_primitive]
     measurements = fig3_9_measurements(pooled, table, simple, rec.pick_primitive) | {
