@@ -85,7 +85,7 @@ def _fig3_10(errors: dict[tuple[str, str], tuple[list[float], list[float]]]) -> 
         for (p, m), (feature, observation) in errors.items()
         for d, f, o in zip(DIMS, feature, observation)
     ]
-    return fig3_10_measurements(pd.DataFrame(rows), PICK)
+    return fig3_10_measurements(pd.DataFrame(rows), PICK, "normalized_fpca")
 
 
 def _falling(start: float) -> list[float]:

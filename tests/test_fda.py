@@ -25,6 +25,7 @@ from motionvar.du2022.fda import (
     FunctionalMotions,
     NormalizedFPCA,
     ObservationObjective,
+    RootScaledFPCA,
     TopEigenvectors,
     WeightedFPCA,
     align_quaternion_signs,
@@ -384,6 +385,24 @@ def test_observation_objective_scatter_path_and_constant_functions():
     assert np.all(np.isfinite(model.function_weights_)) and model.loss_ <= model.loss_raw_ + 1e-9
 
 
+def test_normalized_fpca_variants(data, tmp_path):
+    """Normalized FPCA's SD floor scales functions that hardly move as if they moved that much
+    (the z-score as written gives them up to 1 / their SD); root-scaled FPCA divides only the root
+    translation by its largest absolute value, as the author's pipeline."""
+    fd, _, _ = data
+    sd = functional_std(fd)
+    floor = float(np.quantile(sd[sd > 0], 0.5))
+    written, floored = NormalizedFPCA(3).fit(fd), NormalizedFPCA(3, sd_floor=floor).fit(fd)
+    np.testing.assert_allclose(floored.function_weights_, 1.0 / np.maximum(sd, floor))
+    assert written.function_weights_.max() > floored.function_weights_.max() == pytest.approx(1.0 / floor)
+    floored.save(tmp_path / "n")
+    assert FPCA.load(tmp_path / "n").sd_floor == floor
+    root = RootScaledFPCA(3).fit(fd)
+    values = np.einsum("tk,nkd->ntd", fd.basis.design_frames(fd.n_frames), fd.coefs[:, :, :3])
+    np.testing.assert_allclose(root.function_weights_[:3], 1.0 / np.abs(values).max(axis=(0, 1)))
+    assert np.all(root.function_weights_[3:] == 1.0)
+
+
 def test_nested_reconstruction_and_weighted_fpca(data):
     fd, _, _ = data
     big = FPCA(8).fit(fd)
@@ -662,7 +681,7 @@ def test_basis_sizes_and_fig3_9(canonical_dataset):
 
 @pytest.fixture(scope="module")
 def fda_curves(canonical_dataset):
-    """The Fig. 3.10-3.11 measurements of both primitives, in two parts each as the pipeline."""
+    """The Fig. 3.10-3.11 measurements of both primitives, in three parts each as the pipeline."""
     settings = FdaSettings.from_dict(
         {
             "seed": 0,
@@ -675,7 +694,11 @@ def fda_curves(canonical_dataset):
     out = []
     for primitive in ("walk_leftStance", "pick_reach"):
         fd, meta = functional_primitive(canonical_dataset, primitive, 6)
-        for methods in (["fpca", "normalized_fpca", "sfpca"], ["gplvm"]):
+        for methods in (
+            ["fpca", "normalized_fpca", "sfpca"],
+            ["gplvm"],
+            ["normalized_fpca_floored", "root_scaled_fpca"],
+        ):
             out.append(reconstruction_curves(fd, meta["variant"], primitive, methods, settings))
     return out
 
@@ -688,9 +711,16 @@ def test_reconstruction_curves(fda_curves):
     for method in z["methods"]:
         assert z[f"{method}/feature_error"].shape == (2,) and z[f"{method}/latent"].shape == (24, 3)
     assert np.all(np.diff(z["fpca/feature_error"]) < 0)
-    assert str(fda_curves[3]["gplvm/info"][0]).split()[1] == "it,"
+    assert str(fda_curves[4]["gplvm/info"][0]).split()[1] == "it,"
     table = curves_table(fda_curves)
-    assert len(table) == 2 * 4 * 2 and set(table["method"]) == {"fpca", "normalized_fpca", "sfpca", "gplvm"}
+    assert len(table) == 2 * 6 * 2 and set(table["method"]) == {
+        "fpca",
+        "normalized_fpca",
+        "sfpca",
+        "gplvm",
+        "normalized_fpca_floored",
+        "root_scaled_fpca",
+    }
     fd = FunctionalMotions.from_motions(make_clips(4)[0], n_basis=6)
     with pytest.raises(ValueError, match="dims: none <= 3"):
         tiny = FdaSettings.from_dict({"reconstruction": {"dims": [5]}, "latent": {"n_components": 2}})
@@ -699,7 +729,22 @@ def test_reconstruction_curves(fda_curves):
 
 def test_fig3_10(fda_curves):
     result = evaluate_fig3_10(fda_curves, FdaSettings())
-    assert len(result.table) == 16 and "fit_seconds" in result.table
+    assert len(result.table) == 24 and "fit_seconds" in result.table  # 2 primitives x 6 methods x 2 dims
+    # normalized FPCA is the variant of fda.reconstruction.normalized_variant; every variant is drawn
+    assert result.figure["methods"][-2:] == ["normalized_fpca_floored", "root_scaled_fpca"]
+    assert "z-score with the SD floored" in result.claims[2].note
+    assert set(result.measurements["normalized_variants"]) == {
+        "normalized_fpca",
+        "normalized_fpca_floored",
+        "root_scaled_fpca",
+    }
+    as_written = evaluate_fig3_10(
+        fda_curves, FdaSettings.from_dict({"reconstruction": {"normalized_variant": "zscore"}})
+    )
+    below = as_written.measurements["normalized_variants"]["normalized_fpca"][0]
+    assert as_written.claims[2].measured.startswith(
+        f"pick_reach: normalized FPCA (z-score as written) < FPCA at {below}/"
+    )
     ids = [c.claim_id.split(".")[-1] for c in result.claims]
     assert ids == [
         "fpca_lowest_feature_error",
@@ -717,7 +762,7 @@ def test_fig3_10(fda_curves):
     for c in result.claims:
         check_value_bound(c)
     walk_only = FdaSettings.from_dict({"reconstruction": {"primitives": ["walk_leftStance"]}})
-    no_pick = evaluate_fig3_10(fda_curves[:2], walk_only)  # the normalized-FPCA claim is about picking
+    no_pick = evaluate_fig3_10(fda_curves[:3], walk_only)  # the normalized-FPCA claim is about picking
     assert [c.verdict == "not applicable" for c in no_pick.claims] == [False, False, True, False, False]
     assert "'pick_reach' is not among the reconstructed primitives" in no_pick.claims[2].note
     for c in no_pick.claims:
@@ -747,7 +792,7 @@ def _fig3_10_claims(sfpca_lowest: dict[str, list[bool]], nfpca_below: list[bool]
                 }
                 for k, v in errors.items()
             ]
-    m = fig3_10_measurements(pd.DataFrame(rows), "pick_reach")
+    m = fig3_10_measurements(pd.DataFrame(rows), "pick_reach", "normalized_fpca")
     return {c.claim_id.split(".")[-1]: c for c in judge_claims(CLAIMS, "du2022_fig3_10", m)}
 
 
@@ -777,7 +822,7 @@ def test_fig3_11(fda_curves):
     assert list(table.columns) == ["primitive", "method", "latent_dim", "n_clips", "silhouette", "knn3_accuracy"]
     assert len(table) == 8 and table["latent_dim"].eq(3).all()
     for z in fda_curves:  # the measures of the table are those of the latent coordinates
-        for method in z["methods"]:
+        for method in [m for m in z["methods"] if m in set(table["method"])]:  # the four methods of Fig. 3.11
             row = table[(table["primitive"] == str(z["primitive"])) & (table["method"] == method)].iloc[0]
             sep = latent_separation(z[f"{method}/latent"], z["labels"], 3)
             assert row["silhouette"] == sep["silhouette"] and row["knn3_accuracy"] == sep["knn_accuracy"]

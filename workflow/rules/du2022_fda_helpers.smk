@@ -2,9 +2,14 @@
 # a rule file that defines functions).
 
 FDA = "results/{dataset}/models/du2022_fda"
-# the curves of one primitive are computed in two jobs that can run side by side (the methods
-# of motionvar.du2022.fda.evaluations.curves.METHODS)
-FDA_PARTS = {"pca": ["fpca", "normalized_fpca", "sfpca"], "gplvm": ["gplvm"]}
+# the curves of one primitive are computed in jobs that can run side by side (the methods of
+# motionvar.du2022.fda.evaluations.curves.METHODS, and the other normalized FPCA variants of
+# curves.NORMALIZED_METHODS, seconds where the others take minutes)
+FDA_PARTS = {
+    "pca": ["fpca", "normalized_fpca", "sfpca"],
+    "gplvm": ["gplvm"],
+    "scaled": ["normalized_fpca_floored", "root_scaled_fpca"],
+}
 # SFPCA models at Table 3.1's reference dimension, one per primitive (rule du2022_fda_sfpca)
 FDA_SFPCA = f"{FDA}/sfpca"
 

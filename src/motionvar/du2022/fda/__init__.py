@@ -23,7 +23,7 @@ API:
   joint 0's being the root orientation); per-clip bone offsets for forward kinematics;
   ``from_motions``, ``values``, ``motion_arrays``, ``positions`` (FK), ``to_motions``,
   ``subset``, ``with_coefs``. :func:`bspline_fit_rmse`: joint-space RMSE of the fit.
-- :class:`FPCA`, :class:`NormalizedFPCA`, :class:`SFPCA`, :class:`WeightedFPCA` (given
+- :class:`FPCA`, :class:`NormalizedFPCA`, :class:`RootScaledFPCA`, :class:`SFPCA`, :class:`WeightedFPCA` (given
   weights), sklearn-style: ``fit(fd)``, ``transform(fd or coefs) -> (N, n)``,
   ``inverse_transform(z) -> (N, K, D)``, ``reconstruct(fd, n_components=None)`` (the
   eigenfunctions are nested: one fit serves every smaller dimension),
@@ -58,7 +58,7 @@ from ...core.lazy import lazy_exports
 _EXPORTS = {
     "...models.bayesian_gplvm": ["BayesianGPLVM"],
     ".bspline": ["BSplineBasis", "choose_n_basis", "frame_times"],
-    ".fpca": ["FPCA", "NormalizedFPCA", "WeightedFPCA", "functional_std", "zscore_weights"],
+    ".fpca": ["FPCA", "NormalizedFPCA", "RootScaledFPCA", "WeightedFPCA", "functional_std", "zscore_weights"],
     ".functional_gplvm": ["FunctionalGPLVM"],
     ".functions": ["FunctionalMotions", "FunctionLayout", "align_quaternion_signs", "bspline_fit_rmse"],
     ".primitives": [
@@ -82,6 +82,7 @@ __all__ = [
     "FunctionalGPLVM",
     "FunctionalMotions",
     "NormalizedFPCA",
+    "RootScaledFPCA",
     "ObservationObjective",
     "SFPCA",
     "TopEigenvectors",

@@ -18,12 +18,16 @@ METHOD_LABELS = {
     "normalized_fpca": "normalized FPCA",
     "sfpca": "SFPCA",
     "gplvm": "Bayesian GPLVM",
+    "normalized_fpca_floored": "normalized FPCA, SD floored",
+    "root_scaled_fpca": "root-scaled FPCA (author's code)",
 }
 METHOD_STYLES = {
     "fpca": dict(color="tab:blue", marker="o"),
     "normalized_fpca": dict(color="tab:orange", marker="s"),
     "sfpca": dict(color="tab:green", marker="^"),
     "gplvm": dict(color="tab:red", marker="D"),
+    "normalized_fpca_floored": dict(color="tab:orange", marker="v", ls="--"),
+    "root_scaled_fpca": dict(color="tab:purple", marker="x", ls=":"),
 }
 
 

@@ -277,11 +277,38 @@ class FPCA:
 @register_saved
 class NormalizedFPCA(FPCA):
     """FPCA of z-scored functions (Sec. 3.3.5: "normalizes the input features to have 0
-    mean and 1 standard deviation before applying FPCA"): w_d = 1 / sigma_d with sigma_d
-    the functional standard deviation of function d (:func:`functional_std`)."""
+    mean and 1 standard deviation before applying FPCA"): w_d = 1 / max(sigma_d, ``sd_floor``)
+    with sigma_d the functional standard deviation of function d (:func:`functional_std`).
+    ``sd_floor`` 0: the z-score as written (a function that never moves keeps weight 1); above
+    0, functions that hardly move are scaled as if they moved that much, instead of weights up
+    to 1e4 that blow their noise up to the scale of the motion."""
+
+    _SAVED_PARAMS = ("sd_floor",)
+
+    def __init__(self, n_components: int = 20, sd_floor: float = 0.0) -> None:
+        super().__init__(n_components)
+        self.sd_floor = sd_floor
 
     def _weights(self, X: FunctionalMotions) -> np.ndarray:
-        return zscore_weights(functional_std(X))
+        return zscore_weights(np.maximum(functional_std(X), self.sd_floor))
+
+    def _restore_params(self) -> None:
+        self.sd_floor = 0.0
+
+
+@register_saved
+class RootScaledFPCA(FPCA):
+    """FPCA with only the root translation scaled, as the author's pipeline prepares its data
+    (DeepMotionModeling ``motion_analysis/prepare_data.py: scale_root_channels``; DFKI's
+    ``scaled_fpca``): each root channel divided by its largest absolute value over the clips
+    and the canonical frames, the joint quaternions left as they are."""
+
+    def _weights(self, X: FunctionalMotions) -> np.ndarray:
+        values = np.einsum("tk,nkd->ntd", X.basis.design_frames(X.n_frames), X.coefs[:, :, :3])
+        largest = np.abs(values).max(axis=(0, 1))
+        weights = np.ones(X.layout.n_functions)
+        weights[:3] = 1.0 / np.where(largest > 0, largest, 1.0)
+        return weights
 
 
 @register_saved

@@ -48,13 +48,23 @@ class ReconstructionSettings(Settings):
     pick_primitive: the manipulation primitive of the pick claims (one of ``primitives``); Fig. 3.9
         compares its chosen basis size with those of the other ``primitives`` (Table 3.1: two-hand
         picking reach 25, walk leftStance 10).
-    dims: numbers of latent dimensions evaluated (capped at clips - 1)."""
+    dims: numbers of latent dimensions evaluated (capped at clips - 1).
+    normalized_variant: which normalized FPCA the Fig. 3.10 claims judge (all three are drawn):
+        zscore_floored (the thesis' "0 mean and 1 standard deviation", each function's SD
+        floored at ``normalized_sd_floor``), zscore (as written, weights up to 1e4 for functions
+        that hardly move) or root_scaled (the author's pipeline: only the root translation
+        scaled).
+    normalized_sd_floor: the SD floor of zscore_floored: the SD of a unit-quaternion component
+        whose rotation turns by 0.5 degrees (sin(0.25 deg)), the realism table's near-static
+        channel (realism.near_static_deg)."""
 
     SECTION = "fda.reconstruction"
 
     primitives: tuple[str, ...] = ("walk_leftStance", "pick_reach")
     pick_primitive: str = "pick_reach"
     dims: tuple[int, ...] = (1, 2, 3, 5, 8, 12, 20, 30, 40)
+    normalized_variant: str = "zscore_floored"
+    normalized_sd_floor: float = 0.004363
 
 
 @dataclass(frozen=True)

@@ -30,6 +30,12 @@ if TYPE_CHECKING:
 log = logging.getLogger(__name__)
 
 METHODS = ("fpca", "normalized_fpca", "sfpca", "gplvm")
+#: the normalized FPCA of each fda.reconstruction.normalized_variant (Fig. 3.10 only)
+NORMALIZED_METHODS = {
+    "zscore": "normalized_fpca",
+    "zscore_floored": "normalized_fpca_floored",
+    "root_scaled": "root_scaled_fpca",
+}
 
 
 def kmeans_labels(fd: FunctionalMotions, positions: np.ndarray, n_clusters: int, seed: int) -> np.ndarray:
@@ -95,7 +101,7 @@ def method_curves(
     are those of the original fit."""
     # the fitting classes (scikit-learn, scipy.optimize) are imported here: Fig. 3.10's
     # rule needs only curves_table
-    from ..fpca import FPCA, NormalizedFPCA
+    from ..fpca import FPCA, NormalizedFPCA, RootScaledFPCA
     from ..primitives import sfpca_for
     from .measures import feature_error, observation_error
 
@@ -106,10 +112,15 @@ def method_curves(
         return feature_error(fd, coefs), observation_error(fd, coefs, reference=reference)
 
     rows = []
-    if method in ("fpca", "normalized_fpca"):
+    linear = {
+        "fpca": FPCA,
+        "normalized_fpca": NormalizedFPCA,
+        "normalized_fpca_floored": lambda n: NormalizedFPCA(n, settings.reconstruction.normalized_sd_floor),
+        "root_scaled_fpca": RootScaledFPCA,
+    }
+    if method in linear:
         start = time.perf_counter()
-        cls = FPCA if method == "fpca" else NormalizedFPCA
-        model = cls(max(max(dims), latent_dim)).fit(fd)  # nested eigenfunctions: one fit serves every d
+        model = linear[method](max(max(dims), latent_dim)).fit(fd)  # nested eigenfunctions: one fit serves every d
         fit_s = time.perf_counter() - start
         for d in dims:
             rows.append((*errors(model.reconstruct(fd, d)), fit_s, ""))
