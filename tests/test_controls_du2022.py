@@ -294,6 +294,19 @@ def test_complex_picks_need_more_basis_functions():
     assert claim.verdict == "reproduced" and claim.value > 0, claim.measured
 
 
+def test_neutral_pose_sd_miss_names_its_cause():
+    """A neutral VAE whose pose_SD misses the training data's names the first step of the chain
+    that is already off: the autoencoder's round trip, else (the decoder at the posterior means
+    taken as its samples here) the VAE's fit."""
+    train = _clips(12, 10.0, 0)
+    judge = spec("du2022.table5_2.neutral_pose_sd_close_to_training").claim
+    by_fit = judge(_table5_2(train, train, {"neutral": (_shrunk(train, 0.8), train)}))
+    assert "by the VAE's fit at our budget" in by_fit.note and by_fit.verdict == "not reproduced"
+    by_autoencoder = judge(_table5_2(train, _shrunk(train, 0.8), {"neutral": (_shrunk(train, 0.8), train)}))
+    assert "by our autoencoder" in by_autoencoder.note and by_autoencoder.verdict == "partial"
+    assert "Missed" not in judge(_table5_2(train, train, {"neutral": (train, train)})).note
+
+
 def test_a_collapsed_model_makes_the_chapter_5_claims_not_testable():
     """A model using fewer than 2 latent dimensions leaves the claims that compare its samples
     not testable, with the reason in the note; the other claims are still judged."""

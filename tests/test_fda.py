@@ -733,6 +733,10 @@ def test_fig3_10(fda_curves):
     # normalized FPCA is the variant of fda.reconstruction.normalized_variant; every variant is drawn
     assert result.figure["methods"][-2:] == ["normalized_fpca_floored", "root_scaled_fpca"]
     assert "z-score with the SD floored" in result.claims[2].note
+    shares = [b / n for b, n in result.measurements["normalized_variants"].values()]
+    assert ("so the miss is not the normalisation's reading" in result.claims[2].note) == (
+        result.claims[2].verdict != "reproduced" and max(shares) < 0.5 + 1e-9
+    )
     assert set(result.measurements["normalized_variants"]) == {
         "normalized_fpca",
         "normalized_fpca_floored",
