@@ -47,6 +47,26 @@ def snakemake(work: Path, folder: Path, *args: str) -> subprocess.CompletedProce
     return subprocess.run(argv, cwd=work, capture_output=True, text=True, timeout=300)
 
 
+def test_through_the_default_profile_a_failed_rule_prints_its_line_once(tmp_path):
+    """Run as a user runs it (the default profile): the bad input's one line reaches the terminal
+    once, with no traceback; the traceback stays in the rule's log, which Snakemake names."""
+    write_bvh(tmp_path / "x.bvh", motion(), scale=CMU_UNIT_CM)
+    folder = bvh_folder(tmp_path / "caps", ["1.BVH,a,walk,x", "../x.bvh,a,walk,x"])
+    work = tmp_path / "work"
+    work.mkdir()
+    entry = {"source": "bvh", "path": str(folder), "unit_cm": CMU_UNIT_CM, "plausibility_check": False}
+    config = work / "mine.yaml"
+    config.write_text(yaml.safe_dump({"datasets": {"mine": entry}, "run_datasets": ["mine"]}))
+    argv = [sys.executable, "-m", "snakemake", "-s", str(ROOT / "Snakefile"), "-d", str(work), "--configfile"]
+    argv += [str(config), "--workflow-profile", str(ROOT / "profiles" / "default"), TARGET]
+    result = subprocess.run(argv, cwd=work, capture_output=True, text=True, timeout=300)
+    out = result.stdout + result.stderr
+    assert result.returncode == 1
+    assert sum("lies outside the dataset folder" in line for line in out.splitlines()) == 1, out[-3000:]
+    assert "Traceback" not in out and "results/mine/logs/data.log" in out
+    assert "Traceback" in (work / "results" / "mine" / "logs" / "data.log").read_text()
+
+
 def job_inputs(dry_run_output: str) -> set[str]:
     """The input files of the one job of a dry run's output."""
     lines = [line.strip() for line in dry_run_output.splitlines() if line.strip().startswith("input: ")]
