@@ -536,6 +536,35 @@ def test_dense_pick_segments_align_to_pick_reaches():
         dense_pick_segments(1, 0, 0)
 
 
+def test_fig4_12_halving_names_the_cause_of_a_miss():
+    """A primitive whose k-means / random median ratio misses 0.5 is named: too little power when
+    the paired bootstrap interval over its queries reaches 0.5, the method when it lies above."""
+    from motionvar.claims import judge_claims
+    from motionvar.du2022.claims import CLAIMS
+    from motionvar.du2022.graph.evaluations.fig4_12 import fig4_12_measurements, kmeans_ratio_intervals
+
+    rng = np.random.default_rng(0)
+    queries, rows = [], []
+    for primitive, n, spread in (("tight", 400, 0.05), ("few", 12, 0.6)):
+        random = rng.uniform(1.0, 2.0, n)
+        kmeans = random * 0.56 * np.exp(rng.normal(scale=spread, size=n))
+        for method, errors in (("kmeans", kmeans), ("random", random), ("brute_force", random * 0.1)):
+            queries.append(
+                pd.DataFrame(dict(primitive=primitive, kind="position", joint="hand", query=np.arange(n))).assign(
+                    method=method, beam=4 if method == "kmeans" else 0, selected=True, error=errors, n_evals=50
+                )
+            )
+            rows.append(dict(primitive=primitive, kind="position", method=method, median=np.median(errors), sd=0.1))
+    per_query = pd.concat(queries, ignore_index=True)
+    intervals = kmeans_ratio_intervals(per_query)
+    assert intervals[("tight", "position")][0] > 0.5 and intervals[("few", "position")][0] < 0.5
+    m = fig4_12_measurements(pd.DataFrame(rows), per_query)
+    claim = next(c for c in judge_claims(CLAIMS, "du2022_fig4_12", m) if c.claim_id.endswith("error_position"))
+    assert claim.verdict == "not reproduced" and "95 % interval" in claim.measured
+    assert "Missed by too little power (the bootstrap interval over the queries reaches 0.5): few" in claim.note
+    assert "by the method (its interval lies above 0.5): tight." in claim.note
+
+
 def test_fig4_12_verdicts_follow_the_numbers():
     from motionvar.claims import judge_claims
     from motionvar.du2022.claims import CLAIMS

@@ -767,8 +767,10 @@ def test_evaluate_table5_1(style_run, layout):
         "old",
         "row_minimum_at",
         "published_row_minimum_at",
+        "own_clips_row_minimum_at",
     ]
     assert list(t["model"]) == ["neutral", "proud", "old"] and list(t["published_row_minimum_at"]) == list(t["model"])
+    assert set(t["own_clips_row_minimum_at"]) <= {"neutral", "proud", "old"}
     assert t.loc[0, "style_example_clip"] == "mean of the neutral clips"
     assert (t[["neutral", "proud", "old"]].to_numpy() >= 0).all()
     (claim,) = result.claims

@@ -38,5 +38,6 @@ def style_evaluation_inputs(vae_primitives, cvae_primitives):
         vae_settings=style_vaes(vae_primitives, "settings"),
         cvaes=style_cvaes(cvae_primitives),
         cvae_settings=style_cvaes(cvae_primitives, "settings"),
+        cvae_histories=style_cvaes(cvae_primitives, "history"),
         joint_map=joint_map_input,
     )

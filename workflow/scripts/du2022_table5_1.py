@@ -3,6 +3,7 @@ between the samples of each model (neutral VAE, six CVAEs) and each style exampl
 
 
 def main(snakemake) -> None:
+    import pandas as pd
     from _rule import write_evaluation
     from _style import load_inputs, load_settings
 
@@ -12,7 +13,8 @@ def main(snakemake) -> None:
     dataset, layout, space = load_inputs(snakemake)
     neutral = load_vae(snakemake.input.vaes[0])
     cvaes = [load_vae(f) for f in snakemake.input.cvaes]
-    result = evaluate_table5_1(dataset, layout, space, neutral, cvaes, load_settings(snakemake))
+    histories = [pd.read_csv(f) for f in snakemake.input.cvae_histories]
+    result = evaluate_table5_1(dataset, layout, space, neutral, cvaes, load_settings(snakemake), histories)
     write_evaluation(snakemake, result, draw_table5_1, dpi=130)
 
 

@@ -4,6 +4,7 @@ and right stance."""
 
 
 def main(snakemake) -> None:
+    import pandas as pd
     from _rule import write_evaluation
     from _style import load_inputs, load_settings
 
@@ -12,7 +13,8 @@ def main(snakemake) -> None:
 
     dataset, layout, space = load_inputs(snakemake)
     models = [load_vae(f) for f in [*snakemake.input.vaes, *snakemake.input.cvaes]]
-    result = evaluate_table5_2(dataset, layout, space, models, load_settings(snakemake))
+    histories = [pd.read_csv(f) for f in snakemake.input.cvae_histories]
+    result = evaluate_table5_2(dataset, layout, space, models, load_settings(snakemake), histories)
     write_evaluation(snakemake, result, draw_table5_2, dpi=120)
 
 

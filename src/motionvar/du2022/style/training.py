@@ -519,3 +519,10 @@ def fit_style_cvae(
         + (", from the neutral VAE" if c.init_from_neutral else ", from fresh weights"),
     }
     return cvae, tuple(maps.shape[1:]), info, history
+
+
+def last_epoch_drop(history: pd.DataFrame, column: str = "style") -> float | None:
+    """How far ``column`` of a training history fell in the last epoch, relative to the epoch
+    before (0.05: 5 % lower; None with fewer than two epochs)."""
+    values = history[column].to_numpy(dtype=float)
+    return None if len(values) < 2 else float(1.0 - values[-1] / values[-2])

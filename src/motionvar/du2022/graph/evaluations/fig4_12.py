@@ -283,6 +283,45 @@ def _kmeans_evals(per_query: pd.DataFrame) -> tuple[dict | None, dict | None]:
     return nested(mean), nested(share)
 
 
+def kmeans_ratio_intervals(
+    per_query: pd.DataFrame, confidence: float = 0.95, resamples: int = 2000, seed: int = 0
+) -> dict[tuple[str, str], tuple[float, float]]:
+    """Per (primitive, constraint kind): the percentile bootstrap interval (``scipy.stats.bootstrap``,
+    paired: a resample draws whole queries) of the k-means tree's median error at the verdict
+    beam over random sampling's, the ratio Fig. 4.12's halving claims compare with 0.5."""
+    from scipy.stats import bootstrap
+
+    chosen = per_query[per_query["selected"]] if "selected" in per_query.columns else per_query
+    keys = [c for c in ("primitive", "kind", "joint", "query") if c in chosen.columns]
+    if not {"primitive", "kind", "error"} <= set(chosen.columns):
+        return {}
+    errors = chosen[chosen["method"].isin(["kmeans", "random"])].pivot_table(
+        index=keys, columns="method", values="error", sort=False
+    )
+    if not {"kmeans", "random"} <= set(errors.columns):
+        return {}
+
+    def ratio(km, rand, axis=-1):
+        return np.median(km, axis=axis) / np.median(rand, axis=axis)
+
+    out = {}
+    for (p, k), case in errors.dropna().groupby(level=["primitive", "kind"], sort=False):
+        if len(case) < 2:
+            continue
+        ci = bootstrap(
+            (case["kmeans"].to_numpy(), case["random"].to_numpy()),
+            ratio,
+            paired=True,
+            vectorized=True,
+            n_resamples=resamples,
+            confidence_level=confidence,
+            method="percentile",
+            rng=np.random.default_rng(seed),
+        ).confidence_interval
+        out[(str(p), str(k))] = (float(ci.low), float(ci.high))
+    return out
+
+
 def fig4_12_measurements(summary: pd.DataFrame, per_query: pd.DataFrame) -> dict[str, Any]:
     """What the Fig. 4.12 claims are judged on, from :func:`summarize_search` output (with a
     ``primitive`` column) and the per-query table: per (primitive, kind) case the median
@@ -291,7 +330,8 @@ def fig4_12_measurements(summary: pd.DataFrame, per_query: pd.DataFrame) -> dict
     beam and the kd-tree's beam at the k-means tree's budget, the mean evaluations of each
     method; the samples a tree holds (brute force's evaluations); and for the k-means tree
     at the verdict beam the number of queries, their share under the thesis' budget and
-    their mean evaluations, with the mean evaluations and the share per primitive and beam."""
+    their mean evaluations, with the mean evaluations and the share per primitive and beam; per
+    case the bootstrap interval of the k-means / random ratio (:func:`kmeans_ratio_intervals`)."""
     med, sd = _by_method(summary, "median"), _by_method(summary, "sd")
     km_summary = summary[summary["method"] == "kmeans"]
     by_beam = (
@@ -299,6 +339,7 @@ def fig4_12_measurements(summary: pd.DataFrame, per_query: pd.DataFrame) -> dict
         if "beam" in km_summary.columns
         else pd.DataFrame()
     )
+    intervals = kmeans_ratio_intervals(per_query)
     cases = []
     for p, k in med.index:
         row = by_beam.loc[(p, k)] if not by_beam.empty and (p, k) in by_beam.index else None
@@ -309,6 +350,7 @@ def fig4_12_measurements(summary: pd.DataFrame, per_query: pd.DataFrame) -> dict
                 "median": {str(meth): float(v) for meth, v in med.loc[(p, k)].items()},
                 "sd": {str(meth): float(v) for meth, v in sd.loc[(p, k)].items()},
                 "kmeans_by_beam": None if row is None else {str(b): float(v) for b, v in row.items()},
+                "kmeans_over_random_interval": intervals.get((str(p), str(k))),
             }
         )
     chosen = per_query[per_query["selected"]] if "selected" in per_query.columns else per_query

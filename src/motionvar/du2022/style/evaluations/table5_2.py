@@ -39,6 +39,7 @@ from ..model import FeatureSpace, SavedVAE, active_units, sample_features
 from ..networks import MotionVAE
 from ..published import diversity_tables
 from ..settings import StyleSettings
+from ..training import last_epoch_drop
 
 log = logging.getLogger(__name__)
 
@@ -119,6 +120,7 @@ def evaluate_table5_2(
     space: FeatureSpace,
     models: Sequence[SavedVAE],
     settings: StyleSettings,
+    histories: Sequence[pd.DataFrame] | None = None,
 ) -> EvaluationResult:
     """Diversity of each primitive of ``settings.style_primitives``: its neutral clips (on
     the ``settings.canonical_frames`` timeline), the same clips through the autoencoder and
@@ -135,9 +137,18 @@ def evaluate_table5_2(
     VAE's pose_SD within ``settings.pose_sd_tolerance`` of the training data's (half credit
     when only of the training data through the autoencoder); its step_SD below the training
     data's; every CVAE's pose_SD below the neutral VAE's (raw, as the thesis); each claim not
-    testable when a model it compares uses fewer than 2 latent dimensions."""
+    testable when a model it compares uses fewer than 2 latent dimensions. ``histories``: the
+    CVAEs' training histories, in the order of the CVAEs among ``models``, for how far each one's
+    style term still fell in its last epoch (a miss's cause class)."""
     table = diversity_table(dataset, layout, space, models, settings)
     measurements = table5_2_measurements(table, settings, training_regimes(models), models[0][0].latent)
+    if histories is not None:
+        cvaes = [info for *_, info in models if info.get("style") != "neutral"]
+        measurements["style_last_drop"] = {
+            f"{info['primitive']} {info['style']}": d
+            for info, h in zip(cvaes, histories, strict=True)
+            if (d := last_epoch_drop(h)) is not None
+        }
     claims = judge_claims(CLAIMS, "du2022_table5_2", measurements)
     return EvaluationResult(table.round(5), claims, {"table": table}, measurements)
 
