@@ -90,6 +90,74 @@ def test_every_paper_declares_its_evaluations_and_decides_from_the_data():
     assert not table.loc["du2022_fig4_10", "applicable"]
 
 
+def test_a_rig_without_hands_or_toes_leaves_out_what_needs_them():
+    """Evaluations that need the hands or toes a joint map leaves out are not applicable, with
+    the joints and the reason; the others are decided from the data as before."""
+    from motionvar.core import REQUIRED_JOINTS, cmu_joint_map
+    from motionvar.core.joint_map import JointMap
+
+    cmu = cmu_joint_map()
+    handless = JointMap({s: cmu.joints[s] for s in REQUIRED_JOINTS}, cmu.groups, origin="config/joint_maps/x.yaml")
+    assert handless.lacking == ("left_hand", "right_hand", "left_toe", "right_toe") and not handless.has("left_toe")
+    reqs = [
+        *ma2010_requirements(Ma2010Settings(walk_styles=("neutral",), walk_variants=("forward",))),
+        *style_requirements(
+            StyleSettings.from_dict(
+                {"styles": ["proud"], "vae_primitives": ["walk_leftStance"], "style_primitives": ["walk_leftStance"]}
+            ),
+            1,
+        ),
+        *fda_requirements(
+            FdaSettings.from_dict(
+                {"behaviours": ["walk"], "min_clips": 1, "reconstruction": {"primitives": ["walk_leftStance"]}}
+            )
+        ),
+    ]
+    meta = {"data": DATA, "prep": PREP}
+    full = applicability_table(reqs, meta, cmu).set_index("evaluation")
+    table = applicability_table(reqs, meta, handless).set_index("evaluation")
+    assert full.loc["ma2010_fig6", "applicable"] and not table.loc["ma2010_fig6", "applicable"]
+    assert table.loc["ma2010_fig6", "reason"] == (
+        "needs the rig's left_toe, right_toe, which the joint map (config/joint_maps/x.yaml) leaves out: Ma 2010's "
+        "footskate cleanup stands each foot on its ankle or its toe"
+    )
+    assert "left_hand, right_hand, left_toe, right_toe" in table.loc["du2022_table5_1", "reason"]
+    assert table.loc["du2022_fig3_10", "applicable"]  # functions of every joint the rig has
+    from motionvar.core import OPTIONAL_JOINTS
+    from motionvar.du2022.requirements import STYLE_JOINTS
+    from motionvar.du2022.style.features import FEATURE_JOINTS
+
+    assert STYLE_JOINTS.names == tuple(j for j in FEATURE_JOINTS if j in OPTIONAL_JOINTS)
+
+
+def test_a_model_per_person_counts_the_people_who_have_enough():
+    """Egges 2004 holds out clips per person: a person with one clip does not count towards
+    the people identification needs; holding out the end of each recording lets them count."""
+    rows = [("a1", "p1", "idle"), ("a2", "p1", "idle"), ("b1", "p2", "idle"), ("c1", "p3", "idle")]
+    data = _meta([(c, s, b, "genuine", "", "") for c, s, b in rows]).assign(n_frames="2400", fps="24")
+    by_clips = applicability_table(egges2004_requirements(Egges2004Settings()), {"data": data, "prep": data})
+    by_clips = by_clips.set_index("evaluation")
+    assert by_clips.loc["egges2004_speed", "applicable"]  # p1 has two clips
+    assert not by_clips.loc["egges2004_identification", "applicable"]
+    assert (
+        "(clips with behaviour idle, at least 2 of a subject), the dataset has 2"
+        in (by_clips.loc["egges2004_identification", "reason"])
+    )
+    by_time = applicability_table(
+        egges2004_requirements(Egges2004Settings(held_out_by="time")), {"data": data, "prep": data}
+    ).set_index("evaluation")
+    assert by_time["applicable"].all()  # 100 s recordings: a 20 s window in each held-out 30 %
+    short = data.assign(n_frames="1200")  # 50 s: the held-out 15 s hold no 20 s window
+    reason = (
+        applicability_table(
+            egges2004_requirements(Egges2004Settings(held_out_by="time")), {"data": short, "prep": short}
+        )
+        .set_index("evaluation")
+        .loc["egges2004_identification", "reason"]
+    )
+    assert "at least 66.6667 s long" in reason and "egges2004.identification.window_s" in reason
+
+
 def test_not_applicable_result_gives_each_claim_the_reason():
     specs = specs_of("egges2004_repetition")
     result = not_applicable_result(

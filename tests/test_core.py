@@ -198,3 +198,31 @@ def test_fixed_threads_sets_torch_and_blas_threads_and_restores_them():
         assert all(i["num_threads"] == 3 for i in threadpool_info())
     assert torch.get_num_threads() == before_torch
     assert [i["num_threads"] for i in threadpool_info()] == before_blas
+
+
+def test_end_site_positions_are_those_of_a_joint_at_the_end_site():
+    """An End Site's position (the joint's, plus its offset turned by the joint's global
+    rotation) equals the forward kinematics of the same skeleton with a joint added there; a
+    map without toe joints takes the ankles' End Sites as its toes."""
+    from motionvar.core import Skeleton
+    from motionvar.core.extremities import end_site_positions, foot_points
+
+    rng = np.random.default_rng(3)
+    sk = cmu_skeleton()
+    ankle = sk.index("LeftFoot")
+    sk = Skeleton(sk.names, sk.parents, sk.offsets, {**sk.end_sites, ankle: np.array([0.0, -6.0, 14.0])})
+    m = Motion(sk, rng.normal(size=(9, 3)), random_quats(rng, (9, sk.n_joints)), 60.0)
+    grown = Skeleton((*sk.names, "tip"), np.append(sk.parents, ankle), np.vstack([sk.offsets, [[0.0, -6.0, 14.0]]]))
+    tip = fk(np.concatenate([m.rotations, random_quats(rng, (9, 1))], axis=1), m.root_pos, grown.offsets, grown.parents)
+    assert np.allclose(end_site_positions(m, [ankle])[:, 0], tip[:, -1], atol=1e-9)
+    with pytest.raises(ValueError, match=r"joints \['Hips'\] have no End Site"):
+        end_site_positions(m, [0])
+    cmu = cmu_joint_map()
+    toeless = type(cmu)({k: v for k, v in cmu.joints.items() if not k.endswith("_toe")}, cmu.groups)
+    with pytest.raises(ValueError, match="no toe joints and the ankles .* have no End Site"):
+        foot_points(m, toeless)  # the right ankle has no End Site here
+    both = Skeleton(sk.names, sk.parents, sk.offsets, {**sk.end_sites, sk.index("RightFoot"): np.ones(3)})
+    m2 = Motion(both, m.root_pos, m.rotations, 60.0)
+    points = foot_points(m2, toeless)
+    assert points.shape == (9, 2, 2, 3) and np.allclose(points[:, 0, 1], tip[:, -1], atol=1e-9)
+    assert np.array_equal(foot_points(m, cmu)[:, 1, 1], m.positions()[:, sk.index("RightToeBase")])

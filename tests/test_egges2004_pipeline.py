@@ -22,7 +22,14 @@ from motionvar.egges2004.evaluations.fitting import FIGURE_BALANCE_S, fitting
 from motionvar.egges2004.evaluations.identification import binomial_power, identification
 from motionvar.egges2004.evaluations.repetition import repetition
 from motionvar.egges2004.evaluations.speed import speed
-from motionvar.egges2004.pipeline import fit_idle_model, idle_clips, model_recordings, split_clips
+from motionvar.egges2004.pipeline import (
+    clip_part,
+    fit_idle_model,
+    idle_clips,
+    model_recordings,
+    split_clips,
+    split_idle,
+)
 from motionvar.egges2004.settings import Egges2004Settings
 from motionvar.egges2004.storage import load_idle_model, save_idle_model
 from motionvar.io import load_dataset
@@ -100,9 +107,46 @@ def test_categories_match_the_truth_and_draw(fitted):
     assert isinstance(figures.draw_categories(result), Figure)
 
 
+def test_a_subject_with_too_few_clips_is_left_out_with_a_line(fitted, caplog):
+    """held_out_by clips: a subject with no more clips than held out is left out of the model,
+    named in the log; the others are split as before."""
+    _, dataset, *_ = fitted
+    clips = idle_clips(dataset, "prep")
+    first = next(iter(clips))
+    short = {s: (c[:1] if s == first else c) for s, c in clips.items()}
+    with caplog.at_level("WARNING"):
+        train, test = split_clips(short, 1)
+    assert first not in train and first not in test and set(train) == set(clips) - {first}
+    assert f"subject {first} left out of Egges 2004: 1 idle clip(s)" in caplog.text
+
+
+def test_time_split_holds_out_the_end_of_every_recording(fitted):
+    """held_out_by time: every recording's first 70 % trains and its last 30 % is held out, as
+    parts named <clip_id>[start:stop]; model_recordings finds the parts in the dataset again."""
+    _, dataset, *_ = fitted
+    clips = idle_clips(dataset, "prep")
+    settings = SETTINGS.replace(held_out_by="time", held_out_fraction=0.3)
+    train, test = split_idle(clips, settings)
+    assert set(train) == set(test) == set(clips)
+    for subject, rows in clips.items():
+        assert len(train[subject]) == len(test[subject]) == len(rows)
+        for (row, motion), (tr, tm), (te, em) in zip(rows, train[subject], test[subject]):
+            cut = motion.n_frames - round(0.3 * motion.n_frames)
+            assert clip_part(tr["clip_id"]) == (row["clip_id"], slice(0, cut))
+            assert clip_part(te["clip_id"]) == (row["clip_id"], slice(cut, motion.n_frames))
+            assert np.array_equal(np.concatenate([tm.rotations, em.rotations]), motion.rotations)
+    model, _ = fit_idle_model(train, test, cmu_joint_map(), settings)
+    trained, held = model_recordings(model, dataset, cmu_joint_map(), "prep")
+    subject = next(iter(held))
+    assert len(held[subject][0].pcs) == test[subject][0][1].n_frames
+    assert clip_part("a[b]") == ("a[b]", slice(None))
+    with pytest.raises(ValueError, match="held_out_fraction"):
+        SETTINGS.replace(held_out_fraction=1.0)
+
+
 def test_bad_inputs_name_the_problem(fitted, tmp_path):
     folder, dataset, _, model, _ = fitted
-    with pytest.raises(ValueError, match="subjects .* 3 or fewer idle clips"):
+    with pytest.raises(ValueError, match="every subject has 3 or fewer idle clips"):
         split_clips(idle_clips(dataset, "prep"), 3)
     walks = load_dataset(folder)
     walks.metadata["behaviour"] = "walk"

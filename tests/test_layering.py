@@ -18,8 +18,8 @@ LEVELS = {
     "core": 0,
     "metrics": 0,
     "claims": 0,
-    "applicability": 0,
     "io": 1,
+    "applicability": 1,  # needs over a dataset's metadata and its rig's joint map (core)
     "report": 1,
     "synth": 2,
     "prep": 2,

@@ -1,6 +1,6 @@
 # Which evaluations a dataset supports, decided from its data (motionvar.applicability and
 # each paper's requirements.py): checkpoint applicability reads the clips' and the
-# primitives' metadata; the default target then asks for each supported evaluation's
+# primitives' metadata and the rig's joint map (hands and toes a rig may lack); the default target then asks for each supported evaluation's
 # outputs and, for the others, for a "not applicable" table, figure and claim naming what
 # the data lacks (rules not_applicable_<paper>). Included after every paper's rule file.
 
@@ -9,10 +9,12 @@ checkpoint applicability:
     input:
         data=f"{DATA}/metadata.csv",
         prep=f"{PREP}/metadata.csv",
+        joint_map=joint_map_input,
     output:
         APPLICABILITY,
     params:
         evaluations=list(EVALUATIONS),
+        joint_map=lambda wc: joint_map_path(wc.dataset),
         **{section: config[section] for section in ("ma2010", "fda", "graph", "style", "egges2004")},
     log:
         ev_log("applicability"),

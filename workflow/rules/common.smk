@@ -353,8 +353,23 @@ def claim_files(dataset):
 
 # Model files built for every dataset whatever it supports (patterns with {dataset}; the
 # `motionvar` command reads them): a paper's rule file adds those that need only the
-# prep stage. Models that need more join the default target as an evaluation's `extra`.
+# prep stage, each as (pattern, the hands or toes it needs from the rig). Models that need
+# more join the default target as an evaluation's `extra`.
 DATASET_MODELS = []
+
+
+def rig_lacks(dataset):
+    """The hands and toes the dataset's joint map leaves out (none for the CMU rig, or for a
+    map that cannot be read: the data rule names its problem)."""
+    path = joint_map_path(dataset)
+    if not path:
+        return set()
+    from motionvar.io.joint_map_file import JointMapError, load_joint_map
+
+    try:
+        return set(load_joint_map(path).lacking)
+    except JointMapError:
+        return set()
 
 
 def default_outputs(dataset):
@@ -366,7 +381,7 @@ def default_outputs(dataset):
         f"results/{dataset}/figures/dataset_overview.png",
         f"results/{dataset}/figures/dataset_realism.png",
         f"results/{dataset}/figures/dataset_animation.gif",
-        *[p.format(dataset=dataset) for p in DATASET_MODELS],
+        *[p.format(dataset=dataset) for p, joints in DATASET_MODELS if not rig_lacks(dataset) & set(joints)],
         *evaluation_outputs(dataset),
         *gif_pages(dataset),
         f"results/{dataset}/claims.csv",

@@ -8,7 +8,7 @@ GRAPH_DENSE = "pick_reach_dense"
 # `motionvar du2022 walk`; a folder of its own (a file beside the primitives would match
 # {primitive}); it needs only the prep metadata, so every dataset gets it (DATASET_MODELS)
 GRAPH_EDGES = [f"{GRAPH}/graph/edges.npz", f"{GRAPH}/graph/edges.json"]
-DATASET_MODELS.extend(GRAPH_EDGES)
+DATASET_MODELS.extend((p, ()) for p in GRAPH_EDGES)
 
 
 def graph_dense_entry(wildcards):

@@ -1,5 +1,7 @@
 # Helpers of du2022_style.smk (Du 2022 ch. 5), kept apart from its rules (snakemake --lint).
 
+from motionvar.core.joint_map import OPTIONAL_JOINTS  # the features' hands and toes (du2022.requirements.STYLE_JOINTS)
+
 STYLE_CFG = config["style"]
 STYLE_MODELS = "results/{dataset}/models/du2022_style"
 STYLE_PRIMITIVE_PATTERN = "[A-Za-z]+(?:_[A-Za-z]+)?"
@@ -7,9 +9,10 @@ STYLE_PRIMITIVE_PATTERN = "[A-Za-z]+(?:_[A-Za-z]+)?"
 # history is <base>_history.csv.
 STYLE_SUFFIX = {"model": ".pt", "settings": ".json", "history": "_history.csv"}
 # what decoding the models onto the rig needs (rule du2022_style_rig), for `motionvar du2022 style`;
-# it needs only the prep stage, so every dataset gets it (DATASET_MODELS)
+# it needs only the prep stage, so every dataset whose rig has hands and toes (the features' joints)
+# gets it (DATASET_MODELS)
 STYLE_RIG = [f"{STYLE_MODELS}/rig.npz", f"{STYLE_MODELS}/rig.json"]
-DATASET_MODELS.extend(STYLE_RIG)
+DATASET_MODELS.extend((p, OPTIONAL_JOINTS) for p in STYLE_RIG)
 # rule du2022_style_training_curves' figure (joins the default target with Tables 5.2-5.3)
 STYLE_TRAINING_FIGURE = "results/{dataset}/figures/du2022_style_training.png"
 # params of the evaluation rules beside the section's settings

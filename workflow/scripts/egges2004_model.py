@@ -11,11 +11,11 @@ def main(snakemake) -> None:
 
     from motionvar.egges2004.evaluations import category_check
     from motionvar.egges2004.figures import draw_categories
-    from motionvar.egges2004.pipeline import fit_idle_model, idle_clips, split_clips
+    from motionvar.egges2004.pipeline import fit_idle_model, idle_clips, split_idle
     from motionvar.egges2004.storage import save_idle_model
 
     s = settings(snakemake)
-    train, test = split_clips(idle_clips(*prep(snakemake)), s.held_out_clips)
+    train, test = split_idle(idle_clips(*prep(snakemake)), s)
     model, _ = fit_idle_model(train, test, joint_map(snakemake), s)
     save_idle_model(snakemake.output.model, model)
     result = category_check(model, train, s)

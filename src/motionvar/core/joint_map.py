@@ -41,6 +41,10 @@ SEMANTIC_JOINTS = (
     "right_ankle",
     "right_toe",
 )
+#: the extremities a rig may lack (a markerless rig whose arms end at the forearm, whose legs end
+#: at the foot): a joint map may leave them out, and what needs them says so
+OPTIONAL_JOINTS = ("left_hand", "right_hand", "left_toe", "right_toe")
+REQUIRED_JOINTS = tuple(s for s in SEMANTIC_JOINTS if s not in OPTIONAL_JOINTS)
 JOINT_GROUPS = ("legs", "left_arm", "right_arm", "upper_body")
 
 
@@ -57,9 +61,18 @@ class JointMap:
     #: where the map was read from (a YAML file), named in errors; "" for built-in maps
     origin: str = field(default="", compare=False)
 
+    @property
+    def lacking(self) -> tuple[str, ...]:
+        """The semantic joints (of :data:`OPTIONAL_JOINTS`) the rig does not have."""
+        return tuple(s for s in SEMANTIC_JOINTS if s not in self.joints)
+
+    def has(self, *semantics: str) -> bool:
+        """Whether the rig has every one of ``semantics``."""
+        return all(s in self.joints for s in semantics)
+
     def validate(self, skeleton: Skeleton, source: str = "joint map") -> None:
-        """Raise ValueError naming every missing semantic joint or unknown rig joint."""
-        missing = [s for s in SEMANTIC_JOINTS if s not in self.joints]
+        """Raise ValueError naming every missing required semantic joint or unknown rig joint."""
+        missing = [s for s in REQUIRED_JOINTS if s not in self.joints]
         unknown = [f"{s}={n}" for s, n in self.joints.items() if n not in skeleton.names]
         unknown += [f"{g}:{n}" for g, ns in self.groups.items() for n in ns if n not in skeleton.names]
         bad_groups = [g for g in self.groups if g not in JOINT_GROUPS]
@@ -75,6 +88,9 @@ class JointMap:
             raise ValueError(f"{where}: " + "; ".join(problems))
 
     def index(self, skeleton: Skeleton, semantic: str) -> int:
+        if semantic not in self.joints:
+            where = f" ({self.origin})" if self.origin else ""
+            raise ValueError(f"the joint map{where} has no {semantic}: the rig lacks it")
         return skeleton.index(self.joints[semantic])
 
     def indices(self, skeleton: Skeleton, semantics: list[str] | tuple[str, ...]) -> np.ndarray:

@@ -7,7 +7,9 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import TYPE_CHECKING
 
-from ..applicability import Need, Requirement
+from ..applicability import Joints, Need, Requirement
+from ..core.joint_map import OPTIONAL_JOINTS
+from .graph.settings import REACH_JOINT
 
 if TYPE_CHECKING:
     from .fda.settings import FdaSettings
@@ -81,6 +83,20 @@ def fda_requirements(settings: FdaSettings) -> list[Requirement]:
     ]
 
 
+HANDS = ("left_hand", "right_hand")
+
+
+def _optional(names: Sequence[str]) -> tuple[str, ...]:
+    """The hands and toes (:data:`~motionvar.core.joint_map.OPTIONAL_JOINTS`) among ``names``
+    (semantic joints), in order, once."""
+    return tuple(n for n in dict.fromkeys(names) if n in OPTIONAL_JOINTS)
+
+
+#: ch. 5's features: the CMU 21-joint subset (Sec. 5.4.1; style.features.FEATURE_JOINTS, not imported here: it
+#: loads the motion code), hands and toes among them
+STYLE_JOINTS = Joints(OPTIONAL_JOINTS, "Du 2022 ch. 5's features are the CMU 21-joint subset, hands and toes included")
+
+
 # clips a Morphable Graph primitive (ch. 4) and a VAE/CVAE (ch. 5) need at the least
 GRAPH_MIN_CLIPS = 3
 STYLE_MIN_CLIPS = 2
@@ -102,6 +118,15 @@ def graph_requirements(settings: GraphSettings, min_clips: int = GRAPH_MIN_CLIPS
             "Fig. 4.12",
             "k-means tree search halves random sampling's constraint error; median trees are close to random.",
             _primitives(search_primitives, min_clips, why),
+            Joints(
+                _optional(
+                    [
+                        *(settings.search.joints.get(p, settings.search.default_joint) for p in search_primitives),
+                        *settings.search.pose_joints,
+                    ]
+                ),
+                "Fig. 4.12 constrains these joints (graph.search.joints, default_joint, pose_joints)",
+            ),
         ),
         Requirement(
             "du2022_fig4_9",
@@ -111,6 +136,7 @@ def graph_requirements(settings: GraphSettings, min_clips: int = GRAPH_MIN_CLIPS
             _primitives(
                 ["walk_leftStance", "pick_reach"], min_clips, why + "; Fig. 4.9 shows walk leftStance and pick reach"
             ),
+            Joints(HANDS, "Fig. 4.9 shows the pick reach's hand positions"),
         ),
         Requirement(
             "du2022_fig4_10",
@@ -120,6 +146,7 @@ def graph_requirements(settings: GraphSettings, min_clips: int = GRAPH_MIN_CLIPS
             _primitives(
                 [*walk_primitives, reach_primitive], min_clips, why + "; Fig. 4.10 walks along a path, then reaches"
             ),
+            Joints((REACH_JOINT,), f"Fig. 4.10 reaches targets with the {REACH_JOINT.replace('_', ' ')}"),
         ),
         Requirement(
             "du2022_sec4_6_1",
@@ -161,6 +188,7 @@ def style_requirements(settings: StyleSettings, min_clips: int = STYLE_MIN_CLIPS
             "Table 5.1",
             "Each style's samples are closest (Gram-matrix style distance) to that style's example.",
             _primitives([distance_primitive], min_clips, why_vae, style=("neutral",)) + distance,
+            STYLE_JOINTS,
         ),
         Requirement(
             "du2022_table5_2",
@@ -168,6 +196,7 @@ def style_requirements(settings: StyleSettings, min_clips: int = STYLE_MIN_CLIPS
             "Tables 5.2-5.3",
             "Samples keep the training data's diversity (pose, velocity and step SDs).",
             neutral + stylised,
+            STYLE_JOINTS,
         ),
         Requirement(
             "du2022_fig5_4",
@@ -175,5 +204,6 @@ def style_requirements(settings: StyleSettings, min_clips: int = STYLE_MIN_CLIPS
             "Fig. 5.4-5.5",
             "Random samples of the neutral and the stylised models.",
             neutral + stylised,
+            STYLE_JOINTS,
         ),
     ]

@@ -8,6 +8,8 @@ truth by :mod:`.evaluations.fig3_categories`.
 
 from __future__ import annotations
 
+import logging
+import re
 from dataclasses import dataclass
 
 import pandas as pd
@@ -19,6 +21,8 @@ from ..io.dataset import MotionDataset
 from .database import IdleDatabase, Recording, analyse_recording, build_database
 from .pca import PosturePCA
 from .settings import Egges2004Settings
+
+log = logging.getLogger(__name__)
 
 
 @dataclass
@@ -48,19 +52,70 @@ def idle_clips(dataset: MotionDataset, source: str) -> dict[str, list[tuple[pd.S
     return dict(sorted(out.items()))
 
 
-def split_clips(
-    clips: dict[str, list[tuple[pd.Series, Motion]]], held_out: int
-) -> tuple[dict[str, list[tuple[pd.Series, Motion]]], dict[str, list[tuple[pd.Series, Motion]]]]:
+Clips = dict[str, list[tuple[pd.Series, Motion]]]
+
+#: a held-out or training part of a recording: ``<clip_id>[<start>:<stop>]`` (frames)
+_SPAN = re.compile(r"^(?P<clip>.+)\[(?P<start>\d+):(?P<stop>\d+)\]$")
+
+
+def split_clips(clips: Clips, held_out: int) -> tuple[Clips, Clips]:
     """Per subject, the last ``held_out`` clips (by clip_id) for testing, the rest for
-    training; ValueError naming the subjects with too few clips."""
+    training. A subject with ``held_out`` or fewer clips is left out, with a line in the log;
+    ValueError when no subject is left."""
     short = [s for s, c in clips.items() if len(c) <= held_out]
-    if short:
-        raise ValueError(
-            f"subjects {short} have {held_out} or fewer idle clips; need more than egges2004.held_out_clips = {held_out}"
+    for s in short:
+        log.warning(
+            "subject %s left out of Egges 2004: %d idle clip(s), need more than egges2004.held_out_clips = %d "
+            "(or egges2004.held_out_by: time, to hold out the end of each recording)",
+            s,
+            len(clips[s]),
+            held_out,
         )
-    train = {s: c[: len(c) - held_out] for s, c in clips.items()}
-    test = {s: c[len(c) - held_out :] for s, c in clips.items()}
+    kept = {s: c for s, c in clips.items() if s not in short}
+    if not kept:
+        raise ValueError(
+            f"every subject has {held_out} or fewer idle clips; need more than egges2004.held_out_clips = {held_out} "
+            "(or egges2004.held_out_by: time, to hold out the end of each recording)"
+        )
+    train = {s: c[: len(c) - held_out] for s, c in kept.items()}
+    test = {s: c[len(c) - held_out :] for s, c in kept.items()}
     return train, test
+
+
+def split_recordings(clips: Clips, fraction: float) -> tuple[Clips, Clips]:
+    """Per recording, its first frames for training and its last ``fraction`` of them held
+    out (each part's clip_id ``<clip_id>[<start>:<stop>]``): one long recording per person
+    serves both, as the paper builds a database from "one or more recorded animations"
+    (Sec. 5.6)."""
+    train: Clips = {}
+    test: Clips = {}
+    for subject, rows in clips.items():
+        for row, motion in rows:
+            cut = motion.n_frames - int(round(fraction * motion.n_frames))
+            for out, (a, b) in ((train, (0, cut)), (test, (cut, motion.n_frames))):
+                part = row.copy()
+                part["clip_id"] = f"{row['clip_id']}[{a}:{b}]"
+                if a > 0 and "idle_postures" in part:  # the ground truth's times count from the recording's start
+                    part["idle_postures"] = ""
+                out.setdefault(subject, []).append((part, motion.slice(a, b)))
+    return train, test
+
+
+def split_idle(clips: Clips, settings: Egges2004Settings) -> tuple[Clips, Clips]:
+    """(training, held-out) idle clips per subject, by ``settings.held_out_by``:
+    :func:`split_clips` or :func:`split_recordings`."""
+    if settings.held_out_by == "time":
+        return split_recordings(clips, settings.held_out_fraction)
+    return split_clips(clips, settings.held_out_clips)
+
+
+def clip_part(clip_id: str) -> tuple[str, slice]:
+    """(clip_id of the recording, frames) of a model's clip id (:func:`split_recordings`'s
+    ``<clip_id>[<start>:<stop>]``, or a whole clip)."""
+    m = _SPAN.match(clip_id)
+    if m is None:
+        return clip_id, slice(None)
+    return m["clip"], slice(int(m["start"]), int(m["stop"]))
 
 
 def fit_idle_model(
@@ -101,12 +156,17 @@ def model_recordings(
     support ratio), per subject; ValueError when the dataset lacks a clip of the model."""
     clips = {str(row["clip_id"]): m for rows in idle_clips(dataset, source).values() for row, m in rows}
 
+    def motion(clip_id: str) -> Motion:
+        clip, frames = clip_part(clip_id)
+        m = clips[clip]
+        return m if frames == slice(None) else m.slice(frames.start, frames.stop)
+
     def analyse(ids: dict[str, list[str]]) -> dict[str, list[Recording]]:
-        missing = [c for cs in ids.values() for c in cs if c not in clips]
+        missing = [c for cs in ids.values() for c in cs if clip_part(c)[0] not in clips]
         if missing:
             raise ValueError(
                 f"{source}: idle clips {missing[:5]} of the model are not in the dataset; rerun egges2004_model"
             )
-        return {s: [analyse_recording(clips[c], model.pca, joint_map, c) for c in cs] for s, cs in ids.items()}
+        return {s: [analyse_recording(motion(c), model.pca, joint_map, c) for c in cs] for s, cs in ids.items()}
 
     return analyse(model.train_clips), analyse(model.test_clips)

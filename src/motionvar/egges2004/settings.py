@@ -13,6 +13,8 @@ from dataclasses import dataclass, field
 
 from ..core.settings import Settings
 
+HELD_OUT_BY = ("clips", "time")
+
 
 @dataclass(frozen=True)
 class AnalysisSettings(Settings):
@@ -157,8 +159,13 @@ class Egges2004Settings(Settings):
     evaluations of Sec. 5.4.4 (fitting), 6 (repetition) and 8 (identification, speed).
 
     seed: seed of every random draw (categories' k-means, generation, baselines, classifier).
-    held_out_clips: idle clips per subject (the last by clip_id) held out of the databases,
-        for identification.
+    held_out_by: what is held out of the databases, for identification: ``"clips"``, the last
+        ``held_out_clips`` clips of each subject (by clip_id; a subject with no more clips than
+        that is left out); ``"time"``, the last ``held_out_fraction`` of every idle recording's
+        frames, so that one long recording per person serves (the paper builds a person's
+        database from "one or more recorded animations", Sec. 5.6).
+    held_out_clips: idle clips per subject held out (``held_out_by: clips``).
+    held_out_fraction: share of every recording held out at its end (``held_out_by: time``).
     translation_scale: factor on the root translation (cm) in the posture vectors: 0.01
         gives metres, the H-Anim unit of the paper's skeleton (Sec. 3.2).
     perlin_frequency_hz: lattice frequency (Hz) of the Perlin-noise-on-PCs baseline; set by
@@ -171,7 +178,9 @@ class Egges2004Settings(Settings):
     SECTION = "egges2004"
 
     seed: int = 0
+    held_out_by: str = "clips"
     held_out_clips: int = 1
+    held_out_fraction: float = 0.3
     translation_scale: float = 0.01
     perlin_frequency_hz: float = 0.5
     figure_subjects: int = 3
@@ -182,3 +191,9 @@ class Egges2004Settings(Settings):
     fitting: FittingSettings = field(default_factory=FittingSettings)
     speed: SpeedSettings = field(default_factory=SpeedSettings)
     animation: AnimationSettings = field(default_factory=AnimationSettings)
+
+    def __post_init__(self) -> None:
+        if self.held_out_by not in HELD_OUT_BY:
+            raise ValueError(f"egges2004.held_out_by must be one of {list(HELD_OUT_BY)}; got {self.held_out_by!r}")
+        if not 0.0 < self.held_out_fraction < 1.0:
+            raise ValueError(f"egges2004.held_out_fraction must lie in (0, 1); got {self.held_out_fraction}")

@@ -2,7 +2,8 @@
 
 Format::
 
-    joints: {hips: Hips, spine: Spine, ...}        # all semantic joints (SEMANTIC_JOINTS)
+    joints: {hips: Hips, spine: Spine, ...}        # the semantic joints (SEMANTIC_JOINTS); those of
+                                                   # OPTIONAL_JOINTS (hands, toes) only if the rig has them
     groups: {legs: [...], left_arm: [...], right_arm: [...], upper_body: [...]}
 
 ``groups`` is optional; a joint may stand in one group only. Whether the rig joints
@@ -15,7 +16,7 @@ from pathlib import Path
 
 import yaml
 
-from ..core.joint_map import JOINT_GROUPS, SEMANTIC_JOINTS, JointMap
+from ..core.joint_map import JOINT_GROUPS, REQUIRED_JOINTS, SEMANTIC_JOINTS, JointMap
 
 
 class JointMapError(ValueError):
@@ -45,7 +46,7 @@ def load_joint_map(path: str | Path) -> JointMap:
     if unknown_keys:
         raise JointMapError(f"{path}: unknown keys {unknown_keys} (expected 'joints', 'groups')")
     joints = data["joints"]
-    missing = [s for s in SEMANTIC_JOINTS if s not in joints]
+    missing = [s for s in REQUIRED_JOINTS if s not in joints]
     unknown = sorted(set(joints) - set(SEMANTIC_JOINTS))
     bad = [s for s, n in joints.items() if not isinstance(n, str) or not n]
     if missing or unknown or bad:

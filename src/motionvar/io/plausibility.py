@@ -17,7 +17,8 @@ person), in the style of docs/gait.md:
   Contini), 80-106 cm for adults of 150-200 cm; walking, stylised and crouching motion
   lower it. Bound 60-130 cm for the median over frames. The floor is a low percentile
   (:data:`FLOOR_PERCENTILE`) of the lowest ankle or toe joint per frame (not height 0:
-  some captures put the floor elsewhere).
+  some captures put the floor elsewhere); a rig without toe joints gives the ankles' End
+  Sites instead (:func:`motionvar.core.extremities.foot_points`).
 - Leg length, hip joint to ankle joint (thigh + shank): 0.245 + 0.246 = 0.49 x stature
   (Winter 2009), 74-98 cm for 150-200 cm. Bound 50-120 cm.
 - The pelvis stands over the feet: its horizontal distance to the mean of the two
@@ -45,6 +46,7 @@ from dataclasses import dataclass
 import numpy as np
 import pandas as pd
 
+from ..core.extremities import foot_points, toe_stand_in
 from ..core.joint_map import JointMap
 from ..core.motion import Motion
 
@@ -70,21 +72,9 @@ def clip_measures(motion: Motion, joint_map: JointMap) -> dict[str, float]:
     pos = motion.positions()
     finite = bool(np.isfinite(pos).all() and np.isfinite(motion.rotations).all())
     pos = np.nan_to_num(pos)
-    j = {
-        s: joint_map.index(sk, s)
-        for s in (
-            "hips",
-            "left_hip",
-            "left_knee",
-            "left_ankle",
-            "left_toe",
-            "right_hip",
-            "right_knee",
-            "right_ankle",
-            "right_toe",
-        )
-    }
-    feet = pos[:, [j["left_ankle"], j["left_toe"], j["right_ankle"], j["right_toe"]], 1]
+    chain = [f"{side}_{part}" for side in ("left", "right") for part in ("hip", "knee", "ankle")]
+    j = {s: joint_map.index(sk, s) for s in ("hips", *chain)}
+    feet = foot_points(motion, joint_map, pos)[..., 1].reshape(len(pos), 4)  # ankles and toes (or End Sites)
     floor = np.percentile(feet.min(axis=1), FLOOR_PERCENTILE)
     hips = pos[:, j["hips"]]
     legs = [
@@ -159,6 +149,8 @@ def check_plausibility(
     """Measure every clip and list the gates that fail (module docstring). ``metadata``
     gives ``clip_id`` and ``behaviour`` per clip; ``unit_cm`` (the import's unit, if any)
     makes the unit hint concrete."""
+    if motions and (stand_in := toe_stand_in(joint_map, motions[0])):
+        log.info("%s (the floor)", stand_in)
     rows = [clip_measures(m, joint_map) for m in motions]
     meas = pd.DataFrame(rows, columns=list(MEASURES))
     meas.insert(0, "behaviour", metadata["behaviour"].astype(str).to_numpy())

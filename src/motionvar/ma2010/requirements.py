@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-from ..applicability import Need, Requirement
+from ..applicability import Joints, Need, Requirement
 from .claims import FIG8_MIN_EXAMPLES, FIG8_MIN_SUBJECTS
 
 if TYPE_CHECKING:
@@ -61,6 +61,10 @@ WHY = {
 }
 
 
+# the footskate cleanup stands each foot on its ankle or its toe (Sec. 5; ma2010.examples.root_solver)
+TOES = Joints(("left_toe", "right_toe"), "Ma 2010's footskate cleanup stands each foot on its ankle or its toe")
+
+
 def requirements(settings: Ma2010Settings) -> list[Requirement]:
     """One requirement per evaluation: walking clips (``behaviour`` walk) of the settings'
     ``walk_styles`` and ``walk_variants`` (an empty list accepts any)."""
@@ -79,5 +83,5 @@ def requirements(settings: Ma2010Settings) -> list[Requirement]:
             why="Ma 2010 models the gait cycles of walking (Sec. 4; a cycle needs two foot strikes of each "
             "foot); set ma2010.walk_styles and ma2010.walk_variants to labels your data has" + WHY.get(ev, ""),
         )
-        out.append(Requirement(ev, PAPER, source, checks, (need,)))
+        out.append(Requirement(ev, PAPER, source, checks, (need,), TOES))
     return out

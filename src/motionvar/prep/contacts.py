@@ -16,6 +16,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..core.extremities import foot_points
 from ..core.joint_map import JointMap
 from ..core.motion import Motion
 from .intervals import clean_mask, mask_to_intervals
@@ -70,13 +71,12 @@ def joint_speeds(positions: np.ndarray, fps: float, window_s: float) -> np.ndarr
 
 
 def foot_positions(positions: np.ndarray, motion: Motion, joint_map: JointMap) -> np.ndarray:
-    """(T, 2 feet, 2 joints [ankle, toe], 3) positions picked from (T, J, 3) via the map."""
-    names = [f"{s}_{j}" for s in SIDES for j in ("ankle", "toe")]
-    missing = [n for n in names if n not in joint_map.joints]
-    if missing:
-        raise ValueError(f"foot contacts: the joint map lacks semantic joints {missing}")
-    idx = joint_map.indices(motion.skeleton, names)
-    return positions[:, idx].reshape(positions.shape[0], 2, 2, 3)
+    """(T, 2 feet, 2 joints [ankle, toe], 3) positions picked from (T, J, 3) via the map; a rig
+    without toe joints gives its ankles' End Sites instead (:func:`~motionvar.core.extremities.foot_points`)."""
+    try:
+        return foot_points(motion, joint_map, positions)
+    except ValueError as exc:
+        raise ValueError(f"foot contacts: {exc}") from exc
 
 
 def detect_foot_contacts(

@@ -20,6 +20,7 @@ from dataclasses import dataclass, field
 import numpy as np
 import pandas as pd
 
+from ..core.extremities import foot_points
 from ..core.joint_map import JointMap
 from ..core.motion import Motion
 from ..core.quaternions import quat_to_rotvec
@@ -65,12 +66,11 @@ def _walk_clip(stats: _WalkStats, motion: Motion, joint_map: JointMap, prep: Pre
     contacts = detect_foot_contacts(motion, joint_map, prep, raw)
     pos = raw * prep.units_cm
     ankles = tuple(int(i) for i in joint_map.indices(motion.skeleton, ["left_ankle", "right_ankle"]))
-    toes = joint_map.indices(motion.skeleton, ["left_toe", "right_toe"])
+    toes = foot_points(motion, joint_map, raw)[:, :, 1, 1] * prep.units_cm  # (T, 2) toe heights (or End Sites')
     cycles = rm.walk_cycles(rm.walk_events(pos, (contacts.left, contacts.right), ankles, motion.fps))
     stats.noise.append(rm.high_frequency_rms(pos - pos[:, :1], motion.fps, s.noise_band_hz))
     clearance = [
-        rm.toe_clearance(pos[:, toes[side], 1], mask, s.toe_window)
-        for side, mask in enumerate((contacts.left, contacts.right))
+        rm.toe_clearance(toes[:, side], mask, s.toe_window) for side, mask in enumerate((contacts.left, contacts.right))
     ]
     reason = rm.implausible_events(
         cycles, pos[:, 0, [0, 2]], np.concatenate(clearance), s.stance_range, s.travel_tolerance, s.min_clearance_cm
@@ -331,7 +331,7 @@ def dataset_realism(
         rows += _walk_rows(st)
         rows += _spread_rows(strides[measured], spread_subject[measured], np.array(postures), spread_subject, s)
     picks = np.flatnonzero(behaviour == "pick")
-    if len(picks):
+    if len(picks) and joint_map.has("left_hand", "right_hand"):  # a rig without hands has no reach to measure
         reach = [_reach_clip(dataset.motion(int(i)), joint_map, prep, s) for i in picks]
         peaks = np.array([r[0] for r in reach], dtype=float)
         few = len(peaks) < s.min_reaches

@@ -16,6 +16,9 @@ from typing import ClassVar
 
 from ...core.settings import Settings
 
+#: the hand that Fig. 4.10's reach step brings to its targets (the thesis' figure shows the right)
+REACH_JOINT = "right_hand"
+
 THESIS_BUDGET = 120  # Sec. 4.6.2: "less than 120 evaluations in most cases"
 
 

@@ -61,6 +61,8 @@ _ORDER = (
     "right_ankle",
     "right_toe",
 )
+#: the semantic joints the features need from a joint map (hands and toes among them)
+FEATURE_JOINTS = tuple(s for s in _ORDER if not s.endswith("clavicle"))
 N_ROOT_CHANNELS = 3
 
 
@@ -99,8 +101,7 @@ def style_joints(skeleton: Skeleton, joint_map: JointMap) -> FeatureLayout:
     a selected joint (a rig without clavicles), it is not repeated, so such rigs get
     fewer than 21 joints. Raises ValueError naming missing semantic joints.
     """
-    needed = [s for s in _ORDER if not s.endswith("clavicle")]
-    missing = [s for s in needed if s not in joint_map.joints]
+    missing = [s for s in FEATURE_JOINTS if s not in joint_map.joints]
     if missing:
         raise ValueError(f"style features: the joint map lacks semantic joints {missing}")
     picked: list[int] = []

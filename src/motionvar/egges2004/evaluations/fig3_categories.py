@@ -21,7 +21,7 @@ def category_check(
     """Per subject: the categories found, resting segments, transitions, and (where the
     metadata has ``idle_postures``) the share of resting segments whose category is the
     true one and the adjusted Rand index. ``train``: the training clips (metadata row,
-    Motion) per subject, as :func:`~motionvar.egges2004.pipeline.split_clips` gives them.
+    Motion) per subject, as :func:`~motionvar.egges2004.pipeline.split_idle` gives them.
     No claim; the figure's data are ``graphs``, the category transition graphs (Fig. 3)
     of the first ``settings.figure_subjects`` subjects."""
     rows = []

@@ -7,6 +7,7 @@ are defined here.
 
 from __future__ import annotations
 
+import logging
 from typing import Any
 
 import numpy as np
@@ -27,6 +28,8 @@ from ..engine import generate_idle_pcs
 from ..pipeline import IdleModel
 from ..settings import Egges2004Settings, IdentificationSettings
 from .common import perlin_sds, perlin_sequence, subject_rng
+
+log = logging.getLogger(__name__)
 
 FEATURE_SETS = ("all", "posture", "dynamics")
 SWAY_BANDS_HZ = ((0.05, 0.3), (0.3, 1.0), (1.0, 3.0))
@@ -140,10 +143,21 @@ def identification_table(
     features, ``labels`` and ``confusion`` (empty without a generated source)."""
     params = settings.identification
 
+    length = int(round(params.window_s * fps))
+
     def features(items):
+        short = [s for s, p, _ in items if len(p) < length]
+        if short:  # a held-out end of a short recording (held_out_by: time) holds no whole window
+            log.info(
+                "%d sequence(s) shorter than one %g s window left out (subjects %s)",
+                len(short),
+                params.window_s,
+                ", ".join(sorted(set(short))),
+            )
         blocks = [
             (window_features(p, lam, fps, params.window_s, params.feature_pcs, settings.analysis.support_margin), s)
             for s, p, lam in items
+            if len(p) >= length
         ]
         return np.concatenate([b for b, _ in blocks]), np.concatenate([[s] * len(b) for b, s in blocks])
 

@@ -29,11 +29,10 @@ from ...claims import CLAIMS, FIG4_10_NATURAL_PERCENTILE, FIG4_10_REACH_CLOSE_CM
 from ..constraints import Constraint
 from ..morphable_graph import MorphableGraph, Path2D, concatenate_steps, follow_path, synthesize_step
 from ..primitive import MotionPrimitive, primitive_clips
-from ..settings import GraphSettings, SynthesisSettings
+from ..settings import REACH_JOINT, GraphSettings, SynthesisSettings
 from ..trees import SpacePartitioningTree
 from .common import semantic_index
 
-REACH_JOINT = "right_hand"
 #: the compared walks (table tasks ``path_<name>``): overrides of the configured ``graph.synthesis``; the greedy walk
 #: (T = 1, no line 9) and our receding horizon with line 9 (T = 1 with line 9 alone is the thesis' walk on a graph
 #: whose stepping nodes alternate, as ours: one successor per step after the first, so T changes little)
