@@ -216,7 +216,7 @@ WITHIN_WALK = ("stride_cv_pct", "stride_time_cv_pct", "step_time_cv_pct", "stanc
 
 
 @pytest.mark.skipif(not REAL.is_dir(), reason=f"{REAL} absent")
-@pytest.mark.parametrize("name", ["xia", "bandai_ds1", "dfki_markerless"])
+@pytest.mark.parametrize("name", ["xia", "bandai_ds1", "dfki_markerless", "reactidle_idle"])
 def test_bands_record_what_the_captured_sets_give(name):
     """Every captured value a band is derived from is what the measure gives on that set."""
     values = _real_table(name)["value"]

@@ -32,7 +32,21 @@ class RealismSettings(Settings):
         two walks each, the ratio is known to about sqrt(1 / (2 (k - 1)) + 1 / (2 k)) of itself
         (23 % at 20 subjects, 33 % at 10), against a band spanning a factor of 3.6.
     min_reaches: the share of reaches with a corrective sub-movement needs this many reaches:
-        at a share of 0.1, the band's low edge, its standard error is then 0.039."""
+        at a share of 0.1, the band's low edge, its standard error is then 0.039.
+    idle_band_hz / idle_segment_s: the band (Hz) and the Welch segment length (s) of the
+        sway's median frequency: above the drift a segment cannot resolve, below the 3 Hz
+        under which quiet standing sway lies (Prieto et al. 1996 filter at 5 Hz).
+    idle_fast_hz: the sway above this frequency is the small posture variations beside the
+        posture held (Egges et al. 2004, Sec. 4: "continuous small posture variations" beside
+        "posture shifts"; a balance shift takes about a second or more).
+    idle_margin / idle_min_s: the pelvis stands over one foot beyond ``idle_margin`` of the
+        middle of the ankles, and holds a side for at least ``idle_min_s`` s (the Egges 2004
+        analysis' support margin and shortest rest, egges2004.analysis).
+    idle_window_s: windows whose mean posture gives the within- against between-person
+        spread of standing postures.
+    min_idle_subjects: that spread needs this many people with two windows or more; with
+        many windows each, the between-person SD alone is uncertain, to about
+        sqrt(1 / (2 (k - 1))) of itself (35 % at 5)."""
 
     SECTION = "realism"
 
@@ -47,3 +61,10 @@ class RealismSettings(Settings):
     min_clips_per_subject: int = 2
     min_subjects: int = 20
     min_reaches: int = 60
+    idle_band_hz: tuple[float, float] = (0.05, 3.0)
+    idle_segment_s: float = 20.0
+    idle_fast_hz: float = 0.5
+    idle_margin: float = 0.1
+    idle_min_s: float = 1.0
+    idle_window_s: float = 10.0
+    min_idle_subjects: int = 5

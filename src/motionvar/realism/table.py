@@ -294,6 +294,83 @@ def _spread_rows(
     return rows
 
 
+def _idle_rows(
+    motions: list[Motion], subjects: np.ndarray, joint_map: JointMap, prep: PrepOptions, s: RealismSettings
+) -> list[tuple]:
+    """Standing idle clips: the pelvis's sway (amplitude, the fast part beside the posture
+    held, median frequency), the rate of weight shifts between the feet and the within-
+    against between-person spread of the postures held (windows of ``s.idle_window_s``)."""
+    sd, fast, freq, windows, groups = [], [], [], [], []
+    shifts, minutes = 0, 0.0
+    for m, subject in zip(motions, subjects):
+        pos = m.positions() * prep.units_cm
+        hips, la, ra = (pos[:, joint_map.index(m.skeleton, j), ::2] for j in ("hips", "left_ankle", "right_ankle"))
+        sd.append(rm.sway_sd(hips))
+        fast.append(10.0 * rm.sway_band_rms(hips, m.fps, s.idle_fast_hz))
+        freq.append(rm.sway_median_frequency(hips, m.fps, s.idle_band_hz, s.idle_segment_s))
+        shifts += rm.weight_shifts(rm.support_ratio(hips, la, ra), m.fps, s.idle_margin, s.idle_min_s)
+        minutes += m.duration / 60.0
+        n = max(1, int(round(s.idle_window_s * m.fps)))
+        for a in range(0, m.n_frames - n + 1, n):
+            windows.append(_posture(m.slice(a, a + n)))
+            groups.append(subject)
+    groups_arr = np.array(groups)
+    people = int(np.sum(np.unique(groups_arr, return_counts=True)[1] >= 2)) if groups else 0
+    few = people < s.min_idle_subjects
+    ratio = np.nan if few else rm.within_between_ratio(np.array(windows), groups_arr)
+    n = len(motions)
+    return [
+        (
+            "idle_sway_sd_cm",
+            "idle",
+            _median(sd),
+            "cm",
+            _count(sd),
+            "pelvis ground-plane SD about its mean (median over clips)",
+            "",
+        ),
+        (
+            "idle_sway_fast_rms_mm",
+            "idle",
+            _median(fast),
+            "mm",
+            _count(fast),
+            f"pelvis ground-plane RMS above {s.idle_fast_hz:g} Hz: the small variations beside the posture held",
+            "" if _count(fast) else "no clip long enough to filter",
+        ),
+        (
+            "idle_sway_median_hz",
+            "idle",
+            _median(freq),
+            "Hz",
+            _count(freq),
+            f"median frequency of the pelvis sway within {s.idle_band_hz[0]:g}-{s.idle_band_hz[1]:g} Hz",
+            "" if _count(freq) else f"no clip of one {s.idle_segment_s:g} s Welch segment",
+        ),
+        (
+            "idle_weight_shifts_per_min",
+            "idle",
+            shifts / minutes if minutes > 0 else np.nan,
+            "per min",
+            n,
+            f"changes of the foot the pelvis stands over (held {s.idle_min_s:g} s, margin {s.idle_margin:g}), "
+            "per minute over all clips",
+            "",
+        ),
+        (
+            "idle_posture_within_between",
+            "idle",
+            ratio,
+            "ratio",
+            0 if few else len(windows),
+            f"within-person SD of a {s.idle_window_s:g} s window's mean posture over the SD of person means",
+            f"{people} people with two windows, fewer than realism.min_idle_subjects = {s.min_idle_subjects}"
+            if few
+            else "",
+        ),
+    ]
+
+
 def _posture(motion: Motion) -> np.ndarray:
     """A clip's mean posture: the mean rotation vector (degrees) of every non-root joint."""
     return np.degrees(quat_to_rotvec(motion.rotations[:, 1:]).mean(axis=0)).ravel()
@@ -364,7 +441,10 @@ def dataset_realism(
                 "",
             ),
         ]
-    for name in ("walk", "pick"):
+    idle = np.flatnonzero(behaviour == "idle")
+    if len(idle):
+        rows += _idle_rows([dataset.motion(int(i)) for i in idle], subjects[idle], joint_map, prep, s)
+    for name in ("walk", "pick", "idle"):
         idx = np.flatnonzero(behaviour == name)
         if len(idx):
             r, j = _channel_rows([dataset.motion(int(i)) for i in idx], name, s)
