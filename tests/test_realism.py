@@ -152,10 +152,52 @@ def test_every_band_has_a_source_and_a_statistic_of_the_table():
     cmu = {"cmu_captured_moving_kept_share", "cmu_captured_static_kept_share"}
     spread = {"stride_within_between", "posture_within_between"}
     reach = {"reach_multi_peak_share", "reach_path_ratio"}
-    known = walk_stats | channels | cmu | spread | reach
+    idle = {
+        f"idle_{s}"
+        for s in ("sway_sd_cm", "sway_fast_rms_mm", "sway_median_hz", "weight_shifts_per_min", "posture_within_between")
+    }
+    known = walk_stats | channels | cmu | spread | reach | idle
     for (stat, _), band in BANDS.items():
         assert stat in known and band.source
     assert set(CMU_CAPTURED_CHANNELS) == set(cmu_joint_map_names())
+
+
+def test_idle_sway_measures_on_known_signals():
+    """The sway measures on signals whose answers are known: a 0.2 Hz sway of 3 cm amplitude
+    along x has an SD of 3 / sqrt(2) cm and its median frequency at 0.2 Hz; above 0.5 Hz it
+    leaves what the 2nd-order high-pass run both ways passes, (f/fc)^4 / (1 + (f/fc)^4) of it
+    (2.5 %); a 1 Hz tremor of 1 mm beside it adds 16/17 of its own RMS."""
+    from motionvar.metrics import standing as rm
+
+    def passed(f):
+        return (f / 0.5) ** 4 / (1 + (f / 0.5) ** 4)
+
+    fps, t = 24.0, np.arange(0, 120, 1 / 24.0)
+    slow = np.stack([3.0 * np.sin(2 * np.pi * 0.2 * t), np.zeros_like(t)], axis=1)
+    assert rm.sway_sd(slow) == pytest.approx(3 / np.sqrt(2), rel=1e-3)
+    assert rm.sway_median_frequency(slow, fps, (0.05, 3.0), 20.0) == pytest.approx(0.2, abs=0.026)
+    leak = 3 / np.sqrt(2) * passed(0.2)
+    assert rm.sway_band_rms(slow, fps, 0.5) == pytest.approx(leak, rel=0.02)
+    tremor = slow + np.stack([np.zeros_like(t), 0.1 * np.sin(2 * np.pi * 1.0 * t)], axis=1)
+    both = np.hypot(leak, 0.1 / np.sqrt(2) * passed(1.0))
+    assert rm.sway_band_rms(tremor, fps, 0.5) == pytest.approx(both, rel=0.02)
+    assert np.isnan(rm.sway_median_frequency(slow[:100], fps, (0.05, 3.0), 20.0))
+
+
+def test_weight_shifts_count_held_sides_only():
+    """A pelvis over the left foot, both, the right foot, each held 3 s, is two shifts; a 0.5 s
+    passage to the right and back is none; flicker across the margin is none."""
+    from motionvar.metrics import standing as rm
+
+    fps = 24.0
+    held = np.repeat([0.9, 0.5, 0.1], 72)
+    assert rm.weight_shifts(held, fps, 0.1, 1.0) == 2
+    passage = np.concatenate([np.full(72, 0.9), np.full(12, 0.1), np.full(72, 0.9)])
+    assert rm.weight_shifts(passage, fps, 0.1, 1.0) == 0
+    flicker = 0.6 + 0.02 * np.sign(np.sin(np.arange(240)))
+    assert rm.weight_shifts(flicker, fps, 0.1, 1.0) == 0
+    hips, left, right = np.array([[2.0, 0.0]]), np.array([[10.0, 0.0]]), np.array([[-10.0, 0.0]])
+    assert rm.support_ratio(hips, left, right)[0] == pytest.approx(0.6)
 
 
 def cmu_joint_map_names():

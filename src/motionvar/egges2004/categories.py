@@ -29,7 +29,7 @@ from threadpoolctl import threadpool_limits
 
 from ..core.joint_map import JointMap
 from ..core.motion import Motion
-from ..metrics import realism as rm
+from ..metrics.standing import support_ratio as _support_ratio
 from .fitting import posture_distance
 
 CATEGORY_ORDER = ("left", "both", "right")
@@ -42,7 +42,7 @@ def support_ratio(motion: Motion, joint_map: JointMap) -> np.ndarray:
     sk = motion.skeleton
     hips, la, ra = (joint_map.index(sk, s) for s in ("hips", "left_ankle", "right_ankle"))
     pos = motion.positions()[..., HORIZONTAL]
-    return rm.support_ratio(pos[:, hips], pos[:, la], pos[:, ra])
+    return _support_ratio(pos[:, hips], pos[:, la], pos[:, ra])
 
 
 def posture_speed(pcs: np.ndarray, weights: np.ndarray, fps: float, smooth_s: float) -> np.ndarray:

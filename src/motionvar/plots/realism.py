@@ -19,9 +19,12 @@ def realism_figure(table: pd.DataFrame, joints: pd.DataFrame, title: str) -> Fig
     """Left: one row per statistic with a band, its value placed in the band (shaded;
     log-scaled for positive bands), green inside, red outside, grey where the band does not
     gate (descriptive: the generator's clean data lies in it too), clipped at the panel's edges.
-    Right: the largest SD of each joint's three rotation channels in the walks (log scale)."""
+    Right: the largest SD of each joint's three rotation channels in the walks, or in the
+    clips of the first other behaviour the data has (log scale)."""
     banded = table[np.isfinite(table["band_lo"].to_numpy(dtype=float))].reset_index(drop=True)
-    walk = joints[joints["behaviour"] == "walk"].reset_index(drop=True)
+    present = [b for b in ("walk", "idle", "pick") if (joints["behaviour"] == b).any()]
+    behaviour = present[0] if present else "walk"
+    walk = joints[joints["behaviour"] == behaviour].reset_index(drop=True)
     height = max(len(banded), len(walk) * 0.55, 6) * 0.32 + 1.5
     fig = Figure(figsize=(15, height))
     ax, bx = fig.subplots(1, 2, gridspec_kw={"width_ratios": [1.25, 1]})
@@ -51,10 +54,10 @@ def realism_figure(table: pd.DataFrame, joints: pd.DataFrame, title: str) -> Fig
         bx.set_xscale("log")
         bx.set_yticks(y, walk["joint"], fontsize=7)
         bx.set_xlim(1e-4, max(100.0, sd.max() * 1.5))
-        bx.set_xlabel("largest channel SD over the walks (degrees; 1e-4: constant)")
+        bx.set_xlabel(f"largest channel SD over the {behaviour} clips (degrees; 1e-4: constant)")
     else:
-        bx.text(0.5, 0.5, "no walks", ha="center", va="center")
+        bx.text(0.5, 0.5, "no walk, idle or pick clips", ha="center", va="center")
         bx.set_axis_off()
     fig.suptitle(title, fontsize=11)
-    fig.subplots_adjust(left=0.22, right=0.98, top=0.93, bottom=0.6 / height + 0.02, wspace=0.6)
+    fig.subplots_adjust(left=0.22, right=0.98, top=1.0 - 0.6 / height, bottom=0.6 / height + 0.02, wspace=0.6)
     return fig

@@ -164,17 +164,26 @@ BANDS: dict[tuple[str, str], Band] = {
 
 _IDLE = "ReActIdle standing idle (markerless)"
 _IDLE_BASIS = "1 set, 7 performers, 11 recordings (38-160 s; genuine and acted)"
+_IDLE_PASSES = f"{_IDLE_BASIS}; {_CLEAN_PASSES}"
 BANDS.update(
     {
-        ("idle_sway_sd_cm", "idle"): Band("factor2", _IDLE, {"reactidle_idle": 4.1077}, basis=_IDLE_BASIS),
-        ("idle_sway_fast_rms_mm", "idle"): Band("factor2", _IDLE, {"reactidle_idle": 2.6062}, basis=_IDLE_BASIS),
-        ("idle_sway_median_hz", "idle"): Band("factor2", _IDLE, {"reactidle_idle": 0.15}, basis=_IDLE_BASIS),
+        ("idle_sway_sd_cm", "idle"): Band(
+            "factor2", _IDLE, {"reactidle_idle": 4.1077}, basis=_IDLE_PASSES, gates=False
+        ),
+        ("idle_sway_fast_rms_mm", "idle"): Band(
+            "factor2", _IDLE, {"reactidle_idle": 2.6062}, basis=_IDLE_PASSES, gates=False
+        ),
+        ("idle_sway_median_hz", "idle"): Band(
+            "factor2", _IDLE, {"reactidle_idle": 0.15}, basis=_IDLE_PASSES, gates=False
+        ),
         ("idle_weight_shifts_per_min", "idle"): Band("factor2", _IDLE, {"reactidle_idle": 10.484}, basis=_IDLE_BASIS),
         ("idle_posture_within_between", "idle"): Band(
-            "factor2", _IDLE, {"reactidle_idle": 0.9833}, basis=f"{_IDLE_BASIS}; 124 windows of 10 s"
+            "factor2", _IDLE, {"reactidle_idle": 0.9833}, basis=f"{_IDLE_PASSES}; 124 windows of 10 s", gates=False
         ),
         ("channels_static_share", "idle"): Band("share", _IDLE, {"reactidle_idle": 0.1667}, basis=_IDLE_BASIS),
-        ("channels_near_static_share", "idle"): Band("share", _IDLE, {"reactidle_idle": 0.1296}, basis=_IDLE_BASIS),
+        ("channels_near_static_share", "idle"): Band(
+            "share", _IDLE, {"reactidle_idle": 0.1296}, basis=_IDLE_PASSES, gates=False
+        ),
         ("channels_moving_share", "idle"): Band("share", _IDLE, {"reactidle_idle": 0.7037}, basis=_IDLE_BASIS),
     }
 )

@@ -26,6 +26,7 @@ from ..core.motion import Motion
 from ..core.quaternions import quat_to_rotvec
 from ..io.dataset import MotionDataset
 from ..metrics import realism as rm
+from ..metrics import standing
 from ..prep.contacts import detect_foot_contacts
 from ..prep.options import PrepOptions
 from ..prep.segmentation import hand_speed, reach_boundary
@@ -305,10 +306,10 @@ def _idle_rows(
     for m, subject in zip(motions, subjects):
         pos = m.positions() * prep.units_cm
         hips, la, ra = (pos[:, joint_map.index(m.skeleton, j), ::2] for j in ("hips", "left_ankle", "right_ankle"))
-        sd.append(rm.sway_sd(hips))
-        fast.append(10.0 * rm.sway_band_rms(hips, m.fps, s.idle_fast_hz))
-        freq.append(rm.sway_median_frequency(hips, m.fps, s.idle_band_hz, s.idle_segment_s))
-        shifts += rm.weight_shifts(rm.support_ratio(hips, la, ra), m.fps, s.idle_margin, s.idle_min_s)
+        sd.append(standing.sway_sd(hips))
+        fast.append(10.0 * standing.sway_band_rms(hips, m.fps, s.idle_fast_hz))
+        freq.append(standing.sway_median_frequency(hips, m.fps, s.idle_band_hz, s.idle_segment_s))
+        shifts += standing.weight_shifts(standing.support_ratio(hips, la, ra), m.fps, s.idle_margin, s.idle_min_s)
         minutes += m.duration / 60.0
         n = max(1, int(round(s.idle_window_s * m.fps)))
         for a in range(0, m.n_frames - n + 1, n):
