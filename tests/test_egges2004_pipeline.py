@@ -294,3 +294,13 @@ def test_settings_from_the_schema_defaults_are_the_class_defaults():
     assert Egges2004Settings.from_dict(opts).to_dict() == opts
     with pytest.raises(ValueError, match="egges2004.repetition.perlin_frequency_hz"):
         Egges2004Settings.from_dict({"repetition": {"perlin_frequency_hz": 1.0}})
+
+
+def test_components_for_a_share_of_the_posture_variance(fitted):
+    """The fewest leading PCs holding a share of the variance: all of it needs every PC, a
+    first PC alone holds its own share."""
+    *_, model, _ = fitted
+    pca = model.pca
+    first = pca.explained_variance_[0] / pca.explained_variance_.sum()
+    assert pca.components_for(first * 0.999) == 1 and pca.components_for(1.0) <= len(pca.explained_variance_)
+    assert pca.components_for(0.9) <= pca.components_for(0.95) <= pca.components_for(0.99)

@@ -22,6 +22,12 @@ def main(snakemake) -> None:
     result.table.to_csv(snakemake.output.categories, index=False)
     save_figure(draw_categories(result), snakemake.output.graph)
     logging.info("%d subjects; categories:\n%s", len(model.databases), result.table.to_string())
+    logging.info(
+        "posture PCA (Sec. 3.2): %d dimensions; %s of the variance in the first %s PCs (the paper gives no share)",
+        len(model.pca.explained_variance_),
+        " / ".join(f"{q:.0%}" for q in (0.9, 0.95, 0.99)),
+        " / ".join(str(model.pca.components_for(q)) for q in (0.9, 0.95, 0.99)),
+    )
 
 
 if "snakemake" in globals():

@@ -133,6 +133,11 @@ class PosturePCA:
         (..., 3); the PCA is linear, so this is a constant offset in PC space."""
         return pcs + (np.asarray(delta_cm) * self.translation_scale) @ self.components_[:, -3:].T
 
+    def components_for(self, share: float) -> int:
+        """The fewest leading PCs that hold ``share`` of the posture variance (e.g. 0.9)."""
+        ratio = np.cumsum(self.explained_variance_) / np.sum(self.explained_variance_)
+        return int(min(np.searchsorted(ratio, share) + 1, len(ratio)))
+
     def project(self, motion: Motion) -> np.ndarray:
         """(T, D) PC values of every frame of ``motion`` (Fig. 1, left to right)."""
         if motion.skeleton.n_joints != self.base_rotations.shape[0]:
