@@ -14,7 +14,7 @@ def main(snakemake) -> None:
     fig = dataset_overview(
         dataset,
         n_keys=ReportSettings.from_dict(snakemake.params.settings).overview_key_frames,
-        title=f"Dataset '{snakemake.wildcards.dataset}': one clip per behaviour (left) and per walking style (right)",
+        title=f"Dataset '{snakemake.wildcards.dataset}'",
     )
     fig.savefig(snakemake.output[0], dpi=110)
     plt.close(fig)

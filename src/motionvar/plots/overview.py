@@ -53,7 +53,8 @@ def dataset_overview(
     walk_behaviour: str = "walk",
 ) -> Figure:
     """Key frames (side view of locomotion, front view of standing) of one clip per
-    behaviour (left block) and one clip per walking style (right block)."""
+    behaviour (left block) and one clip per walking style (right block, where the data has
+    walking styles); ``title`` is followed by what the blocks show."""
     behaviours, styles = overview_clips(dataset.metadata, behaviour_col, style_col, walk_behaviour)
 
     def row(label: str, i: int) -> KeyFrameRow:
@@ -73,4 +74,5 @@ def dataset_overview(
         blocks.append([row(lab, i) for lab, i in styles])
     n_rows = max(len(b) for b in blocks)
     rows = [r for b in blocks for r in b + [None] * (n_rows - len(b))]
-    return key_frame_grid(rows, n_keys=n_keys, columns=len(blocks), title=title)
+    shown = "one clip per behaviour" + (" (left) and per walking style (right)" if styles else "")
+    return key_frame_grid(rows, n_keys=n_keys, columns=len(blocks), title=f"{title}: {shown}" if title else shown)
