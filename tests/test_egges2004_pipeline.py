@@ -131,7 +131,8 @@ def test_time_split_holds_out_the_end_of_every_recording(fitted):
     for subject, rows in clips.items():
         assert len(train[subject]) == len(test[subject]) == len(rows)
         for (row, motion), (tr, tm), (te, em) in zip(rows, train[subject], test[subject]):
-            cut = motion.n_frames - round(0.3 * motion.n_frames)
+            cut = clip_part(tr["clip_id"])[1].stop  # a rest within 3 s of the 70 % point
+            assert abs(cut - (motion.n_frames - round(0.3 * motion.n_frames))) <= round(3 * motion.fps)
             assert clip_part(tr["clip_id"]) == (row["clip_id"], slice(0, cut))
             assert clip_part(te["clip_id"]) == (row["clip_id"], slice(cut, motion.n_frames))
             assert np.array_equal(np.concatenate([tm.rotations, em.rotations]), motion.rotations)
@@ -142,6 +143,25 @@ def test_time_split_holds_out_the_end_of_every_recording(fitted):
     assert clip_part("a[b]") == ("a[b]", slice(None))
     with pytest.raises(ValueError, match="held_out_fraction"):
         SETTINGS.replace(held_out_fraction=1.0)
+
+
+def test_the_cut_falls_in_a_rest_not_in_a_shift():
+    """A pelvis that rests, shifts between 60 and 62 s and rests again: asked to cut at 61 s,
+    the cut moves into a rest within the search window, never into the shift."""
+    from motionvar.core import Motion, cmu_skeleton
+    from motionvar.egges2004.pipeline import rest_cut
+
+    fps, n = 24.0, 24 * 100
+    t = np.arange(n) / fps
+    x = np.clip((t - 60.0) / 2.0, 0.0, 1.0) * 15.0  # 15 cm over 2 s
+    root = np.stack([x, np.full(n, 90.0), np.zeros(n)], axis=1)
+    skel = cmu_skeleton()  # only the root moves
+    rot = np.zeros((n, skel.n_joints, 4))
+    rot[..., 0] = 1.0
+    motion = Motion(skel, root, rot, fps)
+    cut = rest_cut(motion, int(61 * fps), search_s=3.0)
+    assert not 59.5 * fps <= cut <= 62.5 * fps and abs(cut - 61 * fps) <= 3 * fps
+    assert rest_cut(motion, int(30 * fps), search_s=0.0) == int(30 * fps)
 
 
 def test_bad_inputs_name_the_problem(fitted, tmp_path):

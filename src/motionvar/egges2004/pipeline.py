@@ -12,6 +12,7 @@ import logging
 import re
 from dataclasses import dataclass
 
+import numpy as np
 import pandas as pd
 
 from ..core.joint_map import JointMap
@@ -82,16 +83,33 @@ def split_clips(clips: Clips, held_out: int) -> tuple[Clips, Clips]:
     return train, test
 
 
-def split_recordings(clips: Clips, fraction: float) -> tuple[Clips, Clips]:
-    """Per recording, its first frames for training and its last ``fraction`` of them held
-    out (each part's clip_id ``<clip_id>[<start>:<stop>]``): one long recording per person
-    serves both, as the paper builds a database from "one or more recorded animations"
-    (Sec. 5.6)."""
+def rest_cut(motion: Motion, target: int, search_s: float, smooth_s: float = 1.0) -> int:
+    """The frame within ``search_s`` seconds of ``target`` where the pelvis moves least over
+    the ground (its horizontal speed averaged over ``smooth_s`` s): a cut there falls in a rest,
+    so the balance shifts on either side stay whole (Sec. 5.1's units: rests and the shifts
+    between them)."""
+    n = motion.n_frames
+    if n < 3:
+        return target
+    root = motion.root_pos[:, [0, 2]]
+    speed = np.linalg.norm(np.gradient(root, axis=0), axis=1)
+    w = max(1, int(round(smooth_s * motion.fps)))
+    speed = np.convolve(speed, np.ones(w) / w, mode="same")
+    r = int(round(search_s * motion.fps))
+    lo, hi = max(1, target - r), min(n - 1, target + r + 1)
+    return lo + int(np.argmin(speed[lo:hi])) if hi > lo else target
+
+
+def split_recordings(clips: Clips, fraction: float, search_s: float) -> tuple[Clips, Clips]:
+    """Per recording, its first frames for training and about its last ``fraction`` of them
+    held out, cut at a rest within ``search_s`` s of that point (:func:`rest_cut`; each part's
+    clip_id ``<clip_id>[<start>:<stop>]``): one long recording per person serves both, as the
+    paper builds a database from "one or more recorded animations" (Sec. 5.6)."""
     train: Clips = {}
     test: Clips = {}
     for subject, rows in clips.items():
         for row, motion in rows:
-            cut = motion.n_frames - int(round(fraction * motion.n_frames))
+            cut = rest_cut(motion, motion.n_frames - int(round(fraction * motion.n_frames)), search_s)
             for out, (a, b) in ((train, (0, cut)), (test, (cut, motion.n_frames))):
                 part = row.copy()
                 part["clip_id"] = f"{row['clip_id']}[{a}:{b}]"
@@ -105,7 +123,7 @@ def split_idle(clips: Clips, settings: Egges2004Settings) -> tuple[Clips, Clips]
     """(training, held-out) idle clips per subject, by ``settings.held_out_by``:
     :func:`split_clips` or :func:`split_recordings`."""
     if settings.held_out_by == "time":
-        return split_recordings(clips, settings.held_out_fraction)
+        return split_recordings(clips, settings.held_out_fraction, settings.held_out_search_s)
     return split_clips(clips, settings.held_out_clips)
 
 

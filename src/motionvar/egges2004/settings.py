@@ -166,6 +166,8 @@ class Egges2004Settings(Settings):
         database from "one or more recorded animations", Sec. 5.6).
     held_out_clips: idle clips per subject held out (``held_out_by: clips``).
     held_out_fraction: share of every recording held out at its end (``held_out_by: time``).
+    held_out_search_s: the cut falls at the rest (the pelvis's slowest second) within this many
+        seconds of that share, so that no balance shift is cut in two.
     translation_scale: factor on the root translation (cm) in the posture vectors: 0.01
         gives metres, the H-Anim unit of the paper's skeleton (Sec. 3.2).
     perlin_frequency_hz: lattice frequency (Hz) of the Perlin-noise-on-PCs baseline; set by
@@ -181,6 +183,7 @@ class Egges2004Settings(Settings):
     held_out_by: str = "clips"
     held_out_clips: int = 1
     held_out_fraction: float = 0.3
+    held_out_search_s: float = 3.0
     translation_scale: float = 0.01
     perlin_frequency_hz: float = 0.5
     figure_subjects: int = 3
