@@ -460,11 +460,6 @@ def _pct(a: float, b: float) -> str:
     return f"{100 * (a / b - 1):+.1f}%"
 
 
-def _range(values: Sequence[float]) -> str:
-    lo, hi = min(values), max(values)
-    return f"{lo:.2f}" if abs(lo - hi) <= 5e-3 + 1e-5 * abs(hi) else f"{lo:.2f}-{hi:.2f}"  # np.isclose
-
-
 def _setup(m: Measurements) -> str:
     """The sentence every Table 5.2 claim ends with: samples, data, training regimes and the
     range of latent dimensions the models use (each model's in the table, column active_latents)."""

@@ -103,11 +103,6 @@ def _stats(m: Measurements, method: str, cycles: str = "all") -> Mapping[str, An
     return m["summary"].get(method, {}).get(cycles)
 
 
-def _pose(m: Measurements, method: str, cycles: str) -> str:
-    s = _stats(m, method, cycles)
-    return "-" if s is None else f"{s['mean_pose_error_cm']:.2f}"
-
-
 def _folds_text(m: Measurements) -> str:
     return (
         f"each fold leaves out a whole walk ({m['walks']} walks)"

@@ -268,12 +268,6 @@ def reconstruct_root(
 CLEANUPS = ("root", "root+feet")
 
 
-def check_cleanup(cleanup: str) -> str:
-    if cleanup not in CLEANUPS:
-        raise ValueError(f"footskate cleanup must be one of {list(CLEANUPS)}; got {cleanup!r}")
-    return cleanup
-
-
 #: Where a pinned foot is held during a contact (:func:`contact_offsets`).
 ANCHORS = ("median", "start")
 

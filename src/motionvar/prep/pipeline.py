@@ -23,7 +23,6 @@ from .intervals import Segment, parse_segments
 from .options import PrepOptions
 from .segmentation import SEGMENT_NEEDS, segment_motion
 
-SEGMENT_COLUMNS = ("clip_id", "source_clip", "primitive", "start_frame", "stop_frame")
 DROPPED_COLUMNS = ("clip_id", "behaviour", "primitive", "start_frame", "stop_frame", "n_frames", "duration_s", "reason")
 """Columns of :attr:`Preprocessed.dropped`: the source clip, its behaviour, the dropped
 primitive (empty when the clip had none) with its frames [start, stop) and duration, and why."""

@@ -23,25 +23,6 @@ from scipy import stats
 from .counts import STABLE_SHARE, seed_bounds, seed_names
 
 MISSING = "missing"
-#: columns of the stability table before the per-seed verdict and value columns
-STABILITY_COLUMNS = (
-    "claim_id",
-    "paper",
-    "source",
-    "kind",
-    "statement",
-    "unit",
-    "direction",
-    "bound",
-    "verdict",
-    "n_agree",
-    "n_seeds",
-    "stable",
-    "value_mean",
-    "value_sd",
-    "value_ci_low",
-    "value_ci_high",
-)
 
 
 def _numbers(column: pd.Series) -> pd.Series:
@@ -63,7 +44,9 @@ def _mean_interval(values: np.ndarray, level: float = 0.95) -> tuple[float, floa
 
 def claims_stability(tables: Mapping[str, pd.DataFrame], stable_share: float = STABLE_SHARE) -> pd.DataFrame:
     """One row per claim seen in any of ``tables`` (seed name -> merged claims table): the
-    columns of :data:`STABILITY_COLUMNS`, then ``verdict_<seed>``, ``value_<seed>`` and
+    claim's columns (claim_id, paper, source, kind, statement, unit, direction, bound), its
+    verdict, n_agree, n_seeds, stable and the values' mean, SD and 95 % interval
+    (value_mean, value_sd, value_ci_low, value_ci_high), then ``verdict_<seed>``, ``value_<seed>`` and
     ``bound_<seed>`` per seed in the order given (``bound`` is the first seed's; a bound measured
     on the data, such as a recorded reference, differs between seeds). ``verdict`` is the most
     common verdict (ties: the first seed's order), ``stable`` whether at least ``stable_share``

@@ -73,11 +73,6 @@ class BodyGeometry:
         """(2,) ankle height above the floor with the foot flat (toe base on the floor)."""
         return -self.toe[:, 1]
 
-    @property
-    def leg_length(self) -> float:
-        """Mean thigh + shin + ankle height (cm)."""
-        return float(np.mean(self.thigh + self.shin + self.ankle_height))
-
 
 @dataclass
 class Contact:

@@ -55,11 +55,6 @@ class FunctionLayout:
         """Root translation (..., 3) and quaternions (..., J, 4) -> (..., D)."""
         return np.concatenate([root_pos, rotations.reshape(*rotations.shape[:-2], 4 * self.n_joints)], axis=-1)
 
-    def function_names(self, joint_names: Sequence[str]) -> list[str]:
-        if len(joint_names) != self.n_joints:
-            raise ValueError(f"expected {self.n_joints} joint names; got {len(joint_names)}")
-        return ["root_x", "root_y", "root_z"] + [f"{j}_q{c}" for j in joint_names for c in "wxyz"]
-
     def function_groups(self) -> np.ndarray:
         """(D,) group index per function: 0 for the root translation, 1 + j for joint j's
         quaternion (the coarser one-weight-per-joint scaling, as in DFKI's implementation)."""

@@ -247,19 +247,6 @@ class Objective:
         return self.errors(S).sum(axis=1)
 
 
-def constraint_from_sample(
-    primitive: MotionPrimitive, s: np.ndarray, kind: str, frame: int, joints: Sequence[int]
-) -> Constraint:
-    """The constraint that latent vector ``s`` meets exactly (Sec. 4.6.2: "random
-    constraints ... by sampling from the motion models")."""
-    pos, rot = primitive.key_frame_pose(np.asarray(s)[None], [frame], list(joints))
-    if kind == "position":
-        return Constraint("position", frame, tuple(joints), pos[0, 0])
-    if kind == "orientation":
-        return Constraint("orientation", frame, tuple(joints[:1]), rot[0, 0, 0])
-    raise ValueError(f"constraint_from_sample: kind must be position or orientation; got {kind!r}")
-
-
 def random_constraints(
     primitive: MotionPrimitive,
     kind: str,

@@ -113,7 +113,6 @@ class StepResult:
     motion: Motion
     constraints: list[Constraint]
     fit: MapResult
-    tree_error: float
     tree_evals: int
     goal: StepGoal | None = None
     step_errors: np.ndarray | None = None
@@ -317,9 +316,7 @@ def follow_path(
             joint = optimize_chain(chain, seeds, st.likelihood_weight, st.joint_method, st.joint_max_nfev)
             fit = _with_latent(prim, cons, fit, joint.latents[0])
         steps.append(
-            StepResult(
-                name, prim.to_motions(fit.latent[None])[0], cons, fit, found.error, found.n_evals, goals[0], step_errors
-            )
+            StepResult(name, prim.to_motions(fit.latent[None])[0], cons, fit, found.n_evals, goals[0], step_errors)
         )
         starts.append((pos, heading))
         step_log(len(steps))

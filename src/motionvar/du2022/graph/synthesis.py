@@ -46,12 +46,11 @@ from .primitive import MotionPrimitive
 @dataclass
 class MapResult:
     """Outcome of :func:`optimize_map`: the latent vector, per-constraint errors before
-    and after, log p(s) before and after, LM's function evaluations and status."""
+    and after, log p(s) after, LM's function evaluations and status."""
 
     latent: np.ndarray
     errors_before: np.ndarray
     errors_after: np.ndarray
-    log_prob_before: float
     log_prob_after: float
     n_evals: int
     status: int
@@ -118,7 +117,6 @@ def optimize_map(
         latent=s,
         errors_before=before,
         errors_after=after,
-        log_prob_before=float(primitive.log_prob(s0[None])[0]),
         log_prob_after=float(primitive.log_prob(s[None])[0]),
         n_evals=int(objective.n_evals),
         status=int(result.status),
@@ -250,13 +248,12 @@ class StepChain:
 @dataclass
 class ChainResult:
     """Outcome of :func:`optimize_chain`: the latent vector of each step, per-step
-    constraint errors (K, 2) before and after, log p of each step before and after,
+    constraint errors (K, 2) before and after, log p of each step after,
     residual evaluations (latent vectors of the chain) and least_squares' status."""
 
     latents: list[np.ndarray]
     errors_before: np.ndarray
     errors_after: np.ndarray
-    log_prob_before: np.ndarray
     log_prob_after: np.ndarray
     n_evals: int
     status: int
@@ -306,7 +303,6 @@ def optimize_chain(
         return ((R[1:] - R[0]) / h[:, None]).T
 
     before = chain.errors(x0[None])[0]
-    lp_before = -(chain.nll(x0[None])[0] + np.array([p.nll_reference() for p in chain.primitives]))
     result = least_squares(fun, x0, jac=jac, method=method, max_nfev=int(max_nfev))
     x = on_grid(result.x)
     after = chain.errors(x[None])[0]
@@ -315,7 +311,6 @@ def optimize_chain(
         latents=[v.copy() for v in chain.split(x)],
         errors_before=before,
         errors_after=after,
-        log_prob_before=lp_before,
         log_prob_after=lp_after,
         n_evals=int(chain.n_evals),
         status=int(result.status),
