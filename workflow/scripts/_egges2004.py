@@ -11,13 +11,6 @@ def settings(snakemake):
     return Egges2004Settings.from_dict(snakemake.params.settings)
 
 
-def joint_map(snakemake):
-    from motionvar.core import cmu_joint_map
-    from motionvar.io.joint_map_file import load_joint_map
-
-    return load_joint_map(snakemake.params.joint_map) if snakemake.params.joint_map else cmu_joint_map()
-
-
 def model(snakemake):
     from motionvar.egges2004.storage import load_idle_model
 
@@ -32,6 +25,8 @@ def prep(snakemake):
 
 
 def recordings(snakemake, idle_model):  # (training, held-out) analysed recordings per subject
+    from _rule import joint_map
+
     from motionvar.egges2004.pipeline import model_recordings
 
     dataset, source = prep(snakemake)

@@ -5,15 +5,6 @@ from __future__ import annotations
 from pathlib import Path
 
 
-def joint_map(snakemake):
-    """The dataset's joint map (``params.joint_map``), or the CMU one."""
-    from motionvar.core import cmu_joint_map
-    from motionvar.io.joint_map_file import load_joint_map
-
-    path = snakemake.params.joint_map
-    return load_joint_map(path) if path else cmu_joint_map()
-
-
 def dataset(clips_path: str):
     """The packed dataset whose ``clips.npz`` is ``clips_path``."""
     from motionvar.io import load_dataset

@@ -6,14 +6,6 @@ from __future__ import annotations
 WALKS_DTYPES = {"clip_id": str, "subject": str, "source_clip": str}
 
 
-def joint_map(snakemake):
-    from motionvar.core import cmu_joint_map
-    from motionvar.io.joint_map_file import load_joint_map
-
-    path = snakemake.params.joint_map
-    return load_joint_map(path) if path else cmu_joint_map()
-
-
 def settings(snakemake):
     """The rule's Ma2010Settings, built from its whole config section (params.settings)."""
     from motionvar.ma2010.settings import Ma2010Settings
@@ -25,6 +17,7 @@ def load_walks(snakemake, settings):
     """The cycles of input ``clips`` (ClipSet model file) with the subjects and walks of input
     ``table``; the root rotation in the joint group ``settings.root_group``."""
     import pandas as pd
+    from _rule import joint_map
 
     from motionvar.io.model_file import load_model
     from motionvar.ma2010.examples import CLIPSET_KIND, WalkCycles

@@ -173,6 +173,14 @@ def _fail(snakemake, log, message: str) -> None:
     sys.exit(1)
 
 
+def joint_map(snakemake):
+    """The dataset's joint map: the YAML file its config names (``params.joint_map``), or the
+    CMU rig's."""
+    from motionvar.io.joint_map_file import rig_joint_map
+
+    return rig_joint_map(snakemake.params.joint_map)
+
+
 def write_not_applicable(snakemake, reason: str) -> None:
     """The evaluation's outputs when its input turns out insufficient (NotApplicable):
     each of its claims not applicable with ``reason``, a table and a figure saying so; further

@@ -16,16 +16,14 @@ def load_inputs(snakemake):
     from pathlib import Path
 
     import torch
+    from _rule import joint_map
 
-    from motionvar.core import cmu_joint_map
     from motionvar.du2022.style import FeatureSpace
     from motionvar.du2022.style.data import dataset_layout
     from motionvar.io import load_dataset
-    from motionvar.io.joint_map_file import load_joint_map
 
     torch.set_num_threads(snakemake.threads)
-    path = snakemake.params.joint_map
     dataset = load_dataset(Path(snakemake.input.clips).parent)
-    layout = dataset_layout(dataset, load_joint_map(path) if path else cmu_joint_map())
+    layout = dataset_layout(dataset, joint_map(snakemake))
     space = FeatureSpace.load(snakemake.input.autoencoder) if hasattr(snakemake.input, "autoencoder") else None
     return dataset, layout, space

@@ -9,10 +9,9 @@ def main(snakemake) -> None:
 
     from motionvar.applicability import applicability_table
     from motionvar.config_sections import section_settings
-    from motionvar.core import cmu_joint_map
     from motionvar.du2022.requirements import fda_requirements, graph_requirements, style_requirements
     from motionvar.egges2004.requirements import requirements as egges2004
-    from motionvar.io.joint_map_file import load_joint_map
+    from motionvar.io.joint_map_file import rig_joint_map
     from motionvar.ma2010.requirements import requirements as ma2010
 
     p = snakemake.params
@@ -25,8 +24,7 @@ def main(snakemake) -> None:
     }
     reqs = [r for section, of in papers.items() for r in of(section_settings(section, getattr(p, section)))]
     meta = {stage: pd.read_csv(snakemake.input[stage], dtype=str, keep_default_na=False) for stage in ("data", "prep")}
-    joint_map = load_joint_map(p.joint_map) if p.joint_map else cmu_joint_map()
-    table = applicability_table([r for r in reqs if r.evaluation in p.evaluations], meta, joint_map)
+    table = applicability_table([r for r in reqs if r.evaluation in p.evaluations], meta, rig_joint_map(p.joint_map))
     missing = sorted(set(p.evaluations) - set(table["evaluation"]))
     if missing:
         raise ValueError(

@@ -5,7 +5,8 @@ import logging
 from pathlib import Path
 
 from motionvar.core import cmu_joint_map
-from motionvar.io import import_bvh_folder, load_joint_map, save_dataset
+from motionvar.io import import_bvh_folder, save_dataset
+from motionvar.io.joint_map_file import rig_joint_map
 from motionvar.io.plausibility import plausibility_gate
 
 KEYS = ("drop_first_frame", "behaviour_aliases", "style_aliases", "neutral_style", "mixed_rigs", "primitive_labels")
@@ -18,7 +19,7 @@ def load(entry: dict, workers: int = 1):
 
         spec = SynthSpec(**{k: v for k, v in entry.items() if k != "source"})
         return (*generate_dataset(spec, workers=workers), cmu_joint_map())
-    jm = load_joint_map(entry["joint_map"]) if entry["joint_map"] else cmu_joint_map()
+    jm = rig_joint_map(entry["joint_map"])
     kw = {k: entry[k] for k in KEYS if k in entry}
     return (*import_bvh_folder(entry["path"], entry["labels"], entry["unit_cm"], joint_map=jm, **kw), jm)
 

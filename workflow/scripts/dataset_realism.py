@@ -6,18 +6,16 @@ def main(snakemake) -> None:
     from pathlib import Path
 
     import matplotlib.pyplot as plt
+    from _rule import joint_map
 
-    from motionvar.core import cmu_joint_map
     from motionvar.io import load_dataset
-    from motionvar.io.joint_map_file import load_joint_map
     from motionvar.plots import realism_figure
     from motionvar.prep import PrepOptions
     from motionvar.realism import RealismSettings, dataset_realism, judge
 
-    path = snakemake.params.joint_map
     table, joints = dataset_realism(
         load_dataset(Path(snakemake.input.clips).parent),
-        load_joint_map(path) if path else cmu_joint_map(),
+        joint_map(snakemake),
         PrepOptions.from_dict(snakemake.params.prep),
         RealismSettings.from_dict(snakemake.params.settings),
     )

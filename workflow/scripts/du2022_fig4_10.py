@@ -7,8 +7,8 @@ constraint errors that remain and each reach's log-likelihood."""
 
 
 def main(snakemake) -> None:
-    from _graph import dataset, joint_map, models
-    from _rule import write_evaluation
+    from _graph import dataset, models
+    from _rule import joint_map, write_evaluation
 
     from motionvar.du2022.graph.evaluations import evaluate_fig4_10
     from motionvar.du2022.graph.figures import animate_fig4_10, draw_fig4_10

@@ -4,8 +4,8 @@ training clips, as 2-D kernel densities in three projections, with a coverage nu
 
 
 def main(snakemake) -> None:
-    from _graph import dataset, joint_map, models
-    from _rule import write_evaluation
+    from _graph import dataset, models
+    from _rule import joint_map, write_evaluation
 
     from motionvar.du2022.graph.evaluations import evaluate_fig4_9
     from motionvar.du2022.graph.figures import draw_fig4_9

@@ -7,7 +7,7 @@ def main(snakemake) -> None:
     import logging
     from pathlib import Path
 
-    from _graph import joint_map
+    from _rule import joint_map
 
     from motionvar.du2022.graph.settings import GraphSettings
     from motionvar.io import save_dataset

@@ -8,7 +8,7 @@ def main(snakemake) -> None:
     import logging
 
     import pandas as pd
-    from _graph import joint_map
+    from _rule import joint_map
 
     from motionvar.du2022.graph import MorphableGraph
     from motionvar.du2022.graph.settings import GraphSettings

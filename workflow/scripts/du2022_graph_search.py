@@ -10,7 +10,8 @@ k-means beam under the evaluation budget). Settings: config graph.search and gra
 def main(snakemake) -> None:
     import logging
 
-    from _graph import joint_map, models
+    from _graph import models
+    from _rule import joint_map
 
     from motionvar.du2022.graph.evaluations import search_primitive
     from motionvar.du2022.graph.settings import GraphSettings

@@ -7,16 +7,13 @@ its feature layout (Sec. 5.2) and each primitive's real-time frame rate
 def main(snakemake) -> None:
     import logging
 
+    from _rule import joint_map
     from _style import load_inputs, load_settings
 
-    from motionvar.core import cmu_joint_map
     from motionvar.du2022.style.generate import fit_rig, save_rig
-    from motionvar.io.joint_map_file import load_joint_map
 
     dataset, _, _ = load_inputs(snakemake)
-    path = snakemake.params.joint_map
-    joint_map = load_joint_map(path) if path else cmu_joint_map()
-    rig = fit_rig(dataset, joint_map, load_settings(snakemake).canonical_frames)
+    rig = fit_rig(dataset, joint_map(snakemake), load_settings(snakemake).canonical_frames)
     save_rig(snakemake.output.model, rig)
     logging.info(
         "%d joints, %d feature joints; fps per primitive %s", rig.skeleton.n_joints, rig.layout.n_joints, rig.fps

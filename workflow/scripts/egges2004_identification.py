@@ -3,8 +3,8 @@ identify its person? (motionvar.egges2004.evaluations.identification)"""
 
 
 def main(snakemake) -> None:
-    from _egges2004 import joint_map, model, recordings, settings
-    from _rule import write_evaluation
+    from _egges2004 import model, recordings, settings
+    from _rule import joint_map, write_evaluation
 
     from motionvar.egges2004.evaluations.identification import identification
     from motionvar.egges2004.figures import draw_identification

@@ -7,7 +7,8 @@ graphs (Fig. 3)."""
 def main(snakemake) -> None:
     import logging
 
-    from _egges2004 import joint_map, prep, save_figure, settings
+    from _egges2004 import prep, save_figure, settings
+    from _rule import joint_map
 
     from motionvar.egges2004.evaluations import category_check
     from motionvar.egges2004.figures import draw_categories

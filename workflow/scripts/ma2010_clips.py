@@ -8,7 +8,8 @@ def main(snakemake) -> None:
     import logging
     from pathlib import Path
 
-    from _ma2010 import joint_map, settings
+    from _ma2010 import settings
+    from _rule import joint_map
 
     from motionvar.io import load_dataset
     from motionvar.io.model_file import save_model

@@ -5,8 +5,8 @@ the maxima of S_M(t) fall at one gait phase (motionvar.ma2010.evaluations.fig3).
 def main(snakemake) -> None:
     from pathlib import Path
 
-    from _ma2010 import joint_map, settings
-    from _rule import write_evaluation
+    from _ma2010 import settings
+    from _rule import joint_map, write_evaluation
 
     from motionvar.io import load_dataset
     from motionvar.ma2010.evaluations.fig3 import fig3_keyframes

@@ -7,19 +7,18 @@ def main(snakemake) -> None:
     import logging
     from pathlib import Path
 
-    from motionvar.core import cmu_joint_map
+    from _rule import joint_map
+
     from motionvar.io import load_dataset, save_dataset
-    from motionvar.io.joint_map_file import load_joint_map
     from motionvar.prep import PrepOptions, drop_summary, preprocess_dataset
 
     try:
         options = PrepOptions.from_dict(snakemake.params.options)
     except ValueError as exc:
         raise ValueError(f"config prep: {exc}") from exc
-    path, name = snakemake.params.joint_map, snakemake.wildcards.dataset
-    joint_map = load_joint_map(path) if path else cmu_joint_map()
+    name = snakemake.wildcards.dataset
     dataset = load_dataset(Path(snakemake.input.clips).parent)
-    result = preprocess_dataset(dataset, joint_map, options, name=name)
+    result = preprocess_dataset(dataset, joint_map(snakemake), options, name=name)
     prep = Path(snakemake.output.clips).parent
     save_dataset(prep, result.motions, result.metadata)
     result.dropped.to_csv(getattr(snakemake.output, "dropped", prep / "dropped.csv"), index=False, float_format="%.6g")

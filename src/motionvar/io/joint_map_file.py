@@ -68,3 +68,11 @@ def load_joint_map(path: str | Path) -> JointMap:
     if twice:
         raise JointMapError(f"{path}: joints listed more than once in groups: {twice}")
     return JointMap.from_dict({"joints": joints, "groups": groups}, origin=str(path))
+
+
+def rig_joint_map(path: str | Path | None) -> JointMap:
+    """The joint map of a dataset's rig: the YAML at ``path`` (:func:`load_joint_map`), or the
+    CMU 31-joint rig's (:func:`~motionvar.core.joint_map.cmu_joint_map`) when ``path`` is empty."""
+    from ..core.joint_map import cmu_joint_map
+
+    return load_joint_map(path) if path else cmu_joint_map()
