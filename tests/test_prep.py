@@ -619,7 +619,7 @@ def test_preprocess_script_lists_and_logs_what_it_dropped(tmp_path, capsys):
             "preprocess",
             input=Named(clips=str(tmp_path / "short" / "clips.npz")),
             output=Named(clips=str(out / "clips.npz"), metadata=str(out / "metadata.csv")),
-            params=Named(options=options, joint_map=None),
+            params=Named(settings=options, joint_map=None),
             wildcards=Named(dataset="mine"),
         )
 

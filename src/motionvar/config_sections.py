@@ -1,7 +1,8 @@
 """Config section -> its settings class (the one place each section's defaults are written).
 
-Rule scripts call :func:`section_settings` with the section's merged config (passed whole as
-the rule's ``params.settings``); ``tests/test_settings.py`` holds every class to the schema in
+Rule scripts build every section's settings through one door, ``_rule.config_settings(snakemake,
+section)``, which calls :func:`section_settings` with the section's merged config (passed whole as
+the rule's ``params.settings``, or as ``params.<section>`` for a section beside the rule's own); ``tests/test_settings.py`` holds every class to the schema in
 ``config/schema.yaml``. The classes are imported on first use, so that a rule loads only its
 own paper's package."""
 

@@ -1,5 +1,5 @@
 # Stage 2: foot contacts, segmentation into primitives and alignment
-# (results/{dataset}/prep/; options: config.prep, motionvar.prep.PrepOptions).
+# (results/{dataset}/prep/; settings: config.prep, motionvar.prep.PrepOptions).
 
 
 rule preprocess:
@@ -12,7 +12,7 @@ rule preprocess:
         metadata=f"{PREP}/metadata.csv",
         dropped=f"{PREP}/dropped.csv",
     params:
-        options=config["prep"],
+        settings=config["prep"],
         joint_map=lambda wc: joint_map_path(wc.dataset),
     log:
         ev_log("preprocess"),

@@ -6,9 +6,9 @@ from pathlib import Path
 
 def settings(snakemake):
     """The rule's Egges2004Settings, from the whole config section (params.settings)."""
-    from motionvar.egges2004.settings import Egges2004Settings
+    from _rule import config_settings
 
-    return Egges2004Settings.from_dict(snakemake.params.settings)
+    return config_settings(snakemake, "egges2004")
 
 
 def model(snakemake):

@@ -8,9 +8,9 @@ WALKS_DTYPES = {"clip_id": str, "subject": str, "source_clip": str}
 
 def settings(snakemake):
     """The rule's Ma2010Settings, built from its whole config section (params.settings)."""
-    from motionvar.ma2010.settings import Ma2010Settings
+    from _rule import config_settings
 
-    return Ma2010Settings.from_dict(snakemake.params.settings)
+    return config_settings(snakemake, "ma2010")
 
 
 def load_walks(snakemake, settings):

@@ -173,6 +173,16 @@ def _fail(snakemake, log, message: str) -> None:
     sys.exit(1)
 
 
+def config_settings(snakemake, section: str):
+    """The settings object of config ``section`` (motionvar.config_sections: the one place its
+    defaults are written) from the section's merged config the rule passes whole: as
+    ``params.<section>`` where the rule reads a section beside its own, else ``params.settings``."""
+    from motionvar.config_sections import section_settings
+
+    params = snakemake.params
+    return section_settings(section, getattr(params, section) if hasattr(params, section) else params.settings)
+
+
 def joint_map(snakemake):
     """The dataset's joint map: the YAML file its config names (``params.joint_map``), or the
     CMU rig's."""

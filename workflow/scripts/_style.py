@@ -6,9 +6,9 @@ space (input ``autoencoder``, when the rule has one)."""
 
 def load_settings(snakemake):
     """The rule's StyleSettings, from the config section it was given whole."""
-    from motionvar.du2022.style.settings import StyleSettings
+    from _rule import config_settings
 
-    return StyleSettings.from_dict(snakemake.params.settings)
+    return config_settings(snakemake, "style")
 
 
 def load_inputs(snakemake):

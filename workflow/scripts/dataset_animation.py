@@ -5,11 +5,12 @@ def main(snakemake) -> None:
     import logging
     from pathlib import Path
 
+    from _rule import config_settings
+
     from motionvar.io import load_dataset
     from motionvar.plots import animate_motions, overview_clips
-    from motionvar.report.settings import ReportSettings
 
-    report = ReportSettings.from_dict(snakemake.params.settings)
+    report = config_settings(snakemake, "report")
     dataset = load_dataset(Path(snakemake.input.clips).parent)
     behaviours, _ = overview_clips(dataset.metadata)
     chosen = behaviours[: report.animation_clips]

@@ -5,15 +5,15 @@ def main(snakemake) -> None:
     from pathlib import Path
 
     import matplotlib.pyplot as plt
+    from _rule import config_settings
 
     from motionvar.io import load_dataset
     from motionvar.plots import dataset_overview
-    from motionvar.report.settings import ReportSettings
 
     dataset = load_dataset(Path(snakemake.input.clips).parent)
     fig = dataset_overview(
         dataset,
-        n_keys=ReportSettings.from_dict(snakemake.params.settings).overview_key_frames,
+        n_keys=config_settings(snakemake, "report").overview_key_frames,
         title=f"Dataset '{snakemake.wildcards.dataset}'",
     )
     fig.savefig(snakemake.output[0], dpi=110)

@@ -6,18 +6,17 @@ def main(snakemake) -> None:
     from pathlib import Path
 
     import matplotlib.pyplot as plt
-    from _rule import joint_map
+    from _rule import config_settings, joint_map
 
     from motionvar.io import load_dataset
     from motionvar.plots import realism_figure
-    from motionvar.prep import PrepOptions
-    from motionvar.realism import RealismSettings, dataset_realism, judge
+    from motionvar.realism import dataset_realism, judge
 
     table, joints = dataset_realism(
         load_dataset(Path(snakemake.input.clips).parent),
         joint_map(snakemake),
-        PrepOptions.from_dict(snakemake.params.prep),
-        RealismSettings.from_dict(snakemake.params.settings),
+        config_settings(snakemake, "prep"),
+        config_settings(snakemake, "realism"),
     )
     table = judge(table)
     table.to_csv(snakemake.output.table, index=False, float_format="%.6g")

@@ -5,11 +5,11 @@ chosen per primitive (n_basis.csv, read by the other Du 2022 ch. 3 rules)."""
 
 def main(snakemake) -> None:
     from _du2022_fda import canonical
+    from _rule import config_settings
 
     from motionvar.du2022.fda import choose_basis_sizes
-    from motionvar.du2022.fda.settings import FdaSettings
 
-    settings = FdaSettings.from_dict(snakemake.params.settings)
+    settings = config_settings(snakemake, "fda")
     rmse, chosen = choose_basis_sizes(canonical(snakemake), settings.basis)
     rmse.to_csv(snakemake.output.rmse, index=False)
     chosen.to_csv(snakemake.output.n_basis, index=False)

@@ -6,11 +6,12 @@ linear resampling), written as a packed dataset."""
 def main(snakemake) -> None:
     from pathlib import Path
 
+    from _rule import config_settings
+
     from motionvar.du2022.fda import canonical_primitives
-    from motionvar.du2022.fda.settings import FdaSettings
     from motionvar.io import load_dataset, save_dataset
 
-    s = FdaSettings.from_dict(snakemake.params.settings)
+    s = config_settings(snakemake, "fda")
     dataset = load_dataset(Path(snakemake.input.clips).parent)
     motions, metadata = canonical_primitives(dataset, s.behaviours, s.min_clips, s.time_warping)
     save_dataset(Path(snakemake.output.clips).parent, motions, metadata)

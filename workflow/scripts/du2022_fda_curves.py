@@ -9,13 +9,13 @@ def main(snakemake) -> None:
     import numpy as np
     import pandas as pd
     from _du2022_fda import canonical, load_sfpca, setup_threads
+    from _rule import config_settings
 
     from motionvar.du2022.fda import functional_primitive, n_basis_of
     from motionvar.du2022.fda.evaluations import reconstruction_curves
-    from motionvar.du2022.fda.settings import FdaSettings
 
     setup_threads(snakemake)
-    settings = FdaSettings.from_dict(snakemake.params.settings)
+    settings = config_settings(snakemake, "fda")
     primitive = snakemake.wildcards.primitive
     n_basis = n_basis_of(pd.read_csv(snakemake.input.n_basis), primitive, snakemake.input.n_basis)
     fd, meta = functional_primitive(canonical(snakemake), primitive, n_basis)

@@ -6,13 +6,13 @@ read by du2022_fda_curves and du2022_table3_1 (the same fit, at the same dimensi
 def main(snakemake) -> None:
     import pandas as pd
     from _du2022_fda import canonical, setup_threads
+    from _rule import config_settings
 
     from motionvar.du2022.fda import functional_primitive, n_basis_of
     from motionvar.du2022.fda.evaluations.table3_1 import fit_reference_sfpca
-    from motionvar.du2022.fda.settings import FdaSettings
 
     setup_threads(snakemake)
-    settings = FdaSettings.from_dict(snakemake.params.settings)
+    settings = config_settings(snakemake, "fda")
     primitive = snakemake.wildcards.primitive
     n_basis = n_basis_of(pd.read_csv(snakemake.input.n_basis), primitive, snakemake.input.n_basis)
     fd, _ = functional_primitive(canonical(snakemake), primitive, n_basis)

@@ -5,13 +5,12 @@ the du2022_fda_curves files; motionvar.du2022.fda.evaluations.fig3_11."""
 
 def main(snakemake) -> None:
     from _du2022_fda import load_curves
-    from _rule import write_evaluation
+    from _rule import config_settings, write_evaluation
 
     from motionvar.du2022.fda.evaluations import evaluate_fig3_11
     from motionvar.du2022.fda.figures import draw_fig3_11
-    from motionvar.du2022.fda.settings import FdaSettings
 
-    settings = FdaSettings.from_dict(snakemake.params.settings)
+    settings = config_settings(snakemake, "fda")
     result = evaluate_fig3_11(load_curves(snakemake.input.curves), settings)
     write_evaluation(snakemake, result, draw_fig3_11, float_format="%.6g")
 

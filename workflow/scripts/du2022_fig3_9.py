@@ -4,13 +4,12 @@ basis functions K (from du2022_fda_basis); motionvar.du2022.fda.evaluations.fig3
 
 def main(snakemake) -> None:
     import pandas as pd
-    from _rule import write_evaluation
+    from _rule import config_settings, write_evaluation
 
     from motionvar.du2022.fda.evaluations import evaluate_fig3_9
     from motionvar.du2022.fda.figures import draw_fig3_9
-    from motionvar.du2022.fda.settings import FdaSettings
 
-    settings = FdaSettings.from_dict(snakemake.params.settings)
+    settings = config_settings(snakemake, "fda")
     result = evaluate_fig3_9(pd.read_csv(snakemake.input.rmse), settings)
     write_evaluation(snakemake, result, draw_fig3_9, float_format="%.6g")
 

@@ -5,13 +5,12 @@ training clips, as 2-D kernel densities in three projections, with a coverage nu
 
 def main(snakemake) -> None:
     from _graph import dataset, models
-    from _rule import joint_map, write_evaluation
+    from _rule import config_settings, joint_map, write_evaluation
 
     from motionvar.du2022.graph.evaluations import evaluate_fig4_9
     from motionvar.du2022.graph.figures import draw_fig4_9
-    from motionvar.du2022.graph.settings import GraphSettings
 
-    settings = GraphSettings.from_dict(snakemake.params.settings)
+    settings = config_settings(snakemake, "graph")
     clips = snakemake.input.clips
     result = evaluate_fig4_9(
         models(snakemake.input.models), dataset(clips), joint_map(snakemake), settings, source=clips

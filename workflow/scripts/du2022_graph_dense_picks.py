@@ -7,14 +7,13 @@ def main(snakemake) -> None:
     import logging
     from pathlib import Path
 
-    from _rule import joint_map
+    from _rule import config_settings, joint_map
 
-    from motionvar.du2022.graph.settings import GraphSettings
     from motionvar.io import save_dataset
-    from motionvar.prep import PrepOptions, align_motions
+    from motionvar.prep import align_motions
     from motionvar.synth.dense_picks import dense_pick_segments
 
-    entry, settings = snakemake.params.entry, GraphSettings.from_dict(snakemake.params.settings)
+    entry, settings = snakemake.params.entry, config_settings(snakemake, "graph")
     if entry["source"] != "synthetic":
         raise ValueError(f"dataset {snakemake.wildcards.dataset}: dense picks need the synthetic generator")
     pieces, meta = dense_pick_segments(
@@ -23,7 +22,7 @@ def main(snakemake) -> None:
         settings.dense_picks_per_subject,
         grid_spacing_cm=settings.dense_grid_spacing_cm,
     )
-    motions = align_motions(pieces, joint_map(snakemake), PrepOptions.from_dict(snakemake.params.prep))
+    motions = align_motions(pieces, joint_map(snakemake), config_settings(snakemake, "prep"))
     save_dataset(Path(snakemake.output.clips).parent, motions, meta)
     logging.info("%d dense-grid pick_reach clips", len(motions))
 

@@ -8,13 +8,12 @@ def main(snakemake) -> None:
     import logging
 
     import pandas as pd
-    from _rule import joint_map
+    from _rule import config_settings, joint_map
 
     from motionvar.du2022.graph import MorphableGraph
-    from motionvar.du2022.graph.settings import GraphSettings
     from motionvar.du2022.graph.storage import save_graph
 
-    settings = GraphSettings.from_dict(snakemake.params.settings)
+    settings = config_settings(snakemake, "graph")
     saved = {"seed": settings.seed, **settings.synthesis.to_dict()}
     graph = MorphableGraph.from_metadata(pd.read_csv(snakemake.input.metadata, dtype={"clip_id": str}))
     save_graph(snakemake.output.model, graph, joint_map(snakemake), settings=saved)

@@ -7,11 +7,11 @@ def main(snakemake) -> None:
     import logging
 
     from _graph import dataset
+    from _rule import config_settings
 
     from motionvar.du2022.graph import MotionPrimitive, PrimitiveOptions, primitive_clips
-    from motionvar.du2022.graph.settings import GraphSettings
 
-    name, settings = snakemake.wildcards.primitive, GraphSettings.from_dict(snakemake.params.settings)
+    name, settings = snakemake.wildcards.primitive, config_settings(snakemake, "graph")
     options = PrimitiveOptions.from_settings(settings.model, settings.seed)
     # the dense-grid picks (du2022_graph_dense_picks) are pick_reach clips modelled as pick_reach_dense
     clips = snakemake.input.clips

@@ -11,12 +11,11 @@ def main(snakemake) -> None:
     import logging
 
     from _graph import models
-    from _rule import joint_map
+    from _rule import config_settings, joint_map
 
     from motionvar.du2022.graph.evaluations import search_primitive
-    from motionvar.du2022.graph.settings import GraphSettings
 
-    settings = GraphSettings.from_dict(snakemake.params.settings)
+    settings = config_settings(snakemake, "graph")
     (model,) = models([snakemake.input.model]).values()
     queries, trees = search_primitive(model, joint_map(snakemake), settings)
     queries.to_csv(snakemake.output.queries, index=False)

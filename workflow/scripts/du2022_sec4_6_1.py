@@ -11,13 +11,12 @@ def main(snakemake) -> None:
 
     import pandas as pd
     from _graph import model_bytes, models, primitive_clips_of
-    from _rule import write_evaluation
+    from _rule import config_settings, write_evaluation
 
     from motionvar.du2022.graph.evaluations.sec4_6_1 import evaluate_sec4_6_1, fit_half
     from motionvar.du2022.graph.figures import draw_sec4_6_1
-    from motionvar.du2022.graph.settings import GraphSettings
 
-    settings = GraphSettings.from_dict(snakemake.params.settings)
+    settings = config_settings(snakemake, "graph")
     paths, dense = snakemake.input.models, snakemake.input.dense
     loaded = models(paths)
     half = {}

@@ -6,13 +6,12 @@ Fig. 3.10 primitives, fitted here for the others; and FPCA); motionvar.du2022.fd
 def main(snakemake) -> None:
     import pandas as pd
     from _du2022_fda import canonical, load_sfpca
-    from _rule import write_evaluation
+    from _rule import config_settings, write_evaluation
 
     from motionvar.du2022.fda.evaluations import evaluate_table3_1
     from motionvar.du2022.fda.figures import draw_table3_1
-    from motionvar.du2022.fda.settings import FdaSettings
 
-    settings = FdaSettings.from_dict(snakemake.params.settings)
+    settings = config_settings(snakemake, "fda")
     chosen = pd.read_csv(snakemake.input.n_basis)
     result = evaluate_table3_1(canonical(snakemake), chosen, settings, sfpca_models=load_sfpca(snakemake.input.sfpca))
     write_evaluation(snakemake, result, draw_table3_1, float_format="%.6g")

@@ -6,15 +6,14 @@ swept method, at the middle setting of its sweep)."""
 
 def main(snakemake) -> None:
     from _ma2010 import load_walks, settings
-    from _rule import write_evaluation
+    from _rule import config_settings, write_evaluation
 
     from motionvar.ma2010.comparison import METHODS, family
     from motionvar.ma2010.evaluations.sec7_4 import sec7_4_comparison
     from motionvar.ma2010.figures import draw_sec7_4
     from motionvar.plots import animate_motions
-    from motionvar.report.settings import ReportSettings
 
-    s, report = settings(snakemake), ReportSettings.from_dict(snakemake.params.report)
+    s, report = settings(snakemake), config_settings(snakemake, "report")
     result = sec7_4_comparison(load_walks(snakemake, s), s)
     write_evaluation(snakemake, result, draw_sec7_4)
     labels = result.figure["labels"]

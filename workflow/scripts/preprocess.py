@@ -7,13 +7,13 @@ def main(snakemake) -> None:
     import logging
     from pathlib import Path
 
-    from _rule import joint_map
+    from _rule import config_settings, joint_map
 
     from motionvar.io import load_dataset, save_dataset
-    from motionvar.prep import PrepOptions, drop_summary, preprocess_dataset
+    from motionvar.prep import drop_summary, preprocess_dataset
 
     try:
-        options = PrepOptions.from_dict(snakemake.params.options)
+        options = config_settings(snakemake, "prep")
     except ValueError as exc:
         raise ValueError(f"config prep: {exc}") from exc
     name = snakemake.wildcards.dataset
