@@ -143,3 +143,40 @@ def test_every_rule_file_is_included():
     text = (root / "Snakefile").read_text() + "".join(p.read_text() for p in rules.glob("*.smk"))
     missing = [p.name for p in rules.glob("*.smk") if p.name not in text]
     assert not missing, f"rule files never included: {missing}"
+
+
+def test_no_module_imports_itself_back():
+    """No circle of imports between the modules of a package (a module and the ones it reaches
+    never lead back to it), counting imports inside functions too; a package's ``__init__`` is
+    left out (its lazy exports name its modules by design)."""
+    modules = {m.removesuffix(".__init__") for m, _ in MODULES}
+    edges: dict[str, set[str]] = {}
+    for module, path in MODULES:
+        if path.name == "__init__.py":
+            continue
+        targets = set()
+        for name, _ in _imports(module, path):
+            while name and name not in modules:  # motionvar.ma2010.examples.foot_contacts -> the module
+                name = name.rpartition(".")[0]
+            if (
+                name
+                and name != module
+                and not any(p.name == "__init__.py" and m == name + ".__init__" for m, p in MODULES)
+            ):
+                targets.add(name)
+        edges[module] = targets
+    circles, state = [], {}
+
+    def visit(node, stack):
+        state[node] = "open"
+        for nxt in sorted(edges.get(node, ())):
+            if state.get(nxt) == "open":
+                circles.append(stack[stack.index(nxt) :] + [nxt])
+            elif nxt not in state:
+                visit(nxt, stack + [nxt])
+        state[node] = "done"
+
+    for node in sorted(edges):
+        if node not in state:
+            visit(node, [node])
+    assert not circles, "import circles: " + "; ".join(" -> ".join(c) for c in circles)

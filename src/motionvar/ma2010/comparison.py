@@ -31,8 +31,8 @@ from .baselines.dbn import LauDBN
 from .baselines.gplvm import helix_trajectory
 from .baselines.mukai_kuriyama import StyleClipInterpolation, mk05_kriging, rose98_rbf
 from .baselines.perlin import add_rotation_noise
+from .contacts import foot_contacts
 from .correspondence import key_times_increase
-from .examples import foot_contacts
 from .representation import ClipSet, PoseCodec
 from .settings import XI_DRAWS, Ma2010Settings
 from .svi import ClipPrediction, StyleVariationModel, style_variation_model
@@ -372,7 +372,7 @@ def naturalness(motion: Motion, ref: NaturalnessReference) -> dict[str, float]:
     pos = motion.positions()
     solver = ref.solver
     feet = pos[:, solver.feet]  # (T, 2, F, 3)
-    contacts = foot_contacts(motion, solver, pos)
+    contacts = foot_contacts(motion, solver.feet, pos)
     low = pos[:, ref.foot_joints].copy()
     low[..., 1] -= ref.foot_floor
     minutes = motion.duration / 60.0

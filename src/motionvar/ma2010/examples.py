@@ -17,7 +17,7 @@ from ..core.joint_map import JointMap
 from ..core.motion import Motion
 from ..core.skeleton import Skeleton
 from ..metrics.stride import footfall_strides
-from ..prep.contacts import detect_foot_contacts
+from .contacts import foot_contacts
 from .correspondence import movement_direction, reference_key_positions, space_warp, standard_skeleton, time_warp
 from .keyframes import Cycle, KeyframeSignal, find_extrema, keyframe_signal, segment_cycles
 from .postprocess import reconstruct_root
@@ -98,25 +98,6 @@ def root_solver(
 MIN_FOOTFALL_S = 0.1
 
 
-def foot_contacts(motion: Motion, solver: RootSolver, positions: np.ndarray | None = None) -> np.ndarray:
-    """(T, 2) contact masks of the left and the right foot of ``motion``: the project's
-    contact detection (:func:`motionvar.prep.contacts.detect_foot_contacts`, default
-    options: ankle or toe slow and low) on the solver's ankle and toe joints."""
-    feet = np.asarray(solver.feet)
-    if feet.shape != (2, 2):
-        raise ValueError(f"foot_contacts: the solver's feet must be (2, 2) ankle and toe joints; got {feet.shape}")
-    names = motion.skeleton.names
-    jm = JointMap(
-        joints={
-            f"{side}_{part}": names[feet[f, j]]
-            for f, side in enumerate(("left", "right"))
-            for j, part in enumerate(("ankle", "toe"))
-        }
-    )
-    c = detect_foot_contacts(motion, jm, positions=positions)
-    return np.stack([c.left, c.right], axis=1)
-
-
 #: The first and last poses of a measured clip are held this long (s) before its root is recovered:
 #: a foot on the floor at the clip's first or last frame then has a contact there (its footfall, cut
 #: by the key frame) however few of that contact's frames the clip holds (a walking cycle starts as
@@ -157,7 +138,7 @@ def support_strides(motion: Motion, key_frames: np.ndarray, solver: RootSolver) 
     feet = pos[:, np.asarray(solver.feet)]  # (T, 2, 2, 3): ankle and toe of each foot
     bounds = np.asarray(key_frames)[[0, 2, 4]]
     shortest = int(round(MIN_FOOTFALL_S * motion.fps))
-    contacts = foot_contacts(motion, solver, pos)
+    contacts = foot_contacts(motion, solver.feet, pos)
     return footfall_strides(
         feet, contacts, bounds, shortest, planted=solver.planted, joint_tolerance=JOINT_TOLERANCE_CM
     )

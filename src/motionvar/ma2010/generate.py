@@ -31,7 +31,8 @@ from ..core.motion import Motion
 from ..metrics.foot_skating import foot_skating
 from ..metrics.stride import footprints
 from .comparison import trim
-from .examples import MIN_FOOTFALL_S, foot_contacts
+from .contacts import foot_contacts
+from .examples import MIN_FOOTFALL_S
 from .svi import GROUP_ORDER, StyleVariationModel
 from .synthesis import RootSolver, sequence_motion
 
@@ -290,14 +291,14 @@ def generate_walks(
 def walk_measures(motion: Motion, solver: RootSolver, skip_s: float = 1.0) -> dict[str, float]:
     """Strides and foot skating of a generated walk, measured as the evaluations do:
     footfalls (contacts of at least :data:`.examples.MIN_FOOTFALL_S`) from the project's
-    contact detection (:func:`.examples.foot_contacts`); the
+    contact detection (:func:`.contacts.foot_contacts`); the
     left-support stride is the right foot's travel between consecutive footfalls, the
     right-support stride the left foot's (median over the footfalls after the first
     ``skip_s`` s, the start from standing still); foot skating (cm/s) is the speed of each
     foot's contact point while it is in contact (:func:`..metrics.foot_skating.foot_skating`,
     Sec. 7.4's measure). NaN strides when a foot has fewer than two footfalls."""
     pos = motion.positions()
-    contacts = foot_contacts(motion, solver, pos)
+    contacts = foot_contacts(motion, solver.feet, pos)
     ankles = pos[:, [solver.left_foot, solver.right_foot]]
     strides, n_footfalls = [], 0
     for runs, prints in footprints(ankles, contacts):  # left foot, then right foot

@@ -15,6 +15,7 @@ from ..core.kinematics import fk
 from ..core.motion import Motion
 from ..core.quaternions import qnormalize, qslerp
 from ..core.skeleton import Skeleton
+from .contacts import foot_contacts
 from .correspondence import retime_frames
 from .postprocess import CLEANUPS, FOOT_BLEND_S, land, pin_feet, reconstruct_root
 
@@ -95,9 +96,7 @@ class RootSolver:
         motion = Motion(skeleton=self.skeleton, root_pos=root, rotations=rotations, fps=fps)
         if self.cleanup == "root" or len(rotations) < 2:  # one frame: nothing can slide
             return motion
-        from .examples import foot_contacts  # the contact detection the measures use (imported here: no cycle)
-
-        contacts = foot_contacts(motion, self)
+        contacts = foot_contacts(motion, self.feet)
         pinned = pin_feet(
             rotations, root, self.skeleton, self.feet, self.planted, contacts, int(round(self.foot_blend_s * fps))
         )
