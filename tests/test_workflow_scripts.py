@@ -59,6 +59,12 @@ def test_claims_merge_and_summary(tmp_path):
     html = html_out.read_text()
     assert "4 of 5 seeds give it" in html and "UNSTABLE: 3 of 5 seeds give it" in html
     assert "not in the stability run" in html  # du2022.c2
+    # the table of config key stability.marks without this dataset among its seeds marks nothing
+    other = tmp_path / "other_stability.csv"
+    pd.DataFrame({"claim_id": ["du2022.c1"], "verdict_x": ["reproduced"], "verdict_y": ["partial"]}).to_csv(other)
+    fake.params = Named(categories={}, stability=str(other))
+    run(fake, script("claims_summary").main)
+    assert "across seeds" not in html_out.read_text()
 
 
 def test_claims_merge_of_no_evaluations_is_an_empty_table(tmp_path):

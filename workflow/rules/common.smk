@@ -125,16 +125,13 @@ def validate_config(schema_path):
 
 
 def stability_table_of(dataset):
-    """The claims-stability table (results/*/claims_stability.csv, rule claims_stability) whose
-    seeds include ``dataset``, or "" when no stability run has it; the newest when several do."""
-    import glob
-
-    found = []
-    for path in glob.glob("results/*/claims_stability.csv"):
-        with open(path, encoding="utf-8") as f:
-            if f"verdict_{dataset}" in f.readline().rstrip("\n").split(","):
-                found.append(path)
-    return max(found, key=os.path.getmtime) if found else ""
+    """The claims-stability table that marks ``dataset``'s verdicts in its summary: this config's
+    (rule claims_stability) where its seeds include the dataset, else the earlier run's that
+    config key stability.marks names, where that file exists; "" for none."""
+    if dataset in stability_datasets():
+        return STABILITY_CSV
+    marks = config.get("stability", {}).get("marks", "")
+    return marks if marks and os.path.isfile(marks) else ""
 
 
 def stability_datasets():

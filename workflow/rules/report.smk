@@ -124,8 +124,8 @@ rule claims_summary:
     params:
         categories=PAPER_CATEGORY,
         # the table of a stability run that has this dataset among its seeds (rule claims_stability): this
-        # config's, else an earlier run's where one exists; each verdict marked stable or not
-        stability=lambda wc: STABILITY_CSV if wc.dataset in stability_datasets() else stability_table_of(wc.dataset),
+        # config's, else the earlier run's of config key stability.marks; each verdict marked stable or not
+        stability=lambda wc: stability_table_of(wc.dataset),
     log:
         ev_log("claims_summary"),
     benchmark:
