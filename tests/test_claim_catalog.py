@@ -24,6 +24,34 @@ def test_every_claim_is_declared_once_with_a_kind():
     assert {s.paper for s in CLAIMS} == {"ma2010", "du2022", "egges2004"}
 
 
+def test_every_evaluation_is_declared_once_and_everything_else_is_read_off_it():
+    """Each paper declares its evaluations once (``<paper>/catalog.py``): a unique name
+    ``<paper>_<what>``, a config section with a settings class, a rule script and a report
+    caption of that name, the requirements the applicability table gives it (the same source and
+    checks), and every claim's evaluation among them."""
+    from motionvar.claim_catalog import EVALUATIONS, evaluation
+    from motionvar.config_sections import SECTIONS, section_settings
+    from motionvar.du2022.requirements import fda_requirements, graph_requirements, style_requirements
+    from motionvar.egges2004.requirements import requirements as egges2004
+    from motionvar.ma2010.requirements import requirements as ma2010
+
+    names = [e.name for e in EVALUATIONS]
+    assert len(names) == len(set(names)) and {e.paper for e in EVALUATIONS} == {"ma2010", "du2022", "egges2004"}
+    workflow = SRC.parents[1] / "workflow"
+    for e in EVALUATIONS:
+        assert e.section in SECTIONS and e.source and e.checks, e
+        assert (workflow / "scripts" / f"{e.name}.py").is_file() and (workflow / "report" / f"{e.name}.rst").is_file()
+    papers = {"ma2010": ma2010, "fda": fda_requirements, "graph": graph_requirements, "style": style_requirements}
+    reqs = [r for sec, of in {**papers, "egges2004": egges2004}.items() for r in of(section_settings(sec, {}))]
+    assert sorted(r.evaluation for r in reqs) == sorted(names)
+    for r in reqs:
+        e = evaluation(r.evaluation)
+        assert (r.paper, r.source, r.checks) == (e.paper, e.source, e.checks), r.evaluation
+    assert {s.evaluation for s in CLAIMS} <= set(names)
+    with pytest.raises(KeyError, match="no evaluation 'du2022_fig9' is declared"):
+        evaluation("du2022_fig9")
+
+
 def test_every_replication_and_stand_in_claim_has_a_negative_control():
     controls = all_controls()
     needed = {s.claim_id for s in CLAIMS if s.kind in EVIDENCE_KINDS}

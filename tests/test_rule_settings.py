@@ -1,7 +1,7 @@
 """What each rule passes is its config section whole: every rule with a ``settings`` param gets
 exactly one merged, validated config section, which its settings class rebuilds without
-dropping or renaming a key; every evaluation rule is one registered EvaluationSpec, listed
-by name in EVALUATION_NAMES, and passes its spec's section."""
+dropping or renaming a key; every evaluation the library declares (motionvar.<paper>.catalog)
+is one rule from one registered EvaluationSpec, and passes its declared section."""
 
 import tempfile
 from pathlib import Path
@@ -52,11 +52,14 @@ def test_every_settings_param_is_a_whole_section(workflow):
 
 def test_every_evaluation_rule_is_one_listed_spec(workflow):
     g = workflow.globals
-    listed = [n for names in g["EVALUATION_NAMES"].values() for n in names]
-    assert sorted(listed) == sorted(g["EVALUATIONS"]), "EVALUATION_NAMES and the registered specs differ"
+    from motionvar.claim_catalog import EVALUATIONS, evaluation
+
+    listed = [e.name for e in EVALUATIONS]
+    assert sorted(listed) == sorted(g["EVALUATIONS"]), "the declared evaluations and the registered specs differ"
     rules = {r.name: r for r in workflow.rules}
     for name, spec in g["EVALUATIONS"].items():
-        assert name.startswith(spec.paper + "_"), f"evaluation {name}: rule names are <paper>_<evaluation>"
+        d = evaluation(name)
+        assert name.startswith(d.paper + "_") and d.paper in g["PAPER_CATEGORY"], f"evaluation {name}: <paper>_<what>"
         rule = rules[name]
-        assert rule.params.settings == workflow.config[spec.section], f"rule {name} must pass config.{spec.section}"
+        assert rule.params.settings == workflow.config[d.section], f"rule {name} must pass config.{d.section}"
         assert "options" not in param_names(rule), f"rule {name} copies config keys by hand (params.options)"

@@ -17,6 +17,7 @@ from dataclasses import dataclass, field
 
 import pandas as pd
 
+from .claims import Evaluation
 from .core.joint_map import JointMap
 
 STAGES = ("data", "prep")
@@ -69,6 +70,11 @@ class Requirement:
     checks: str
     needs: tuple[Need, ...] = ()
     joints: Joints | None = None
+
+    @classmethod
+    def of(cls, evaluation: Evaluation, needs: tuple[Need, ...] = (), joints: Joints | None = None) -> Requirement:
+        """The requirement of a declared evaluation (its name, paper, source and checks)."""
+        return cls(evaluation.name, evaluation.paper, evaluation.source, evaluation.checks, needs, joints)
 
 
 def _matching(need: Need, meta: pd.DataFrame) -> pd.DataFrame:

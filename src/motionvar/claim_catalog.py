@@ -1,14 +1,28 @@
-"""Every claim of the three papers as they declare them (``motionvar.<paper>.claims``): the
-catalog the rules, the report and the tests look claims up in."""
+"""Every evaluation and every claim of the three papers as they declare them
+(``motionvar.<paper>.catalog``, ``motionvar.<paper>.claims``): the catalog the rules, the report
+and the tests look them up in."""
 
 from __future__ import annotations
 
-from .claims import ClaimSpec
+from .claims import ClaimSpec, Evaluation
+from .du2022.catalog import EVALUATIONS as DU2022_EVALUATIONS
 from .du2022.claims import CLAIMS as DU2022
+from .egges2004.catalog import EVALUATIONS as EGGES2004_EVALUATIONS
 from .egges2004.claims import CLAIMS as EGGES2004
+from .ma2010.catalog import EVALUATIONS as MA2010_EVALUATIONS
 from .ma2010.claims import CLAIMS as MA2010
 
 CLAIMS: tuple[ClaimSpec, ...] = MA2010 + DU2022 + EGGES2004
+#: every published evaluation, as each paper's ``catalog.py`` declares it
+EVALUATIONS: tuple[Evaluation, ...] = MA2010_EVALUATIONS + DU2022_EVALUATIONS + EGGES2004_EVALUATIONS
+
+
+def evaluation(name: str) -> Evaluation:
+    """The declaration of one evaluation; KeyError naming it when no paper declares it."""
+    for e in EVALUATIONS:
+        if e.name == name:
+            return e
+    raise KeyError(f"no evaluation {name!r} is declared (motionvar.<paper>.catalog)")
 
 
 def specs_of(evaluation: str) -> tuple[ClaimSpec, ...]:

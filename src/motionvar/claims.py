@@ -189,6 +189,28 @@ class NotApplicable(Exception):
         self.reason = reason
 
 
+@dataclass(frozen=True)
+class Evaluation:
+    """One published evaluation as its paper's package declares it (``<paper>/catalog.py``):
+    its rule, script and report caption are named ``name`` (``<paper>_<what>``); ``source`` is
+    the paper's figure or section, ``checks`` what it checks in one line, ``section`` the config
+    section whose settings it reads, ``label`` how the report names it (``source`` where empty)."""
+
+    name: str
+    source: str
+    checks: str
+    section: str
+    label: str = ""
+
+    @property
+    def paper(self) -> str:
+        return self.name.split("_", 1)[0]
+
+    @property
+    def shown(self) -> str:
+        return self.label or self.source
+
+
 @dataclass
 class EvaluationResult:
     """What an evaluation function returns: its ``table`` (written as the evaluation's

@@ -57,20 +57,6 @@ PRIORITY = {
 # Every published evaluation, one rule each, named <paper>_<evaluation>; this table lists
 # them all (in report order); each paper's rule file declares an EvaluationSpec per name
 # (register_evaluation) and workflow/rules/evaluations.smk makes one rule of each.
-EVALUATION_NAMES = {
-    "du2022": [
-        "du2022_fig3_9", "du2022_fig3_10", "du2022_fig3_11", "du2022_table3_1",
-        "du2022_fig4_12", "du2022_fig4_9", "du2022_sec4_6_1", "du2022_fig4_10",
-        "du2022_table5_1", "du2022_table5_2", "du2022_fig5_4",
-    ],
-    "ma2010": [
-        "ma2010_fig3", "ma2010_fig6", "ma2010_variogram", "ma2010_fig7b", "ma2010_fig8",
-        "ma2010_sec7_4", "ma2010_sec8",
-    ],
-    "egges2004": [
-        "egges2004_identification", "egges2004_repetition", "egges2004_fitting", "egges2004_speed",
-    ],
-}
 
 # name -> EvaluationSpec, filled by the paper rule files
 EVALUATIONS = {}
@@ -255,21 +241,18 @@ def gif_pages(dataset):
 
 @dataclass(frozen=True)
 class EvaluationSpec:
-    """One published evaluation: the rule ``name`` (listed in EVALUATION_NAMES) that runs
-    workflow/scripts/<name>.py and writes its table, figure and claims (report caption
-    workflow/report/<name>.rst) plus ``outputs``.
+    """What the workflow adds to a published evaluation the library declares
+    (``motionvar.<paper>.catalog``: its name, paper, source and config section): the rule
+    ``name`` runs workflow/scripts/<name>.py and writes its table, figure and claims (report
+    caption workflow/report/<name>.rst) plus ``outputs``, with the declared section passed whole
+    as ``params.settings`` (the script builds its settings object from it).
 
-    paper: key of PAPER_CATEGORY. label: the paper's figure or section, shown in the report.
-    section: the config section passed whole as ``params.settings`` (the script builds its
-    settings object from it). inputs: name -> path pattern or input function. outputs:
-    further outputs of the rule, name -> path (already given to ``in_report`` where the report
-    shows them). params: further params. extra: further files that join the default target
-    with the evaluation (built by other rules). mem_mb, threads and priority are the rule's."""
+    inputs: name -> path pattern or input function. outputs: further outputs of the rule,
+    name -> path (already given to ``in_report`` where the report shows them). params: further
+    params. extra: further files that join the default target with the evaluation (built by
+    other rules). mem_mb, threads and priority are the rule's."""
 
     name: str
-    paper: str
-    label: str
-    section: str
     inputs: dict
     mem_mb: int = 3000
     outputs: dict = field(default_factory=dict)
@@ -279,17 +262,24 @@ class EvaluationSpec:
     priority: int = 0
 
 
+def declared(name):
+    """The library's declaration of evaluation ``name`` (motionvar.claim_catalog.evaluation):
+    its paper, source, label and config section."""
+    from motionvar.claim_catalog import evaluation
+
+    return evaluation(name)
+
+
 def register_evaluation(spec):
-    """Add an evaluation to the default target, the claims merge and the report (one rule,
-    made by evaluations.smk)."""
+    """Add a declared evaluation to the default target, the claims merge and the report (one
+    rule, made by evaluations.smk)."""
     if spec.name in EVALUATIONS:
         raise ValueError(f"evaluation {spec.name} registered twice")
-    if spec.paper not in PAPER_CATEGORY:
-        raise ValueError(f"evaluation {spec.name}: unknown paper {spec.paper}")
-    if spec.name not in EVALUATION_NAMES.get(spec.paper, []):
-        raise ValueError(f"evaluation {spec.name} is not listed in EVALUATION_NAMES[{spec.paper!r}] (common.smk)")
-    if spec.section not in config:
-        raise ValueError(f"evaluation {spec.name}: no config section {spec.section!r}")
+    d = declared(spec.name)
+    if d.paper not in PAPER_CATEGORY:
+        raise ValueError(f"evaluation {spec.name}: unknown paper {d.paper}")
+    if d.section not in config:
+        raise ValueError(f"evaluation {spec.name}: no config section {d.section!r}")
     EVALUATIONS[spec.name] = spec
 
 

@@ -115,9 +115,6 @@ FDA_CANONICAL = {"clips": f"{FDA}/canonical/clips.npz", "metadata": f"{FDA}/cano
 register_evaluation(
     EvaluationSpec(
         "du2022_fig3_9",
-        paper="du2022",
-        label="Fig. 3.9",
-        section="fda",
         inputs={"rmse": f"{FDA}/basis_rmse.csv"},
         mem_mb=1000,
         priority=PRIORITY.get("du2022_fig3_9", 0),
@@ -126,9 +123,6 @@ register_evaluation(
 register_evaluation(
     EvaluationSpec(
         "du2022_fig3_10",
-        paper="du2022",
-        label="Fig. 3.10",
-        section="fda",
         inputs={"curves": fda_curve_files()},
         mem_mb=2000,
         priority=PRIORITY.get("du2022_fig3_10", 0),
@@ -137,9 +131,6 @@ register_evaluation(
 register_evaluation(
     EvaluationSpec(
         "du2022_fig3_11",
-        paper="du2022",
-        label="Fig. 3.11",
-        section="fda",
         inputs={"curves": fda_curve_files()},
         mem_mb=2000,
         priority=PRIORITY.get("du2022_fig3_11", 0),
@@ -148,9 +139,6 @@ register_evaluation(
 register_evaluation(
     EvaluationSpec(
         "du2022_table3_1",
-        paper="du2022",
-        label="Table 3.1",
-        section="fda",
         inputs={**FDA_CANONICAL, "n_basis": f"{FDA}/n_basis.csv", "sfpca": fda_sfpca_models},
         mem_mb=4000,
         priority=PRIORITY.get("du2022_table3_1", 0),

@@ -114,9 +114,6 @@ GRAPH_JOINT_MAP = {"joint_map": lambda wc: joint_map_path(wc.dataset)}
 register_evaluation(
     EvaluationSpec(
         name="du2022_fig4_12",
-        paper="du2022",
-        label="Fig. 4.12",
-        section="graph",
         inputs={"queries": graph_search_tables},
         mem_mb=2000,
     )
@@ -124,9 +121,6 @@ register_evaluation(
 register_evaluation(
     EvaluationSpec(
         name="du2022_fig4_9",
-        paper="du2022",
-        label="Fig. 4.9",
-        section="graph",
         inputs={
             "models": graph_diversity_models,
             "clips": f"{PREP}/clips.npz",
@@ -140,9 +134,6 @@ register_evaluation(
 register_evaluation(
     EvaluationSpec(
         name="du2022_sec4_6_1",
-        paper="du2022",
-        label="Sec. 4.6.1",
-        section="graph",
         # the clips too: each primitive is refitted to half of its clips (model size at N and 2N clips)
         inputs={
             "models": graph_all_models,
@@ -157,9 +148,6 @@ register_evaluation(
 register_evaluation(
     EvaluationSpec(
         name="du2022_fig4_10",
-        paper="du2022",
-        label="Fig. 4.10",
-        section="graph",
         inputs={
             "models": graph_synthesis_models,
             "clips": f"{PREP}/clips.npz",

@@ -162,9 +162,6 @@ rule du2022_style_training_curves:
 register_evaluation(
     EvaluationSpec(
         "du2022_table5_1",
-        paper="du2022",
-        label="Table 5.1",
-        section="style",
         inputs=style_evaluation_inputs([STYLE_CFG["distance_primitive"]], [STYLE_CFG["distance_primitive"]]),
         params=STYLE_EVALUATION_PARAMS,
         mem_mb=3000,
@@ -173,9 +170,6 @@ register_evaluation(
 register_evaluation(
     EvaluationSpec(
         "du2022_table5_2",
-        paper="du2022",
-        label="Tables 5.2-5.3",
-        section="style",
         inputs=style_evaluation_inputs(STYLE_CFG["style_primitives"], STYLE_CFG["style_primitives"]),
         params=STYLE_EVALUATION_PARAMS,
         extra=(STYLE_TRAINING_FIGURE,),
@@ -185,9 +179,6 @@ register_evaluation(
 register_evaluation(
     EvaluationSpec(
         "du2022_fig5_4",
-        paper="du2022",
-        label="Fig. 5.4-5.5",
-        section="style",
         inputs=style_evaluation_inputs(STYLE_CFG["vae_primitives"], [STYLE_CFG["distance_primitive"]]),
         params=STYLE_EVALUATION_PARAMS,
         outputs={

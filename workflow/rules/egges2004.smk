@@ -16,9 +16,6 @@ EGGES_JOINT_MAP = {"joint_map": lambda wc: joint_map_path(wc.dataset)}
 register_evaluation(
     EvaluationSpec(
         "egges2004_identification",
-        paper="egges2004",
-        label="Sec. 8: person identification",
-        section="egges2004",
         inputs={**EGGES_MODEL, **EGGES_PREP},
         mem_mb=4000,
         params=EGGES_JOINT_MAP,
@@ -28,9 +25,6 @@ register_evaluation(
 register_evaluation(
     EvaluationSpec(
         "egges2004_repetition",
-        paper="egges2004",
-        label="Sec. 6: repetition",
-        section="egges2004",
         inputs={**EGGES_MODEL, **EGGES_PREP},
         mem_mb=4000,
         outputs={
@@ -48,9 +42,6 @@ register_evaluation(
 register_evaluation(
     EvaluationSpec(
         "egges2004_fitting",
-        paper="egges2004",
-        label="Sec. 5.4.4, Fig. 4-5: fitting",
-        section="egges2004",
         inputs=EGGES_MODEL,
         extra=(
             "results/{dataset}/figures/egges2004_category_graph.png",
@@ -61,9 +52,6 @@ register_evaluation(
 register_evaluation(
     EvaluationSpec(
         "egges2004_speed",
-        paper="egges2004",
-        label="Sec. 8: real time",
-        section="egges2004",
         inputs=EGGES_MODEL,
     )
 )

@@ -17,27 +17,25 @@ MA2010_INPUTS = {
 MA2010_MODEL = [f"{MA2010}/style_variation.npz", f"{MA2010}/style_variation.json"]
 
 
-def _ma2010_spec(name, label, inputs, mem_mb=3000, **more):
+def _ma2010_spec(name, inputs, mem_mb=3000, **more):
     """An evaluation of Ma 2010 on ``inputs`` (a key of MA2010_INPUTS), with the dataset's
     joint map (input and param); every one runs on one core."""
     params = {"joint_map": lambda wc: joint_map_path(wc.dataset), **more.pop("params", {})}
     return EvaluationSpec(
-        name, "ma2010", label, "ma2010", {**MA2010_INPUTS[inputs], "joint_map": joint_map_input},
-        mem_mb=mem_mb, params=params, **more,
+        name, {**MA2010_INPUTS[inputs], "joint_map": joint_map_input}, mem_mb=mem_mb, params=params, **more
     )
 
 
 MA2010_EVALUATIONS = [
-    _ma2010_spec("ma2010_fig3", "Fig. 3", "data"),
-    _ma2010_spec("ma2010_fig6", "Fig. 6", "walks", mem_mb=4000, extra=tuple(MA2010_MODEL)),
-    _ma2010_spec("ma2010_variogram", "Sec. 6 (variogram)", "walks"),
-    _ma2010_spec("ma2010_fig7b", "Fig. 7b", "walks"),
-    _ma2010_spec("ma2010_fig8", "Fig. 8a", "walks"),
+    _ma2010_spec("ma2010_fig3", "data"),
+    _ma2010_spec("ma2010_fig6", "walks", mem_mb=4000, extra=tuple(MA2010_MODEL)),
+    _ma2010_spec("ma2010_variogram", "walks"),
+    _ma2010_spec("ma2010_fig7b", "walks"),
+    _ma2010_spec("ma2010_fig8", "walks"),
     # one core (95-125 % of one, measured): its rivals run on two torch/BLAS threads inside
     # (sec7_4.RIVAL_THREADS: the same numbers whatever cores the job gets); the GIF takes its
     # frame rate and panel size from config section report
-    _ma2010_spec(
-        "ma2010_sec7_4", "Sec. 7.4", "walks", mem_mb=4000,
+    _ma2010_spec("ma2010_sec7_4", "walks", mem_mb=4000,
         outputs={
             "animation": in_report(
                 "results/{dataset}/figures/ma2010_sec7_4.gif", "ma2010", "../report/ma2010_sec7_4.rst",
@@ -46,7 +44,7 @@ MA2010_EVALUATIONS = [
         },
         params={"report": config["report"]},
     ),
-    _ma2010_spec("ma2010_sec8", "Sec. 8", "walks"),
+    _ma2010_spec("ma2010_sec8", "walks"),
 ]
 
 for _spec in MA2010_EVALUATIONS:

@@ -9,6 +9,7 @@ from typing import TYPE_CHECKING
 
 from ..applicability import Joints, Need, Requirement
 from ..core.joint_map import OPTIONAL_JOINTS
+from .catalog import EVALUATIONS
 from .graph.settings import REACH_JOINT
 
 if TYPE_CHECKING:
@@ -16,7 +17,7 @@ if TYPE_CHECKING:
     from .graph.settings import GraphSettings
     from .style.settings import StyleSettings
 
-PAPER = "du2022"
+DECLARED = {e.name: e for e in EVALUATIONS}
 
 
 def _primitives(primitives: Sequence[str], min_count: int, why: str, **where) -> tuple[Need, ...]:
@@ -51,33 +52,20 @@ def fda_requirements(settings: FdaSettings) -> list[Requirement]:
         "height) and measures how well the methods separate them",
     )
     return [
-        Requirement(
-            "du2022_fig3_9",
-            PAPER,
-            "Fig. 3.9",
-            "The B-spline fit error falls as basis functions are added; the cut-off K.",
+        Requirement.of(
+            DECLARED["du2022_fig3_9"],
             (canonical,),
         ),
-        Requirement(
-            "du2022_fig3_10",
-            PAPER,
-            "Fig. 3.10",
-            "Reconstruction error vs latent dimensions: FPCA lowest in "
-            "feature space, SFPCA lowest in observation space.",
+        Requirement.of(
+            DECLARED["du2022_fig3_10"],
             recon,
         ),
-        Requirement(
-            "du2022_fig3_11",
-            PAPER,
-            "Fig. 3.11",
-            "SFPCA's latent space separates the labelled variants best.",
+        Requirement.of(
+            DECLARED["du2022_fig3_11"],
             recon + (labelled,),
         ),
-        Requirement(
-            "du2022_table3_1",
-            PAPER,
-            "Table 3.1",
-            "Latent dimensions needed for 1 cm observation error, per primitive.",
+        Requirement.of(
+            DECLARED["du2022_table3_1"],
             (canonical,),
         ),
     ]
@@ -112,11 +100,8 @@ def graph_requirements(settings: GraphSettings, min_clips: int = GRAPH_MIN_CLIPS
     reach_primitive = settings.synthesis.reach_primitive
     why = "Du 2022 ch. 4 fits a motion primitive (SFPCA + GMM) to the clips of each primitive"
     return [
-        Requirement(
-            "du2022_fig4_12",
-            PAPER,
-            "Fig. 4.12",
-            "k-means tree search halves random sampling's constraint error; median trees are close to random.",
+        Requirement.of(
+            DECLARED["du2022_fig4_12"],
             _primitives(search_primitives, min_clips, why),
             Joints(
                 _optional(
@@ -128,31 +113,22 @@ def graph_requirements(settings: GraphSettings, min_clips: int = GRAPH_MIN_CLIPS
                 "Fig. 4.12 constrains these joints (graph.search.joints, default_joint, pose_joints)",
             ),
         ),
-        Requirement(
-            "du2022_fig4_9",
-            PAPER,
-            "Fig. 4.9",
-            "Samples of a primitive cover the training clips' end positions (walk leftStance ankle, pick reach hands).",
+        Requirement.of(
+            DECLARED["du2022_fig4_9"],
             _primitives(
                 ["walk_leftStance", "pick_reach"], min_clips, why + "; Fig. 4.9 shows walk leftStance and pick reach"
             ),
             Joints(HANDS, "Fig. 4.9 shows the pick reach's hand positions"),
         ),
-        Requirement(
-            "du2022_fig4_10",
-            PAPER,
-            "Fig. 4.10",
-            "A Morphable Graph walk follows a path and reaches targets.",
+        Requirement.of(
+            DECLARED["du2022_fig4_10"],
             _primitives(
                 [*walk_primitives, reach_primitive], min_clips, why + "; Fig. 4.10 walks along a path, then reaches"
             ),
             Joints((REACH_JOINT,), f"Fig. 4.10 reaches targets with the {REACH_JOINT.replace('_', ' ')}"),
         ),
-        Requirement(
-            "du2022_sec4_6_1",
-            PAPER,
-            "Sec. 4.6.1",
-            "The primitive models are far smaller than the motion data they model.",
+        Requirement.of(
+            DECLARED["du2022_sec4_6_1"],
             _primitives(primitives, min_clips, why),
         ),
     ]
@@ -182,27 +158,18 @@ def style_requirements(settings: StyleSettings, min_clips: int = STYLE_MIN_CLIPS
     )
     distance = tuple(n for n in stylised if n.where["primitive"] == (distance_primitive,))
     return [
-        Requirement(
-            "du2022_table5_1",
-            PAPER,
-            "Table 5.1",
-            "Each style's samples are closest (Gram-matrix style distance) to that style's example.",
+        Requirement.of(
+            DECLARED["du2022_table5_1"],
             _primitives([distance_primitive], min_clips, why_vae, style=("neutral",)) + distance,
             STYLE_JOINTS,
         ),
-        Requirement(
-            "du2022_table5_2",
-            PAPER,
-            "Tables 5.2-5.3",
-            "Samples keep the training data's diversity (pose, velocity and step SDs).",
+        Requirement.of(
+            DECLARED["du2022_table5_2"],
             neutral + stylised,
             STYLE_JOINTS,
         ),
-        Requirement(
-            "du2022_fig5_4",
-            PAPER,
-            "Fig. 5.4-5.5",
-            "Random samples of the neutral and the stylised models.",
+        Requirement.of(
+            DECLARED["du2022_fig5_4"],
             neutral + stylised,
             STYLE_JOINTS,
         ),

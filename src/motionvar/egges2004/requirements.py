@@ -6,11 +6,11 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from ..applicability import Need, Requirement
+from .catalog import EVALUATIONS
 
 if TYPE_CHECKING:
     from .settings import Egges2004Settings
 
-PAPER = "egges2004"
 
 WHY = "Egges 2004 builds its model from recordings of a person standing idle (balance shifts, Sec. 5)"
 
@@ -48,27 +48,10 @@ def requirements(settings: Egges2004Settings) -> list[Requirement]:
         min_seconds=long_s,
         why="Sec. 8 tells people apart by their generated idle motion" + windows,
     )
+    declared = {e.name: e for e in EVALUATIONS}
     return [
-        Requirement(
-            "egges2004_identification",
-            PAPER,
-            "Sec. 8",
-            "Generated idle motion is recognisably the person's own.",
-            (idle, people),
-        ),
-        Requirement(
-            "egges2004_repetition",
-            PAPER,
-            "Sec. 6",
-            "Generated idle motion does not repeat itself, unlike a looped clip.",
-            (idle,),
-        ),
-        Requirement(
-            "egges2004_fitting",
-            PAPER,
-            "Sec. 5.4.4, Fig. 4-5",
-            "Fitted animations start and end at the given postures; the pieces join smoothly.",
-            (idle,),
-        ),
-        Requirement("egges2004_speed", PAPER, "Sec. 8", "Idle motion is generated in real time.", (idle,)),
+        Requirement.of(declared["egges2004_identification"], (idle, people)),
+        Requirement.of(declared["egges2004_repetition"], (idle,)),
+        Requirement.of(declared["egges2004_fitting"], (idle,)),
+        Requirement.of(declared["egges2004_speed"], (idle,)),
     ]

@@ -6,51 +6,29 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from ..applicability import Joints, Need, Requirement
+from .catalog import EVALUATIONS
 from .claims import FIG8_MIN_EXAMPLES, FIG8_MIN_SUBJECTS
 
 if TYPE_CHECKING:
     from .settings import Ma2010Settings
 
-PAPER = "ma2010"
 
 # A walking clip holds a complete gait cycle (Sec. 4.2: legs farthest apart, left foot
 # ahead, to the next such frame) when it has two foot strikes of each foot: ~2 s of walking.
 MIN_WALK_S = 2.0
 
-# evaluation -> (source, what it checks, minimum number of walking clips, of subjects)
-EVALUATIONS = {
-    "ma2010_fig3": ("Fig. 3", "Key frames (foot strikes, Eq. 1-4) align the walking cycles of different clips.", 1, 1),
-    "ma2010_fig6": (
-        "Fig. 6",
-        "Leave-one-out: the synthesized cycle has the held-out clip's stride (within 1.2 cm); "
-        "Kriging beats RBF (MK05).",
-        2,
-        1,
-    ),
-    "ma2010_variogram": (
-        "Sec. 6 (variogram)",
-        "Diagnostic, no claim: the semivariograms of the Kriging residuals per "
-        "joint group, with the fitted variograms.",
-        2,
-        1,
-    ),
-    "ma2010_fig7b": ("Fig. 7b", "Strides far outside the examples are synthesized less reliably.", 2, 1),
+# evaluation (.catalog) -> the minimum number of walking clips it needs, and of subjects
+WALKS_NEEDED = {
+    "ma2010_fig3": (1, 1),
+    "ma2010_fig6": (2, 1),
+    "ma2010_variogram": (2, 1),
+    "ma2010_fig7b": (2, 1),
     # the variants' spread is compared with that of the example cycles nearest the style, one per subject
     # (Fig. 1's clips): at least FIG8_MIN_EXAMPLES of them, so as many subjects (and at least FIG8_MIN_SUBJECTS)
-    "ma2010_fig8": (
-        "Fig. 8a",
-        "At a fixed style, variants differ as much as the examples do, at the same stride.",
-        FIG8_MIN_EXAMPLES,
-        max(FIG8_MIN_EXAMPLES, FIG8_MIN_SUBJECTS),
-    ),
+    "ma2010_fig8": (FIG8_MIN_EXAMPLES, max(FIG8_MIN_EXAMPLES, FIG8_MIN_SUBJECTS)),
     # the example cycles are taken one per subject (Fig. 1's five clips)
-    "ma2010_sec7_4": (
-        "Sec. 7.4",
-        "Ours is the most natural of six methods (foot skating, jerk, discontinuities).",
-        2,
-        2,
-    ),
-    "ma2010_sec8": ("Sec. 8", "Synthesis runs faster than real time.", 2, 1),
+    "ma2010_sec7_4": (2, 2),
+    "ma2010_sec8": (2, 1),
 }
 
 
@@ -72,7 +50,8 @@ def requirements(settings: Ma2010Settings) -> list[Requirement]:
     styles = "/".join(walk_styles) if walk_styles else "any-style"
     where = {"behaviour": ("walk",), "style": tuple(walk_styles), "variant": tuple(walk_variants)}
     out = []
-    for ev, (source, checks, n, subjects) in EVALUATIONS.items():
+    for ev in EVALUATIONS:
+        n, subjects = WALKS_NEEDED[ev.name]
         need = Need(
             what=f"{styles} walking clips",
             stage="data",
@@ -81,7 +60,7 @@ def requirements(settings: Ma2010Settings) -> list[Requirement]:
             min_subjects=subjects,
             min_seconds=MIN_WALK_S,
             why="Ma 2010 models the gait cycles of walking (Sec. 4; a cycle needs two foot strikes of each "
-            "foot); set ma2010.walk_styles and ma2010.walk_variants to labels your data has" + WHY.get(ev, ""),
+            "foot); set ma2010.walk_styles and ma2010.walk_variants to labels your data has" + WHY.get(ev.name, ""),
         )
-        out.append(Requirement(ev, PAPER, source, checks, (need,), TOES))
+        out.append(Requirement.of(ev, (need,), TOES))
     return out

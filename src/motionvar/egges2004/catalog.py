@@ -1,0 +1,31 @@
+"""The evaluations of Egges et al. 2004 (:class:`motionvar.claims.Evaluation`): the one list the
+workflow's rules, the applicability table (:mod:`.requirements`) and the claims are read off."""
+
+from ..claims import Evaluation
+
+EVALUATIONS: tuple[Evaluation, ...] = (
+    Evaluation(
+        "egges2004_identification",
+        "Sec. 8",
+        "Generated idle motion is recognisably the person's own.",
+        "egges2004",
+        label="Sec. 8: person identification",
+    ),
+    Evaluation(
+        "egges2004_repetition",
+        "Sec. 6",
+        "Generated idle motion does not repeat itself, unlike a looped clip.",
+        "egges2004",
+        label="Sec. 6: repetition",
+    ),
+    Evaluation(
+        "egges2004_fitting",
+        "Sec. 5.4.4, Fig. 4-5",
+        "Fitted animations start and end at the given postures; the pieces join smoothly.",
+        "egges2004",
+        label="Sec. 5.4.4, Fig. 4-5: fitting",
+    ),
+    Evaluation(
+        "egges2004_speed", "Sec. 8", "Idle motion is generated in real time.", "egges2004", label="Sec. 8: real time"
+    ),
+)
