@@ -6,6 +6,7 @@ from ma2010_toywalk import toy_walk
 
 from motionvar.core import Motion, cmu_joint_map
 from motionvar.core.quaternions import qdistance_sinusoidal, qmul, qnormalize, quat_about_axis
+from motionvar.io.intervals import parse_ranges
 from motionvar.ma2010 import (
     PropagationNetwork,
     StyleVariationModel,
@@ -44,7 +45,6 @@ from motionvar.ma2010.postprocess import (
 from motionvar.ma2010.settings import KEY_TIMINGS, Ma2010Settings
 from motionvar.ma2010.svi import ClipPrediction
 from motionvar.ma2010.variation import determinative_joints, joint_importance, joint_variation
-from motionvar.synth.intervals import parse_ranges
 
 JM = cmu_joint_map()
 DEFAULTS = Ma2010Settings()

@@ -60,8 +60,8 @@ def test_foot_skating_takes_the_contact_point_during_contacts():
 def generator_walks():
     """Walks of the project's generator (neutral and childlike, two subjects) with their
     ground-truth contact masks (T, 2): its planted feet never slide."""
+    from motionvar.io.intervals import parse_ranges
     from motionvar.synth import generate_walk, make_subjects, sample_walk_params
-    from motionvar.synth.intervals import parse_ranges
 
     rng = np.random.default_rng(1)
     out = []

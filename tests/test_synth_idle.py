@@ -5,6 +5,7 @@ import time
 import numpy as np
 import pytest
 
+from motionvar.io.intervals import parse_named, parse_ranges
 from motionvar.synth.idle import (
     CATEGORIES,
     MOVEMENT_TRAITS,
@@ -14,7 +15,6 @@ from motionvar.synth.idle import (
     movement_twin,
     sample_rests,
 )
-from motionvar.synth.intervals import parse_intervals, parse_ranges
 from motionvar.synth.signals import colored_noise, minimum_jerk
 from motionvar.synth.stance import body_com, to_body_frame
 from motionvar.synth.subjects import make_subjects
@@ -35,7 +35,7 @@ def clip():
 def _rest_frames(truth, n):
     """Boolean mask of the frames inside a rest (not a shift)."""
     mask = np.zeros(n, dtype=bool)
-    for name, a, b in parse_intervals(truth["idle_phases"]):
+    for name, a, b in parse_named(truth["idle_phases"]):
         if name == "rest":
             mask[a:b] = True
     return mask
@@ -85,12 +85,12 @@ def test_feet_planted_on_the_floor(clip):
 
 def test_truth_intervals_cover_the_clip(clip):
     m, truth = clip
-    post = parse_intervals(truth["idle_postures"])
+    post = parse_named(truth["idle_postures"])
     assert post[0][1] == 0 and post[-1][2] == m.n_frames
     assert all(a[2] == b[1] for a, b in zip(post, post[1:]))
     assert all(c in CATEGORIES for c, _, _ in post)
     assert all(a[0] != b[0] for a, b in zip(post, post[1:]))  # repeats are merged
-    seg = parse_intervals(truth["idle_phases"])
+    seg = parse_named(truth["idle_phases"])
     assert seg[0][1] == 0 and seg[-1][2] == m.n_frames
     assert all(a[2] == b[1] for a, b in zip(seg, seg[1:]))
     shifts = [(b - a) / m.fps for name, a, b in seg[:-1] if name == "shift"]
@@ -122,7 +122,7 @@ def test_posture_categories_are_visible(clip):
         knee[side] = np.degrees(np.arccos(np.sum(u * v, -1) / np.linalg.norm(u, axis=-1) / np.linalg.norm(v, axis=-1)))
     half = 0.5 * (pts[0, 0, 0] - pts[0, 1, 0])
     seen = set()
-    for cat, a, b in parse_intervals(truth["idle_postures"]):
+    for cat, a, b in parse_named(truth["idle_postures"]):
         f = np.arange(a, b)[rest[a:b]]
         if f.size < 60:
             continue
@@ -145,7 +145,7 @@ def test_sway_rms_and_spectrum():
         m, truth = _clip(subject, seed=7, duration_s=120.0)
         com = body_com(m.positions(), m.skeleton)
         dev = []
-        for name, a, b in parse_intervals(truth["idle_phases"]):
+        for name, a, b in parse_named(truth["idle_phases"]):
             if name == "rest" and b - a > 2 * m.fps:
                 c = com[a:b, [0, 2]]
                 dev.append(c - c.mean(axis=0))
@@ -173,7 +173,7 @@ def test_breathing_at_the_subject_rate():
 
 def test_start_category_and_preferences():
     m, truth = _clip(SUBJECTS[0], seed=0, duration_s=5.0, start_category="both")
-    assert parse_intervals(truth["idle_postures"])[0][0] == "both"
+    assert parse_named(truth["idle_postures"])[0][0] == "both"
     # Over two hours the share of time per category is the subject's preference.
     for subject in SUBJECTS[:4]:
         rests = sample_rests(subject, 7200.0, "left", np.random.default_rng(1))

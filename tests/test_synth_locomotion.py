@@ -11,6 +11,7 @@ import pytest
 
 from motionvar.core import cmu_joint_map
 from motionvar.core.quaternions import qinv, qrot
+from motionvar.io.intervals import parse_named, parse_ranges
 from motionvar.prep.segmentation import segment_motion
 from motionvar.synth import (
     CONTRACT_COLUMNS,
@@ -28,7 +29,6 @@ from motionvar.synth import (
     sample_sidestep_params,
     sample_walk_params,
 )
-from motionvar.synth.intervals import parse_intervals, parse_ranges
 
 SIDES = ("left", "right")
 
@@ -69,7 +69,7 @@ def sagittal_deg(m, joint_name, bone):
 
 
 def stance_segments(truth):
-    return [s for s in parse_intervals(truth["segments"]) if "Stance" in s[0]]
+    return [s for s in parse_named(truth["segments"]) if "Stance" in s[0]]
 
 
 # ---------------------------------------------------------------- determinism, contract
@@ -128,7 +128,7 @@ def test_dataset_is_deterministic_and_follows_the_contract():
     for m, (_, row) in zip(m1, meta1.iterrows()):  # every interval lies inside its clip
         for col in ("left_contacts", "right_contacts"):
             assert all(0 <= a < b <= m.n_frames for a, b in parse_ranges(row[col]))
-        assert all(0 <= a < b <= m.n_frames for _, a, b in parse_intervals(row["segments"]))
+        assert all(0 <= a < b <= m.n_frames for _, a, b in parse_named(row["segments"]))
     # a changed count of one behaviour leaves the other behaviours' clips as they were
     m3, meta3 = generate_dataset(SynthSpec(**{**SMALL, "subjects": 1, "runs": 2}))
     same = meta3[meta3.behaviour != "run"].reset_index(drop=True)
@@ -167,7 +167,7 @@ def test_stride_length_measured_from_fk_matches_metadata(clips):
 
 def test_speed_measured_from_the_root_matches_metadata(clips):
     for kind, m, truth in clips:
-        segs = stance_segments(truth) or parse_intervals(truth["segments"])
+        segs = stance_segments(truth) or parse_named(truth["segments"])
         a, b = segs[0][1], segs[-1][1]
         path = np.linalg.norm(np.diff(m.root_pos[a:b, [0, 2]], axis=0), axis=1).sum()
         measured = path / ((b - a) / m.fps)
@@ -228,7 +228,7 @@ def test_joint_angles_stay_in_human_ranges(clips):
 
 def test_segments_and_contacts_are_consistent(clips):
     for kind, m, truth in clips:
-        segs = parse_intervals(truth["segments"])
+        segs = parse_named(truth["segments"])
         starts = {s: {a for a, _ in parse_ranges(truth[s + "_contacts"])} for s in SIDES}
         if kind == "walk":
             assert (
@@ -263,7 +263,7 @@ def test_prep_recovers_the_ground_truth_primitives(clips):
     jm = cmu_joint_map()
     for kind, m, truth in clips:
         found = segment_motion(m, kind, jm)
-        want = parse_intervals(truth["segments"])
+        want = parse_named(truth["segments"])
         assert [s.name for s in found] == [s[0] for s in want], kind
         assert max(max(abs(f.start - w[1]), abs(f.stop - w[2])) for f, w in zip(found, want)) <= 3, kind
 

@@ -5,12 +5,12 @@ import pytest
 
 from motionvar.core import cmu_joint_map
 from motionvar.core.quaternions import qmul, qnormalize, qrot
+from motionvar.io.intervals import format_named, parse_named, parse_ranges
 from motionvar.metrics.realism import speed_peaks
 from motionvar.prep.options import PrepOptions
 from motionvar.prep.segmentation import hand_speed
 from motionvar.synth import reach
 from motionvar.synth.ik import two_bone_ik
-from motionvar.synth.intervals import format_intervals, parse_intervals, parse_ranges
 from motionvar.synth.reach import REGIONS, ReachParams, generate_pick, generate_place, reach_style, target_grid
 from motionvar.synth.signals import submovements
 from motionvar.synth.stance import body_com, stance_habit, to_body_frame
@@ -61,7 +61,7 @@ def test_hands_reach_the_target_and_stop(clips):
         sk = m.skeleton
         p = _body_positions(m, truth)
         hands = p[:, [sk.index("LeftHand"), sk.index("RightHand")]]
-        (name, a, end), (name2, b, _) = parse_intervals(truth["segments"])
+        (name, a, end), (name2, b, _) = parse_named(truth["segments"])
         assert (name, name2) == (f"{kind}_reach", f"{kind}_retrieve") and end == b
         err = np.linalg.norm(hands[end - 1] - _grips(truth), axis=-1)
         assert err.max() < 1.0, (kind, region, err)
@@ -88,7 +88,7 @@ def test_feet_do_not_slide(clips):
 
 def test_segments_cover_the_clip(clips):
     for kind, region, subject, m, truth in clips:
-        seg = parse_intervals(truth["segments"])
+        seg = parse_named(truth["segments"])
         assert seg[0][1] == 0 and seg[-1][2] == m.n_frames
         assert all(a[2] == b[1] and a[2] > a[1] for a, b in zip(seg, seg[1:]))
         assert truth["idle_postures"] == ""
@@ -229,7 +229,7 @@ def test_dense_grid_is_reachable():
     nodes = target_grid("dense", 15.0, s.height_scale)
     for k, node in enumerate(nodes):
         m, truth = _clip("pick", s, seed=k, target=tuple(node), object_width_cm=40.0 if k % 2 else 20.0)
-        end = parse_intervals(truth["segments"])[0][2]
+        end = parse_named(truth["segments"])[0][2]
         p = _body_positions(m, truth)[end - 1]
         hands = p[[m.skeleton.index("LeftHand"), m.skeleton.index("RightHand")]]
         assert np.linalg.norm(hands - _grips(truth), axis=-1).max() < 1.0
@@ -292,9 +292,9 @@ def test_two_bone_ik_reaches_and_bends_towards_the_pole():
 
 def test_intervals_round_trip():
     items = [("pick_reach", 0, 90), ("pick_retrieve", 90, 200)]
-    assert parse_intervals(format_intervals(items)) == items
+    assert parse_named(format_named(items)) == items
     with pytest.raises(ValueError, match="name:start:stop"):
-        parse_intervals("a:1")
+        parse_named("a:1")
 
 
 CORRECTED = dict(correction=True, primary_amplitude=0.85, correction_onset=0.85, correction_duration=0.3)
@@ -303,7 +303,7 @@ CORRECTED = dict(correction=True, primary_amplitude=0.85, correction_onset=0.85,
 def _reach_peaks(m, truth):
     """Hand-speed peaks (prominence 10 % of the maximum, as the realism table counts them)
     from the start to the truth's end of the reach."""
-    end = parse_intervals(truth["segments"])[0][2]
+    end = parse_named(truth["segments"])[0][2]
     speed = hand_speed(m, cmu_joint_map(), m.positions(), PrepOptions())
     return speed_peaks(speed[:end], 0.1)
 
@@ -320,7 +320,7 @@ def test_corrective_submovement_gives_a_second_speed_peak(kind):
             assert (t1["reach_submovements"], t2["reach_submovements"]) == (1, 2)
             assert (_reach_peaks(one, t1), _reach_peaks(two, t2)) == (1, 2), (kind, region, i)
             assert t1["segments"] == t2["segments"] and one.n_frames == two.n_frames
-            end = parse_intervals(t2["segments"])[0][2]
+            end = parse_named(t2["segments"])[0][2]
             hands = [_hands(m, t) for m, t in ((one, t1), (two, t2))]
             grips = _grips(t2)
             assert np.linalg.norm(hands[1][end - 1] - grips, axis=-1).max() < 0.01

@@ -29,6 +29,7 @@ from threadpoolctl import threadpool_limits
 
 from ..core.joint_map import JointMap
 from ..core.motion import Motion
+from ..io.intervals import parse_named
 from ..metrics.standing import support_ratio as _support_ratio
 from .fitting import posture_distance
 
@@ -151,17 +152,9 @@ def rest_spread(segments: np.ndarray, pcs: np.ndarray, weights: np.ndarray) -> f
 
 
 def parse_postures(spec: str, clip: str = "clip") -> list[tuple[str, int, int]]:
-    """Ground-truth resting postures "left:0:480;both:480:900" -> [(name, start, stop)]."""
-    out = []
-    for item in filter(None, (s.strip() for s in str(spec).split(";"))):
-        parts = item.split(":")
-        if len(parts) != 3:
-            raise ValueError(f"{clip}: idle_postures item {item!r} is not name:start:stop")
-        name, start, stop = parts[0], int(parts[1]), int(parts[2])
-        if stop <= start:
-            raise ValueError(f"{clip}: idle_postures item {item!r} has stop <= start")
-        out.append((name, start, stop))
-    return out
+    """Ground-truth resting postures "left:0:480;both:480:900" -> [(name, start, stop)]
+    (:func:`motionvar.io.intervals.parse_named`)."""
+    return parse_named(spec, f"{clip}: idle_postures")
 
 
 def frame_labels(intervals: list[tuple[str, int, int]], n_frames: int) -> np.ndarray:

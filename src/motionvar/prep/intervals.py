@@ -1,6 +1,7 @@
-"""Frame intervals: boolean masks <-> (start, stop) runs, cleaning, and the metadata text
-formats ``"start:stop;..."`` (contacts) and ``"name:start:stop;..."`` (segments), stop
-exclusive. All mask operations are vectorised run-length encodings (no loop over frames).
+"""Frame intervals: boolean masks <-> (start, stop) runs, cleaning, and the metadata text of
+contacts and segments as arrays and :class:`Segment` s (the text format:
+:mod:`motionvar.io.intervals`), stop exclusive. All mask operations are vectorised run-length
+encodings (no loop over frames).
 """
 
 from __future__ import annotations
@@ -8,6 +9,8 @@ from __future__ import annotations
 from typing import NamedTuple
 
 import numpy as np
+
+from ..io.intervals import format_named, format_ranges, parse_named, parse_ranges
 
 
 class Segment(NamedTuple):
@@ -55,49 +58,23 @@ def clean_mask(mask: np.ndarray, min_run: int, min_gap: int) -> np.ndarray:
     return intervals_to_mask(iv, len(m))
 
 
-def _is_blank(text: object) -> bool:
-    return text is None or (isinstance(text, float) and np.isnan(text)) or str(text).strip() == ""
-
-
 def parse_intervals(text: object, what: str = "intervals") -> np.ndarray:
-    """(K, 2) int array from ``"start:stop;start:stop"`` (blank or NaN: no intervals)."""
-    if _is_blank(text):
-        return np.zeros((0, 2), dtype=np.int64)
-    out = []
-    for item in str(text).split(";"):
-        parts = item.strip().split(":")
-        try:
-            start, stop = (int(p) for p in parts)
-        except ValueError:
-            raise ValueError(f"{what}: cannot read {item!r} as 'start:stop' in {text!r}") from None
-        if not 0 <= start < stop:
-            raise ValueError(f"{what}: interval {item!r} needs 0 <= start < stop")
-        out.append((start, stop))
-    return np.array(out, dtype=np.int64)
+    """(K, 2) int array from ``"start:stop;start:stop"`` (blank or NaN: no intervals;
+    :func:`motionvar.io.intervals.parse_ranges`)."""
+    return np.array(parse_ranges(text, what), dtype=np.int64).reshape(-1, 2)
 
 
 def parse_segments(text: object, what: str = "segments") -> list[Segment]:
-    """Segments from ``"name:start:stop;..."`` (frame indices, stop exclusive)."""
-    if _is_blank(text):
-        return []
-    out = []
-    for item in str(text).split(";"):
-        parts = item.strip().rsplit(":", 2)
-        try:
-            name, start, stop = parts[0], int(parts[1]), int(parts[2])
-        except (ValueError, IndexError):
-            raise ValueError(f"{what}: cannot read {item!r} as 'name:start:stop' in {text!r}") from None
-        if not name or not 0 <= start < stop:
-            raise ValueError(f"{what}: segment {item!r} needs a name and 0 <= start < stop")
-        out.append(Segment(name, start, stop))
-    return out
+    """Segments from ``"name:start:stop;..."`` (frame indices, stop exclusive;
+    :func:`motionvar.io.intervals.parse_named`)."""
+    return [Segment(*item) for item in parse_named(text, what)]
 
 
 def format_intervals(intervals: np.ndarray) -> str:
     """Inverse of :func:`parse_intervals`."""
-    return ";".join(f"{a}:{b}" for a, b in np.asarray(intervals, dtype=np.int64).reshape(-1, 2))
+    return format_ranges(np.asarray(intervals, dtype=np.int64).reshape(-1, 2))
 
 
 def format_segments(segments: list[Segment] | list[tuple[str, int, int]]) -> str:
     """Inverse of :func:`parse_segments`."""
-    return ";".join(f"{n}:{a}:{b}" for n, a, b in segments)
+    return format_named(segments)

@@ -16,7 +16,7 @@ import numpy as np
 import pandas as pd
 
 from ..core.motion import Motion
-from .intervals import parse_intervals
+from ..io.intervals import parse_named
 from .reach import ReachParams, generate_pick
 from .subjects import make_subjects
 
@@ -38,7 +38,7 @@ def dense_pick_segments(
         for k in range(per_subject):
             params = ReachParams(region="dense", grid_spacing_cm=grid_spacing_cm, fps=fps)
             m, truth = generate_pick(subject, params, rng)
-            seg = [s for s in parse_intervals(truth["segments"]) if s[0] == PRIMITIVE]
+            seg = [s for s in parse_named(truth["segments"]) if s[0] == PRIMITIVE]
             if len(seg) != 1:
                 raise ValueError(f"dense pick {i}/{k}: expected one {PRIMITIVE} segment in {truth['segments']!r}")
             _, start, stop = seg[0]

@@ -44,7 +44,7 @@ from ..core.kinematics import fk
 from ..core.motion import Motion
 from ..core.quaternions import qmul, qrot
 from ..core.skeleton import Skeleton
-from .intervals import format_intervals, format_ranges
+from ..io.intervals import format_named, format_ranges
 from .signals import colored_noise, minimum_jerk, subject_rng
 from .stance import (
     Feet,
@@ -203,7 +203,7 @@ def _truth_intervals(rests: list[Rest], fps: float, n: int) -> tuple[str, str]:
         for name, lo, hi in (("rest", r.start, r.stop), ("shift", r.stop, r.shift_stop)):
             if frame(hi) > frame(lo):
                 phases.append((name, frame(lo), frame(hi)))
-    return format_intervals(postures), format_intervals(phases)
+    return format_named(postures), format_named(phases)
 
 
 @dataclass(frozen=True)
@@ -324,7 +324,7 @@ def _idle_truth(
         "target_x": float("nan"),
         "target_y": float("nan"),
         "target_z": float("nan"),
-        "segments": format_intervals([("idle", 0, n)]),
+        "segments": format_named([("idle", 0, n)]),
         "idle_phases": phases,
         "left_contacts": format_ranges([(0, n)]),
         "right_contacts": format_ranges([(0, n)]),

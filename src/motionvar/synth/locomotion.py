@@ -31,9 +31,9 @@ import numpy as np
 
 from ..core.motion import Motion
 from ..core.quaternions import qfix
+from ..io.intervals import format_named, format_ranges
 from .footsteps import SIDES, BodyGeometry, Plan, plan_run, plan_sidestep, plan_walk
 from .gait_params import Manner, RunParams, SidestepParams, WalkParams
-from .intervals import format_intervals, format_ranges
 from .legs import legs_along, solve_leg_tracks
 from .stance import hip_offsets, identity_rotations, to_world
 from .subjects import Subject
@@ -84,7 +84,7 @@ def _realise(
             "target_x": float("nan"),
             "target_y": float("nan"),
             "target_z": float("nan"),
-            "segments": format_intervals((name, a - c0, b - c0) for name, a, b in plan.segments),
+            "segments": format_named((name, a - c0, b - c0) for name, a, b in plan.segments),
             "left_contacts": format_ranges(contacts["left"]),
             "right_contacts": format_ranges(contacts["right"]),
             "heading_deg": float(heading_deg),

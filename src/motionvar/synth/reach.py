@@ -72,7 +72,7 @@ import numpy as np
 from ..core.kinematics import fk
 from ..core.motion import Motion
 from ..core.skeleton import Skeleton
-from .intervals import format_intervals, format_ranges
+from ..io.intervals import format_named, format_ranges
 from .signals import minimum_jerk, subject_rng, submovements
 from .stance import (
     SIDES,
@@ -576,7 +576,7 @@ def _reach_truth(params: ReachParams, kind: str, d: _ClipDraws, tl: _Timeline, s
         "target_x": float(d.target[0]),
         "target_y": float(d.target[1]),
         "target_z": float(d.target[2]),
-        "segments": format_intervals([(f"{kind}_reach", 0, frame_b + 1), (f"{kind}_retrieve", frame_b + 1, n)]),
+        "segments": format_named([(f"{kind}_reach", 0, frame_b + 1), (f"{kind}_retrieve", frame_b + 1, n)]),
         "left_contacts": format_ranges([(0, n)]),
         "right_contacts": format_ranges([(0, n)]),
         "idle_postures": "",
