@@ -20,8 +20,7 @@ from motionvar.core import cmu_skeleton
 from motionvar.core.kinematics import fk_torch
 from motionvar.du2022.fda import SFPCA, canonical_primitives, choose_basis_sizes, functional_primitive
 from motionvar.du2022.fda.evaluations import evaluate_table3_1, reconstruction_curves
-from motionvar.du2022.fda.evaluations.curves import fitted_sfpca
-from motionvar.du2022.fda.evaluations.table3_1 import fit_reference_sfpca, reference_dims
+from motionvar.du2022.fda.models import fit_reference_sfpca, fitted_sfpca, reference_dims
 from motionvar.du2022.fda.settings import BasisSettings, FdaSettings, SfpcaSettings, TableSettings
 from motionvar.du2022.fda.sfpca import fk_joint_major
 from motionvar.io import save_dataset

@@ -9,7 +9,7 @@ def main(snakemake) -> None:
     from _rule import config_settings
 
     from motionvar.du2022.fda import functional_primitive, n_basis_of
-    from motionvar.du2022.fda.evaluations.table3_1 import fit_reference_sfpca
+    from motionvar.du2022.fda.models import fit_reference_sfpca
 
     setup_threads(snakemake)
     settings = config_settings(snakemake, "fda")

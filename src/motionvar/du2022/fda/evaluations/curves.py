@@ -24,7 +24,7 @@ import pandas as pd
 
 if TYPE_CHECKING:
     from ..functions import FunctionalMotions
-    from ..settings import FdaSettings, GplvmSettings, SfpcaSettings
+    from ..settings import FdaSettings
     from ..sfpca import SFPCA
 
 log = logging.getLogger(__name__)
@@ -47,42 +47,6 @@ def kmeans_labels(fd: FunctionalMotions, positions: np.ndarray, n_clusters: int,
     return KMeans(n_clusters=n_clusters, init="k-means++", n_init=10, random_state=seed).fit_predict(x)
 
 
-def fitted_sfpca(model: SFPCA, fd: FunctionalMotions, sfpca: SfpcaSettings, source: str = "SFPCA model") -> SFPCA:
-    """``model`` (an SFPCA fitted elsewhere, e.g. read from a file) checked to be the fit
-    that :func:`sfpca_for` with settings ``sfpca`` would make on ``fd`` at its dimension:
-    same clips, same options. ValueError naming ``source`` otherwise."""
-    from ..primitives import sfpca_for
-    from ..sfpca import SFPCA
-
-    model.check_fitted_on(fd, source)
-    wanted = sfpca_for(fd, int(model.n_components), sfpca)
-    differ = {
-        n: (getattr(model, n), getattr(wanted, n))
-        for n in SFPCA._SAVED_PARAMS
-        if getattr(model, n) != getattr(wanted, n)
-    }
-    if differ:
-        said = ", ".join(f"{n} {a!r} (wanted {b!r})" for n, (a, b) in differ.items())
-        raise ValueError(f"{source}: fitted with other options: {said}; rerun the rule that wrote it")
-    return model
-
-
-def fit_gplvm(fd: FunctionalMotions, d: int, gplvm: GplvmSettings, seed: int, labels: np.ndarray | None):
-    """The Bayesian GPLVM baseline of dimension ``d`` on ``fd`` (Sec. 3.3.5) with settings
-    ``gplvm``, initialised with ``seed``; ``labels``: those of the discriminative prior
-    (None: none)."""
-    from ..functional_gplvm import FunctionalGPLVM
-
-    return FunctionalGPLVM(
-        d,
-        n_inducing=gplvm.n_inducing,
-        max_iter=gplvm.max_iter,
-        noise_init=gplvm.noise_init,
-        discriminative_sigma2=gplvm.discriminative_sigma2,
-        random_state=seed,
-    ).fit(fd, labels)
-
-
 def method_curves(
     method: str,
     fd: FunctionalMotions,
@@ -97,11 +61,12 @@ def method_curves(
     (``fd.positions()``); ``settings``: ``seed``, ``sfpca`` (:func:`sfpca_for`) and ``gplvm``
     (:func:`fit_gplvm`; ``discriminative_sigma2`` None: no prior). ``fitted``: SFPCA fits
     already made with these settings, by dimension (e.g. Table 3.1's reference fit,
-    :func:`.table3_1.fit_reference_sfpca`), used instead of fitting again; their fit seconds
+    :func:`..models.fit_reference_sfpca`), used instead of fitting again; their fit seconds
     are those of the original fit."""
     # the fitting classes (scikit-learn, scipy.optimize) are imported here: Fig. 3.10's
     # rule needs only curves_table
     from ..fpca import FPCA, NormalizedFPCA, RootScaledFPCA
+    from ..models import fit_gplvm, fitted_sfpca  # scipy.optimize and the GPLVM load with the fits
     from ..primitives import sfpca_for
     from .measures import feature_error, observation_error
 

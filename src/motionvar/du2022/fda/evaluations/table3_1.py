@@ -14,8 +14,9 @@ import pandas as pd
 from ....claims import EvaluationResult
 from ..fpca import FPCA, WeightedFPCA
 from ..functions import FunctionalMotions
-from ..primitives import primitive_motions, sfpca_for
-from ..settings import FdaSettings, TableSettings
+from ..models import fit_reference_sfpca, reference_dims
+from ..primitives import primitive_motions
+from ..settings import FdaSettings
 from ..sfpca import SFPCA
 from .measures import observation_error
 
@@ -47,25 +48,6 @@ def smallest_dim(error_of: Callable[[int], float], d_max: int, threshold: float)
         else:
             lo = mid
     return hi, seen
-
-
-def reference_dims(n_clips: int, table: TableSettings) -> tuple[int, int]:
-    """(d_max, d_ref) of Table 3.1 for a primitive of ``n_clips`` clips: the largest
-    dimension searched (``table.max_components``) and the one SFPCA's weights are optimised
-    at (``table.reference_components``), both capped at clips - 1 (the rank of the centred
-    data)."""
-    d_max = min(table.max_components, n_clips - 1)
-    return d_max, min(table.reference_components, d_max)
-
-
-def fit_reference_sfpca(fd: FunctionalMotions, settings: FdaSettings) -> SFPCA:
-    """The SFPCA of Table 3.1 for one primitive: fitted at the reference dimension
-    (:func:`reference_dims` of ``settings.table``) with settings ``settings.sfpca``
-    (:func:`sfpca_for`). For the Fig. 3.10 primitives it is fitted once (rule
-    du2022_fda_sfpca) and read by Table 3.1 and by their curves, which fit SFPCA at the same
-    dimension with the same settings."""
-    _, d_ref = reference_dims(fd.n_clips, settings.table)
-    return sfpca_for(fd, d_ref, settings.sfpca).fit(fd)
 
 
 def evaluate_table3_1(
