@@ -296,3 +296,19 @@ def test_yaml_syntax_error_names_file_and_line(tmp_path):
     )
     assert run.returncode != 0
     assert f"Invalid configuration file {copy / 'config' / 'config.yaml'}:3:8" in run.stdout + run.stderr
+
+
+def test_config_readme_is_the_schema_written_out():
+    """config/README.md lists every config file kind and every key of the schema with its default
+    and meaning (tools/config_doc.py writes it from config/schema.yaml)."""
+    import importlib.util
+
+    path = Path(__file__).resolve().parents[1] / "tools" / "config_doc.py"
+    spec = importlib.util.spec_from_file_location("config_doc", path)
+    tool = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(tool)
+    schema = yaml.safe_load(tool.SCHEMA.read_text(encoding="utf-8"))
+    text = tool.DOC.read_text(encoding="utf-8")
+    assert text == tool.render(schema), "run python tools/config_doc.py"
+    for key in ("ma2010.loo_max_clips", "egges2004.held_out_by", "stability.marks", "datasets.<name>.unit_cm"):
+        assert f"`{key}`" in text, key
