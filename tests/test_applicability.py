@@ -222,3 +222,29 @@ def test_not_applicable_in_a_model_rule_is_an_error_line(tmp_path, capsys):
     with pytest.raises(SystemExit):
         run(FakeSnakemake(tmp_path, "egges2004_model", output=Named(model=str(tmp_path / "m.npz"))), main)
     assert "ERROR rule egges2004_model: not applicable to this dataset: no idle clips" in capsys.readouterr().err
+
+
+def test_summary_shows_each_claims_value_against_its_bound_in_one_line():
+    """The summary's measured cell is one line, the value and its bound; the numbers behind it
+    fold beneath it, whole; a claim without a value says so."""
+    claims = [
+        Claim(
+            "ma2010.a",
+            "ma2010",
+            "Fig. 6",
+            "replication",
+            "s",
+            "p",
+            "max 1.83 cm over 80 cycles; a; b; c",
+            "partial",
+            value=1.83,
+            bound=1.2,
+            unit="cm",
+            direction="<=",
+        ),
+        Claim("ma2010.b", "ma2010", "Fig. 8", "replication", "s", "p", "-", "not applicable", note="one subject"),
+    ]
+    html = claims_html(pd.DataFrame([c.__dict__ for c in claims]), {"ma2010": "Ma et al. 2010"})
+    assert "<summary>1.83 cm, bound &lt;= 1.2 <span>(the numbers)</span></summary>" in html
+    assert "<div>max 1.83 cm over 80 cycles; a; b; c</div>" in html
+    assert "<td>no value</td>" in html

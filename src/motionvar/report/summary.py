@@ -55,7 +55,37 @@ td.note { font-size: 0.85em; color: #444; }
 p.none { color: #666; font-style: italic; }
 .counts span.apart { background: none; color: #555; font-size: 0.85em; padding: 0; }
 span.kind { font-size: 0.8em; font-style: italic; color: #555; }
+details.measured summary { cursor: pointer; }
+details.measured summary span { color: #555; font-size: 0.85em; }
+details.measured div { font-size: 0.85em; color: #333; margin-top: 0.3em; }
 """
+
+
+def _number(x: object) -> str:
+    """A value or bound as the summary shows it (3 significant digits; blank for none)."""
+    try:
+        v = float(x)
+    except (TypeError, ValueError):
+        return str(x)
+    return "" if v != v else f"{v:.3g}"
+
+
+def _measured_cell(r) -> str:
+    """One line, the value and its bound ("no value" for a claim without one); the measured
+    numbers behind it folded beneath (the claims table keeps them whole)."""
+    esc = html.escape
+    value, bound = _number(r.value), " ".join(x for x in (str(r.direction), _number(r.bound)) if x)
+    line = (
+        esc(" ".join(x for x in (value, str(r.unit)) if x) + (f", bound {bound}" if bound else ""))
+        if value
+        else "no value"
+    )
+    if not str(r.measured).strip() or str(r.measured).strip() == "-":
+        return line
+    return (
+        f'<details class="measured"><summary>{line} <span>(the numbers)</span></summary>'
+        f"<div>{esc(r.measured)}</div></details>"
+    )
 
 
 def _counts(row: pd.Series) -> str:
@@ -145,7 +175,7 @@ def claims_html(
             parts.append(
                 f'<tr><td>{esc(r.source)}<br><span class="kind">{esc(r.kind)}</span><br>'
                 f'<span class="id">{esc(r.claim_id)}</span></td>'
-                f"<td>{esc(r.statement)}</td><td>{esc(r.published)}</td><td>{esc(r.measured)}</td>"
+                f"<td>{esc(r.statement)}</td><td>{esc(r.published)}</td><td>{_measured_cell(r)}</td>"
                 f'<td class="verdict" style="background:{VERDICT_COLOURS[r.shown_verdict]}">{esc(r.verdict)}'
                 f"{_stability_text(agreement, r.claim_id, r.shown_verdict)}</td>"
                 f'<td class="note">{esc(r.note)}</td></tr>'
