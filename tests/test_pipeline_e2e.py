@@ -91,6 +91,19 @@ def test_ci_synthetic_data_lies_in_the_captured_bands(ci_run):
 
 
 @pytest.mark.e2e
+def test_a_key_one_figure_reads_reruns_that_figure_only(ci_run, tmp_path):
+    """Rules read what they use: an edit of report.animation_clips (the dataset GIF's) reruns the
+    dataset animation, and not Ma 2010's Sec. 7.4, whose GIF takes only the report section's frame
+    rate and panel size (dry run)."""
+    work, edited = ci_run[0], tmp_path / "edited.yaml"
+    edited.write_text("report:\n  animation_clips: 2\n")
+    result = snakemake("-d", str(work), "--configfile", CI_CONFIG, str(edited), "-n", cwd=work, timeout=300)
+    assert result.returncode == 0, result.stdout[-2000:] + result.stderr[-4000:]
+    planned = result.stdout + result.stderr
+    assert "rule dataset_animation:" in planned and "rule ma2010_sec7_4:" not in planned, planned[-3000:]
+
+
+@pytest.mark.e2e
 def test_dry_run_through_the_default_profile_writes_no_report(ci_run):
     work = ci_run[0]
     report = work / "reports" / "synthetic.html"
