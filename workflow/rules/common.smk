@@ -359,6 +359,12 @@ def rig_lacks(dataset):
         return set()
 
 
+def dataset_models(dataset):
+    """The DATASET_MODELS of one dataset: those whose hands or toes its rig has."""
+    lacks = rig_lacks(dataset)
+    return [p.format(dataset=dataset) for p, joints in DATASET_MODELS if not lacks & set(joints)]
+
+
 def default_outputs(dataset):
     """What `snakemake` builds for one dataset: the data figures, the preprocessed
     clips, the DATASET_MODELS, every registered evaluation (or its not-applicable
@@ -368,7 +374,7 @@ def default_outputs(dataset):
         f"results/{dataset}/figures/dataset_overview.png",
         f"results/{dataset}/figures/dataset_realism.png",
         f"results/{dataset}/figures/dataset_animation.gif",
-        *[p.format(dataset=dataset) for p, joints in DATASET_MODELS if not rig_lacks(dataset) & set(joints)],
+        *dataset_models(dataset),
         *evaluation_outputs(dataset),
         *gif_pages(dataset),
         f"results/{dataset}/claims.csv",

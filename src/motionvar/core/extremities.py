@@ -13,6 +13,7 @@ from collections.abc import Sequence
 import numpy as np
 
 from .joint_map import JointMap
+from .kinematics import fk
 from .motion import Motion
 from .quaternions import qrot
 
@@ -25,8 +26,14 @@ def end_site_positions(motion: Motion, joints: Sequence[int]) -> np.ndarray:
     lacking = [sk.names[j] for j in joints if j not in sk.end_sites]
     if lacking:
         raise ValueError(f"joints {lacking} have no End Site")
-    pos = motion.positions()
-    rot = motion.global_rotations()
+    pos, rot = fk(
+        motion.rotations,
+        motion.root_pos,
+        sk.offsets,
+        sk.parents,
+        motion.translations,
+        return_rotations=True,
+    )  # one forward kinematics for the positions and the rotations
     idx = np.asarray(joints, dtype=np.int64)
     return pos[:, idx] + qrot(rot[:, idx], np.stack([sk.end_sites[int(j)] for j in idx]))
 
