@@ -6,7 +6,8 @@ applicable, and those that need the hands or toes this rig lacks say so."""
 
 import pandas as pd
 import pytest
-from test_pipeline_e2e import CI_CONFIG, ROOT, snakemake
+from test_pipeline_e2e import ROOT
+from test_real_data_e2e import run_real_config
 
 from motionvar.claims import CHECKED_VERDICTS
 
@@ -31,19 +32,7 @@ def idle_run(tmp_path_factory):
     work = base / "run"
     (work / "reports").mkdir(parents=True)
     (work / "config").symlink_to(ROOT / "config")
-    result = snakemake(
-        "-d",
-        str(work),
-        "--configfile",
-        CI_CONFIG,
-        str(ROOT / "config" / "real" / f"{DATASET}.yaml"),
-        "--config",
-        f"datasets={{{DATASET}: {{path: {subset}}}}}",
-        "--cores",
-        "2",
-        cwd=work,
-    )
-    assert result.returncode == 0, result.stdout[-4000:] + result.stderr[-8000:]
+    run_real_config(work, DATASET, "--config", f"datasets={{{DATASET}: {{path: {subset}}}}}")
     return work
 
 

@@ -20,6 +20,23 @@ pytestmark = [
 ]
 
 
+def run_real_config(work, dataset: str, *more: str) -> None:
+    """Run config/real/<dataset>.yaml, reduced by config/ci.yaml, in ``work`` (which has a
+    reports/ folder), with ``more`` arguments; assert it ends clean."""
+    result = snakemake(
+        "-d",
+        str(work),
+        "--configfile",
+        CI_CONFIG,
+        str(ROOT / "config" / "real" / f"{dataset}.yaml"),
+        *more,
+        "--cores",
+        "2",
+        cwd=work,
+    )
+    assert result.returncode == 0, result.stdout[-4000:] + result.stderr[-8000:]
+
+
 @pytest.fixture(scope="module")
 def real_run(tmp_path_factory):
     base = tmp_path_factory.mktemp("real")
@@ -28,17 +45,7 @@ def real_run(tmp_path_factory):
     # the config's paths are relative to the working directory, as from the repository root
     (base / "shared").symlink_to(ROOT.parent / "shared")
     shutil.copytree(ROOT / "config" / "joint_maps", work / "config" / "joint_maps")
-    result = snakemake(
-        "-d",
-        str(work),
-        "--configfile",
-        CI_CONFIG,
-        str(ROOT / "config" / "real" / f"{DATASET}.yaml"),
-        "--cores",
-        "2",
-        cwd=work,
-    )
-    assert result.returncode == 0, result.stdout[-4000:] + result.stderr[-8000:]
+    run_real_config(work, DATASET)
     return work
 
 
