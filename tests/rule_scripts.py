@@ -36,8 +36,13 @@ def helper_module(name: str) -> ModuleType:
 
 
 def script(name: str) -> ModuleType:
-    """The rule script ``workflow/scripts/<name>.py`` as a module (call its ``main``)."""
+    """The rule script ``workflow/scripts/<name>.py`` as a module (call its ``main``); for a
+    declared evaluation without a script of its own, ``evaluation.py`` (the stand-in's ``rule``
+    names the evaluation)."""
     rule_module()
+    helper_module("_evaluation")
+    if not (SCRIPTS / f"{name}.py").exists():
+        name = "evaluation"
     return _load(name, f"script_{name}")
 
 

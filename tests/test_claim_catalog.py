@@ -26,8 +26,8 @@ def test_every_claim_is_declared_once_with_a_kind():
 
 def test_every_evaluation_is_declared_once_and_everything_else_is_read_off_it():
     """Each paper declares its evaluations once (``<paper>/catalog.py``): a unique name
-    ``<paper>_<what>``, a config section with a settings class, a rule script and a report
-    caption of that name, the requirements the applicability table gives it (the same source and
+    ``<paper>_<what>``, a config section with a settings class, a report caption of that name,
+    an input set, a measuring and a drawing function, the requirements the applicability table gives it (the same source and
     checks), and every claim's evaluation among them."""
     from motionvar.claim_catalog import EVALUATIONS, evaluation
     from motionvar.config_sections import SECTIONS, section_settings
@@ -40,7 +40,7 @@ def test_every_evaluation_is_declared_once_and_everything_else_is_read_off_it():
     workflow = SRC.parents[1] / "workflow"
     for e in EVALUATIONS:
         assert e.section in SECTIONS and e.source and e.checks, e
-        assert (workflow / "scripts" / f"{e.name}.py").is_file() and (workflow / "report" / f"{e.name}.rst").is_file()
+        assert (workflow / "report" / f"{e.name}.rst").is_file() and e.inputs and e.measure and e.draw, e.name
     papers = {"ma2010": ma2010, "fda": fda_requirements, "graph": graph_requirements, "style": style_requirements}
     reqs = [r for sec, of in {**papers, "egges2004": egges2004}.items() for r in of(section_settings(sec, {}))]
     assert sorted(r.evaluation for r in reqs) == sorted(names)

@@ -1,7 +1,8 @@
 """What each rule passes is its config section whole: every rule with a ``settings`` param gets
 exactly one merged, validated config section, which its settings class rebuilds without
 dropping or renaming a key; every evaluation the library declares (motionvar.<paper>.catalog)
-is one rule from one registered EvaluationSpec, and passes its declared section."""
+is one rule, made from the declaration, that passes its declared section and runs the generic
+script (or its own, where it writes more) with its input set's files and loader."""
 
 import tempfile
 from pathlib import Path
@@ -56,16 +57,34 @@ def test_every_settings_param_is_a_whole_section(workflow):
     assert "dataset_overview" in checked and "ma2010_sec7_4" in checked
 
 
-def test_every_evaluation_rule_is_one_listed_spec(workflow):
+def test_every_declared_evaluation_is_one_rule(workflow):
     g = workflow.globals
-    from motionvar.claim_catalog import EVALUATIONS, evaluation
+    from rule_scripts import SCRIPTS, helper_module
 
-    listed = [e.name for e in EVALUATIONS]
-    assert sorted(listed) == sorted(g["EVALUATIONS"]), "the declared evaluations and the registered specs differ"
+    from motionvar.claim_catalog import EVALUATIONS
+
+    loaders = helper_module("_evaluation").LOADERS
+    assert [e.name for e in EVALUATIONS] == list(g["EVALUATIONS"]), "the workflow's evaluations are the declared ones"
+    assert set(g["INPUT_SETS"]) == {e.inputs for e in EVALUATIONS} == set(loaders)
     rules = {r.name: r for r in workflow.rules}
-    for name, spec in g["EVALUATIONS"].items():
-        d = evaluation(name)
-        assert name.startswith(d.paper + "_") and d.paper in g["PAPER_CATEGORY"], f"evaluation {name}: <paper>_<what>"
-        rule = rules[name]
-        assert rule.params.settings == workflow.config[d.section], f"rule {name} must pass config.{d.section}"
-        assert "options" not in param_names(rule), f"rule {name} copies config keys by hand (params.options)"
+    for d in EVALUATIONS:
+        assert d.name.startswith(d.paper + "_") and d.paper in g["PAPER_CATEGORY"], (
+            f"evaluation {d.name}: <paper>_<what>"
+        )
+        rule = rules[d.name]
+        assert rule.params.settings == workflow.config[d.section], f"rule {d.name} must pass config.{d.section}"
+        assert "options" not in param_names(rule), f"rule {d.name} copies config keys by hand (params.options)"
+        own = d.name in g["EVALUATION_ADDITIONS"] and g["EVALUATION_ADDITIONS"][d.name].outputs
+        assert rule.params.script == (d.name if own else "evaluation")
+        assert (SCRIPTS / f"{rule.params.script}.py").is_file()
+        assert set(rule.input.keys()) >= set(g["INPUT_SETS"][d.inputs]), f"rule {d.name}: its input set's files"
+
+
+def test_every_declaration_names_functions_that_exist():
+    from motionvar.claim_catalog import EVALUATIONS
+    from motionvar.claims import resolve
+
+    for d in EVALUATIONS:
+        assert callable(resolve(d.measure)) and callable(resolve(d.draw)), d.name
+    with pytest.raises(ValueError, match="names no function"):
+        resolve("motionvar.ma2010.figures:draw_nothing")

@@ -13,8 +13,9 @@ from .ma2010.catalog import EVALUATIONS as MA2010_EVALUATIONS
 from .ma2010.claims import CLAIMS as MA2010
 
 CLAIMS: tuple[ClaimSpec, ...] = MA2010 + DU2022 + EGGES2004
-#: every published evaluation, as each paper's ``catalog.py`` declares it
-EVALUATIONS: tuple[Evaluation, ...] = MA2010_EVALUATIONS + DU2022_EVALUATIONS + EGGES2004_EVALUATIONS
+#: every published evaluation, as each paper's ``catalog.py`` declares it, in the order of a run's
+#: claims table (``results/<dataset>/claims.csv``)
+EVALUATIONS: tuple[Evaluation, ...] = DU2022_EVALUATIONS + MA2010_EVALUATIONS + EGGES2004_EVALUATIONS
 
 
 def evaluation(name: str) -> Evaluation:

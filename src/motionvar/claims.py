@@ -191,16 +191,35 @@ class NotApplicable(Exception):
 
 @dataclass(frozen=True)
 class Evaluation:
-    """One published evaluation as its paper's package declares it (``<paper>/catalog.py``):
-    its rule, script and report caption are named ``name`` (``<paper>_<what>``); ``source`` is
-    the paper's figure or section, ``checks`` what it checks in one line, ``section`` the config
-    section whose settings it reads, ``label`` how the report names it (``source`` where empty)."""
+    """One published evaluation as its paper's package declares it (``<paper>/catalog.py``); the
+    workflow makes its rule from this declaration alone (workflow/rules/evaluations.smk).
+
+    ``name`` (``<paper>_<what>``) names its rule, its report caption (``workflow/report/<name>.rst``)
+    and its claims (``ClaimSpec.evaluation``); ``source`` is the paper's figure or section,
+    ``checks`` what it checks in one line, ``section`` the config section whose settings it reads,
+    ``label`` how the report names it (``source`` where empty).
+
+    How it runs: ``inputs`` names the input set the workflow loads for it (its files and their
+    loader: ``workflow/rules/<paper>_helpers.smk``, ``workflow/scripts/_inputs.py``), passed to
+    ``measure`` as keyword arguments with ``settings=`` the section's settings (where ``measure``
+    takes them); ``measure`` returns an :class:`EvaluationResult` and ``draw`` its figure. Both are
+    ``"module:function"`` names, imported when the rule runs (:func:`resolve`). ``table_format``:
+    the table's float format (pandas ``float_format``; empty: repr), ``dpi``: the figure's,
+    ``mem_mb``: the rule's memory. An evaluation with outputs besides its table, figure and claims
+    (a GIF) has its own script, ``workflow/scripts/<name>.py``, which writes them after
+    ``_rule.write_declared``."""
 
     name: str
     source: str
     checks: str
     section: str
     label: str = ""
+    inputs: str = ""
+    measure: str = ""
+    draw: str = ""
+    table_format: str = ""
+    dpi: int = 110
+    mem_mb: int = 3000
 
     @property
     def paper(self) -> str:
@@ -209,6 +228,18 @@ class Evaluation:
     @property
     def shown(self) -> str:
         return self.label or self.source
+
+
+def resolve(name: str) -> Callable[..., Any]:
+    """The function a declaration names as ``"module:function"`` (:class:`Evaluation`);
+    ValueError naming it when the module or the function is not there."""
+    import importlib
+
+    module, _, attr = name.partition(":")
+    try:
+        return getattr(importlib.import_module(module), attr)
+    except (ImportError, AttributeError) as exc:
+        raise ValueError(f"{name!r} names no function (module:function): {exc}") from exc
 
 
 @dataclass

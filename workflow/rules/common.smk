@@ -54,12 +54,21 @@ PRIORITY = {
     "du2022_graph_primitive": 20,
 }
 
-# Every published evaluation, one rule each, named <paper>_<evaluation>; this table lists
-# them all (in report order); each paper's rule file declares an EvaluationSpec per name
-# (register_evaluation) and workflow/rules/evaluations.smk makes one rule of each.
+# Every published evaluation is one declaration in its paper's package (motionvar.<paper>.catalog:
+# its name, source, config section, input set, measuring and drawing functions; read here through
+# motionvar.claim_catalog.EVALUATIONS, in the claims table's order); evaluations.smk makes one
+# rule of each. The paper rule files add the files of each input set (INPUT_SETS) and, for the
+# few evaluations that write or bring more than their table, figure and claims, those outputs
+# (EVALUATION_ADDITIONS).
+from motionvar.claim_catalog import EVALUATIONS as _DECLARED
 
-# name -> EvaluationSpec, filled by the paper rule files
-EVALUATIONS = {}
+# name -> the library's declaration (motionvar.claims.Evaluation)
+EVALUATIONS = {e.name: e for e in _DECLARED}
+# input set (Evaluation.inputs) -> {input name: path pattern or input function}; loaded for the
+# rule's measuring function by workflow/scripts/_inputs.py
+INPUT_SETS = {}
+# evaluation name -> RuleAdditions
+EVALUATION_ADDITIONS = {}
 
 # Config keys that were renamed: old dotted key -> new one (a config that still uses the old
 # key stops with a message naming the new one).
@@ -239,54 +248,48 @@ def gif_pages(dataset):
     ]
 
 
+def add_input_set(name, files):
+    """The files of input set ``name`` (a declaration's ``inputs``): {input name: path pattern or
+    input function}. An input named ``joint_map`` brings the map's path as a param too."""
+    if name in INPUT_SETS:
+        raise ValueError(f"input set {name} added twice")
+    INPUT_SETS[name] = files
+
+
 @dataclass(frozen=True)
-class EvaluationSpec:
-    """What the workflow adds to a published evaluation the library declares
-    (``motionvar.<paper>.catalog``: its name, paper, source and config section): the rule
-    ``name`` runs workflow/scripts/<name>.py and writes its table, figure and claims (report
-    caption workflow/report/<name>.rst) plus ``outputs``, with the declared section passed whole
-    as ``params.settings`` (the script builds its settings object from it).
+class RuleAdditions:
+    """What the rule of a declared evaluation writes or brings besides its table, figure and
+    claims: ``outputs`` (name -> path, already given to ``in_report`` where the report shows
+    them; the evaluation's own script, workflow/scripts/<name>.py, writes them), ``params``,
+    and ``extra``: files of other rules that join the default target with the evaluation."""
 
-    inputs: name -> path pattern or input function. outputs: further outputs of the rule,
-    name -> path (already given to ``in_report`` where the report shows them). params: further
-    params. extra: further files that join the default target with the evaluation (built by
-    other rules). mem_mb, threads and priority are the rule's."""
-
-    name: str
-    inputs: dict
-    mem_mb: int = 3000
     outputs: dict = field(default_factory=dict)
     params: dict = field(default_factory=dict)
     extra: tuple = ()
-    threads: int = 1
-    priority: int = 0
 
 
-def declared(name):
-    """The library's declaration of evaluation ``name`` (motionvar.claim_catalog.evaluation):
-    its paper, source, label and config section."""
-    from motionvar.claim_catalog import evaluation
+def add_to_evaluation(name, **additions):
+    """RuleAdditions (outputs, params, extra) for the rule of declared evaluation ``name``."""
+    if name not in EVALUATIONS:
+        raise ValueError(f"{name}: no such evaluation is declared (motionvar.<paper>.catalog)")
+    if name in EVALUATION_ADDITIONS:
+        raise ValueError(f"evaluation {name} given additions twice")
+    EVALUATION_ADDITIONS[name] = RuleAdditions(**additions)
 
-    return evaluation(name)
 
-
-def register_evaluation(spec):
-    """Add a declared evaluation to the default target, the claims merge and the report (one
-    rule, made by evaluations.smk)."""
-    if spec.name in EVALUATIONS:
-        raise ValueError(f"evaluation {spec.name} registered twice")
-    d = declared(spec.name)
-    if d.paper not in PAPER_CATEGORY:
-        raise ValueError(f"evaluation {spec.name}: unknown paper {d.paper}")
-    if d.section not in config:
-        raise ValueError(f"evaluation {spec.name}: no config section {d.section!r}")
-    EVALUATIONS[spec.name] = spec
+def evaluation_input(ev):
+    """The files of a declared evaluation's input set (WorkflowError naming it when no rule
+    file adds that set)."""
+    d = EVALUATIONS[ev]
+    if d.inputs not in INPUT_SETS:
+        raise WorkflowError(f"evaluation {ev}: no rule file adds its input set {d.inputs!r} (add_input_set)")
+    return INPUT_SETS[d.inputs]
 
 
 def evaluation_extra(name):
     """The further outputs that join the default target with evaluation ``name``."""
-    spec = EVALUATIONS[name]
-    return [str(p) for p in [*spec.extra, *(p for p in spec.outputs.values() if str(p).endswith(".gif"))]]
+    add = EVALUATION_ADDITIONS.get(name, RuleAdditions())
+    return [str(p) for p in [*add.extra, *(p for p in add.outputs.values() if str(p).endswith(".gif"))]]
 
 
 # Applicability (rules/applicability.smk): checkpoint applicability decides from a

@@ -108,39 +108,17 @@ rule du2022_fda_curves:
         "../scripts/du2022_fda_curves.py"
 
 
-# The evaluations (tables, figures, claims): one rule each, made by evaluations.smk from
-# these specs (params.settings: the whole config section fda; script ../scripts/<name>.py).
-FDA_CANONICAL = {"clips": f"{FDA}/canonical/clips.npz", "metadata": f"{FDA}/canonical/metadata.csv"}
-
-register_evaluation(
-    EvaluationSpec(
-        "du2022_fig3_9",
-        inputs={"rmse": f"{FDA}/basis_rmse.csv"},
-        mem_mb=1000,
-        priority=PRIORITY.get("du2022_fig3_9", 0),
-    )
-)
-register_evaluation(
-    EvaluationSpec(
-        "du2022_fig3_10",
-        inputs={"curves": fda_curve_files()},
-        mem_mb=2000,
-        priority=PRIORITY.get("du2022_fig3_10", 0),
-    )
-)
-register_evaluation(
-    EvaluationSpec(
-        "du2022_fig3_11",
-        inputs={"curves": fda_curve_files()},
-        mem_mb=2000,
-        priority=PRIORITY.get("du2022_fig3_11", 0),
-    )
-)
-register_evaluation(
-    EvaluationSpec(
-        "du2022_table3_1",
-        inputs={**FDA_CANONICAL, "n_basis": f"{FDA}/n_basis.csv", "sfpca": fda_sfpca_models},
-        mem_mb=4000,
-        priority=PRIORITY.get("du2022_table3_1", 0),
-    )
+# The input sets of the evaluations (motionvar.du2022.catalog; rules made by evaluations.smk):
+# the basis fit errors (Fig. 3.9), the reconstruction curves (Fig. 3.10-3.11), the canonical
+# primitives with their basis sizes and SFPCA models (Table 3.1).
+add_input_set("du2022_fda_rmse", {"rmse": f"{FDA}/basis_rmse.csv"})
+add_input_set("du2022_fda_curves", {"curves": fda_curve_files()})
+add_input_set(
+    "du2022_fda_sfpca",
+    {
+        "clips": f"{FDA}/canonical/clips.npz",
+        "metadata": f"{FDA}/canonical/metadata.csv",
+        "n_basis": f"{FDA}/n_basis.csv",
+        "sfpca": fda_sfpca_models,
+    },
 )

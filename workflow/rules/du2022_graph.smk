@@ -107,63 +107,31 @@ rule du2022_graph_edges:
         "../scripts/du2022_graph_edges.py"
 
 
-# The evaluations (tables, figures, claims): one rule each, made by evaluations.smk from
-# these specs (script ../scripts/<name>.py, params.settings = config.graph).
-GRAPH_JOINT_MAP = {"joint_map": lambda wc: joint_map_path(wc.dataset)}
-
-register_evaluation(
-    EvaluationSpec(
-        name="du2022_fig4_12",
-        inputs={"queries": graph_search_tables},
-        mem_mb=2000,
-    )
+# The input sets of the evaluations (motionvar.du2022.catalog; rules made by evaluations.smk).
+GRAPH_PREP = {"clips": f"{PREP}/clips.npz", "metadata": f"{PREP}/metadata.csv"}
+add_input_set("du2022_graph_queries", {"queries": graph_search_tables})
+add_input_set("du2022_graph_diversity", {"models": graph_diversity_models, **GRAPH_PREP, "joint_map": joint_map_input})
+# Sec. 4.6.1: the clips too, each primitive is refitted to half of its clips (model size at N and 2N clips)
+add_input_set(
+    "du2022_graph_sizes",
+    {
+        "models": graph_all_models,
+        "metadata": f"{PREP}/metadata.csv",
+        "dense": graph_dense_metadata,
+        "clips": f"{PREP}/clips.npz",
+        "dense_clips": lambda wc: [p.replace("metadata.csv", "clips.npz") for p in graph_dense_metadata(wc)],
+    },
 )
-register_evaluation(
-    EvaluationSpec(
-        name="du2022_fig4_9",
-        inputs={
-            "models": graph_diversity_models,
-            "clips": f"{PREP}/clips.npz",
-            "metadata": f"{PREP}/metadata.csv",
-            "joint_map": joint_map_input,
-        },
-        params=GRAPH_JOINT_MAP,
-        mem_mb=3000,
-    )
-)
-register_evaluation(
-    EvaluationSpec(
-        name="du2022_sec4_6_1",
-        # the clips too: each primitive is refitted to half of its clips (model size at N and 2N clips)
-        inputs={
-            "models": graph_all_models,
-            "metadata": f"{PREP}/metadata.csv",
-            "dense": graph_dense_metadata,
-            "clips": f"{PREP}/clips.npz",
-            "dense_clips": lambda wc: [p.replace("metadata.csv", "clips.npz") for p in graph_dense_metadata(wc)],
-        },
-        mem_mb=4000,
-    )
-)
-register_evaluation(
-    EvaluationSpec(
-        name="du2022_fig4_10",
-        inputs={
-            "models": graph_synthesis_models,
-            "clips": f"{PREP}/clips.npz",
-            "metadata": f"{PREP}/metadata.csv",
-            "joint_map": joint_map_input,
-        },
-        outputs={
-            "gif": in_report(
-                "results/{dataset}/figures/du2022_fig4_10.gif",
-                "du2022",
-                "../report/du2022_fig4_10.rst",
-                figure="Fig. 4.10",
-                kind="animation",
-            )
-        },
-        params=GRAPH_JOINT_MAP,
-        mem_mb=3000,
-    )
+add_input_set("du2022_graph_synthesis", {"models": graph_synthesis_models, **GRAPH_PREP, "joint_map": joint_map_input})
+add_to_evaluation(
+    "du2022_fig4_10",
+    outputs={
+        "gif": in_report(
+            "results/{dataset}/figures/du2022_fig4_10.gif",
+            "du2022",
+            "../report/du2022_fig4_10.rst",
+            figure="Fig. 4.10",
+            kind="animation",
+        )
+    },
 )

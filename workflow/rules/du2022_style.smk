@@ -154,42 +154,33 @@ rule du2022_style_training_curves:
         "../scripts/du2022_style_training_curves.py"
 
 
-# The evaluations (rules made by evaluations.smk): the prepared clips, the autoencoder, the
-# neutral VAEs and the CVAEs of the primitives named (style_evaluation_inputs) in; table,
-# figure, claims (and Fig. 5.4-5.5's GIFs) out. One thread each: the same tables and claims as
-# on two (measured at CI and full size), and a one-core job need not wait until no other job
-# holds a core.
-register_evaluation(
-    EvaluationSpec(
-        "du2022_table5_1",
-        inputs=style_evaluation_inputs([STYLE_CFG["distance_primitive"]], [STYLE_CFG["distance_primitive"]]),
-        params=STYLE_EVALUATION_PARAMS,
-        mem_mb=3000,
-    )
+# The input sets of the evaluations (motionvar.du2022.catalog; rules made by evaluations.smk): the
+# prepared clips, the autoencoder, the neutral VAEs and the CVAEs of the primitives named
+# (style_evaluation_inputs). One thread each: the same tables and claims as on two (measured at CI
+# and full size), and a one-core job need not wait until no other job holds a core.
+add_input_set(
+    "du2022_style_distance",
+    style_evaluation_inputs([STYLE_CFG["distance_primitive"]], [STYLE_CFG["distance_primitive"]]),
 )
-register_evaluation(
-    EvaluationSpec(
-        "du2022_table5_2",
-        inputs=style_evaluation_inputs(STYLE_CFG["style_primitives"], STYLE_CFG["style_primitives"]),
-        params=STYLE_EVALUATION_PARAMS,
-        extra=(STYLE_TRAINING_FIGURE,),
-        mem_mb=6000,
-    )
+add_input_set(
+    "du2022_style_diversity",
+    style_evaluation_inputs(STYLE_CFG["style_primitives"], STYLE_CFG["style_primitives"]),
 )
-register_evaluation(
-    EvaluationSpec(
-        "du2022_fig5_4",
-        inputs=style_evaluation_inputs(STYLE_CFG["vae_primitives"], [STYLE_CFG["distance_primitive"]]),
-        params=STYLE_EVALUATION_PARAMS,
-        outputs={
-            f"gif_{group}": in_report(
-                f"results/{{dataset}}/figures/du2022_fig5_4_{group}.gif",
-                "du2022",
-                "../report/du2022_fig5_4.rst",
-                figure=f"Fig. {figure} animation",
-            )
-            for group, figure in (("neutral", "5.4"), ("styles", "5.5"))
-        },
-        mem_mb=3000,
-    )
+add_input_set(
+    "du2022_style_samples",
+    style_evaluation_inputs(STYLE_CFG["vae_primitives"], [STYLE_CFG["distance_primitive"]]),
+)
+add_to_evaluation("du2022_table5_2", extra=(STYLE_TRAINING_FIGURE,))
+# Fig. 5.4-5.5's GIFs
+add_to_evaluation(
+    "du2022_fig5_4",
+    outputs={
+        f"gif_{group}": in_report(
+            f"results/{{dataset}}/figures/du2022_fig5_4_{group}.gif",
+            "du2022",
+            "../report/du2022_fig5_4.rst",
+            figure=f"Fig. {figure} animation",
+        )
+        for group, figure in (("neutral", "5.4"), ("styles", "5.5"))
+    },
 )

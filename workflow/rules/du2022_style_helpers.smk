@@ -15,8 +15,6 @@ STYLE_RIG = [f"{STYLE_MODELS}/rig.npz", f"{STYLE_MODELS}/rig.json"]
 DATASET_MODELS.extend((p, OPTIONAL_JOINTS) for p in STYLE_RIG)
 # rule du2022_style_training_curves' figure (joins the default target with Tables 5.2-5.3)
 STYLE_TRAINING_FIGURE = "results/{dataset}/figures/du2022_style_training.png"
-# params of the evaluation rules beside the section's settings
-STYLE_EVALUATION_PARAMS = {"joint_map": lambda wc: joint_map_path(wc.dataset)}
 
 
 def style_vaes(primitives, kind="model"):

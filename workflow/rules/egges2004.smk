@@ -1,7 +1,7 @@
 # Egges, Molet, Magnenat-Thalmann 2004, "Personalised Real-time Idle Motion Synthesis":
 # posture PCA (Sec. 3.2), one idle database per subject (Sec. 5-6), and the evaluations of
-# Sec. 5.4 (fitting), 6 (repetition) and 8 (identification, real time): one EvaluationSpec
-# each, made into rules by evaluations.smk. Every rule gets the whole config section
+# Sec. 5.4 (fitting), 6 (repetition) and 8 (identification, real time): one rule each, made by
+# evaluations.smk from the declarations of motionvar.egges2004.catalog. Every rule gets the whole config section
 # egges2004 as params.settings (motionvar.egges2004.settings.Egges2004Settings). Inputs:
 # the idle clips of results/{dataset}/prep/. Library: motionvar.egges2004 (the method,
 # pipeline, storage), its evaluations/ and figures.
@@ -13,47 +13,30 @@ EGGES_PREP = {"clips": f"{PREP}/clips.npz", "metadata": f"{PREP}/metadata.csv", 
 
 EGGES_JOINT_MAP = {"joint_map": lambda wc: joint_map_path(wc.dataset)}
 
-register_evaluation(
-    EvaluationSpec(
-        "egges2004_identification",
-        inputs={**EGGES_MODEL, **EGGES_PREP},
-        mem_mb=4000,
-        params=EGGES_JOINT_MAP,
-        extra=("results/{dataset}/figures/egges2004_idle.gif",),
-    )
+# the input sets of the evaluations (motionvar.egges2004.catalog; rules made by evaluations.smk):
+# the fitted model, with the prep dataset's recordings (training and held out) where one needs them
+add_input_set("egges2004_recordings", {**EGGES_MODEL, **EGGES_PREP})
+add_input_set("egges2004_training", {**EGGES_MODEL, **EGGES_PREP})
+add_input_set("egges2004_model", EGGES_MODEL)
+add_to_evaluation("egges2004_identification", extra=("results/{dataset}/figures/egges2004_idle.gif",))
+add_to_evaluation(
+    "egges2004_repetition",
+    outputs={
+        "extrema": in_report(
+            "results/{dataset}/figures/egges2004_pc_extrema.png",
+            "egges2004",
+            "../report/egges2004_pc_extrema.rst",
+            figure="Fig. 7-8",
+            kind="figure",
+        )
+    },
 )
-register_evaluation(
-    EvaluationSpec(
-        "egges2004_repetition",
-        inputs={**EGGES_MODEL, **EGGES_PREP},
-        mem_mb=4000,
-        outputs={
-            "extrema": in_report(
-                "results/{dataset}/figures/egges2004_pc_extrema.png",
-                "egges2004",
-                "../report/egges2004_pc_extrema.rst",
-                figure="Fig. 7-8",
-                kind="figure",
-            )
-        },
-        params=EGGES_JOINT_MAP,
-    )
-)
-register_evaluation(
-    EvaluationSpec(
-        "egges2004_fitting",
-        inputs=EGGES_MODEL,
-        extra=(
-            "results/{dataset}/figures/egges2004_category_graph.png",
-            "results/{dataset}/tables/egges2004_categories.csv",
-        ),
-    )
-)
-register_evaluation(
-    EvaluationSpec(
-        "egges2004_speed",
-        inputs=EGGES_MODEL,
-    )
+add_to_evaluation(
+    "egges2004_fitting",
+    extra=(
+        "results/{dataset}/figures/egges2004_category_graph.png",
+        "results/{dataset}/tables/egges2004_categories.csv",
+    ),
 )
 
 

@@ -1,7 +1,7 @@
 # Ma et al. 2010, "Modeling Style and Variation in Human Motion": walking cycles cut at
 # the key frames (Sec. 4), the hierarchical model (Sec. 5-6) and its evaluations
 # (Fig. 3, 6, 7b, 8, Sec. 7.4, Sec. 8; one rule each, made by evaluations.smk from the
-# EvaluationSpecs of ma2010_helpers.smk; the library functions in motionvar.ma2010.evaluations).
+# declarations of motionvar.ma2010.catalog; their input sets in ma2010_helpers.smk).
 # Options: config.ma2010 (motionvar.ma2010.settings.Ma2010Settings; config/schema.yaml); every
 # rule passes the whole section as params.settings.
 

@@ -1,5 +1,6 @@
-# Helpers of ma2010.smk (Ma et al. 2010), kept apart from its rules: paths and the registered
-# evaluations (one EvaluationSpec each; workflow/rules/evaluations.smk makes their rules).
+# Helpers of ma2010.smk (Ma et al. 2010), kept apart from its rules: paths, and the files of the
+# evaluations' input sets (workflow/rules/evaluations.smk makes their rules from the declarations
+# of motionvar.ma2010.catalog).
 
 MA2010 = "results/{dataset}/models/ma2010"
 
@@ -17,36 +18,24 @@ MA2010_INPUTS = {
 MA2010_MODEL = [f"{MA2010}/style_variation.npz", f"{MA2010}/style_variation.json"]
 
 
-def _ma2010_spec(name, inputs, mem_mb=3000, **more):
-    """An evaluation of Ma 2010 on ``inputs`` (a key of MA2010_INPUTS), with the dataset's
-    joint map (input and param); every one runs on one core."""
-    params = {"joint_map": lambda wc: joint_map_path(wc.dataset), **more.pop("params", {})}
-    return EvaluationSpec(
-        name, {**MA2010_INPUTS[inputs], "joint_map": joint_map_input}, mem_mb=mem_mb, params=params, **more
-    )
+# the input sets of the evaluations (motionvar.ma2010.catalog): the packed dataset, or the walking
+# cycles (with the model of Sec. 5-6 fitted to them when the rule runs: ma2010_walks_model)
+add_input_set("ma2010_data", {**MA2010_INPUTS["data"], "joint_map": joint_map_input})
+add_input_set("ma2010_walks", {**MA2010_INPUTS["walks"], "joint_map": joint_map_input})
+add_input_set("ma2010_walks_model", {**MA2010_INPUTS["walks"], "joint_map": joint_map_input})
 
-
-MA2010_EVALUATIONS = [
-    _ma2010_spec("ma2010_fig3", "data"),
-    _ma2010_spec("ma2010_fig6", "walks", mem_mb=4000, extra=tuple(MA2010_MODEL)),
-    _ma2010_spec("ma2010_variogram", "walks"),
-    _ma2010_spec("ma2010_fig7b", "walks"),
-    _ma2010_spec("ma2010_fig8", "walks"),
-    # one core (95-125 % of one, measured): its rivals run on two torch/BLAS threads inside
-    # (sec7_4.RIVAL_THREADS: the same numbers whatever cores the job gets); the GIF takes its
-    # frame rate and panel size from config section report, the only keys of it passed (an
-    # edit of another report key does not rerun Sec. 7.4)
-    _ma2010_spec("ma2010_sec7_4", "walks", mem_mb=4000,
-        outputs={
-            "animation": in_report(
-                "results/{dataset}/figures/ma2010_sec7_4.gif", "ma2010", "../report/ma2010_sec7_4.rst",
-                figure="Sec. 7.4", kind="animation",
-            ),
-        },
-        params={"report": {k: config["report"][k] for k in ("animation_fps", "animation_panel_px")}},
-    ),
-    _ma2010_spec("ma2010_sec8", "walks"),
-]
-
-for _spec in MA2010_EVALUATIONS:
-    register_evaluation(_spec)
+add_to_evaluation("ma2010_fig6", extra=tuple(MA2010_MODEL))
+# its rivals run on two torch/BLAS threads inside (sec7_4.RIVAL_THREADS: the same numbers whatever
+# cores the job gets; 95-125 % of one core, measured); the GIF takes its frame rate and panel size
+# from config section report, the only keys of it passed (an edit of another report key does not
+# rerun Sec. 7.4)
+add_to_evaluation(
+    "ma2010_sec7_4",
+    outputs={
+        "animation": in_report(
+            "results/{dataset}/figures/ma2010_sec7_4.gif", "ma2010", "../report/ma2010_sec7_4.rst",
+            figure="Sec. 7.4", kind="animation",
+        ),
+    },
+    params={"report": {k: config["report"][k] for k in ("animation_fps", "animation_panel_px")}},
+)

@@ -7,18 +7,11 @@ constraint errors that remain and each reach's log-likelihood."""
 
 
 def main(snakemake) -> None:
-    from _graph import dataset, models
-    from _rule import config_settings, joint_map, write_evaluation
+    from _evaluation import evaluate
 
-    from motionvar.du2022.graph.evaluations import evaluate_fig4_10
-    from motionvar.du2022.graph.figures import animate_fig4_10, draw_fig4_10
+    from motionvar.du2022.graph.figures import animate_fig4_10
 
-    settings = config_settings(snakemake, "graph")
-    clips = snakemake.input.clips
-    result = evaluate_fig4_10(
-        models(snakemake.input.models), dataset(clips), joint_map(snakemake), settings, source=clips
-    )
-    write_evaluation(snakemake, result, draw_fig4_10, float_format="%.6g")
+    result = evaluate(snakemake).result
     animate_fig4_10(result, snakemake.output.gif)
 
 

@@ -5,17 +5,14 @@ swept method, at the middle setting of its sweep)."""
 
 
 def main(snakemake) -> None:
-    from _ma2010 import load_walks, settings
-    from _rule import config_settings, write_evaluation
+    from _evaluation import evaluate
+    from _rule import config_settings
 
     from motionvar.ma2010.comparison import METHODS, family
-    from motionvar.ma2010.evaluations.sec7_4 import sec7_4_comparison
-    from motionvar.ma2010.figures import draw_sec7_4
     from motionvar.plots import animate_motions
 
-    s, report = settings(snakemake), config_settings(snakemake, "report")
-    result = sec7_4_comparison(load_walks(snakemake, s), s)
-    write_evaluation(snakemake, result, draw_sec7_4)
+    result, s, _ = evaluate(snakemake)
+    report = config_settings(snakemake, "report")
     labels = result.figure["labels"]
     shown = [[v for v in labels if family(v) == m] for m in METHODS]
     shown = [variants[len(variants) // 2] for variants in shown]

@@ -10,6 +10,10 @@ EVALUATIONS: tuple[Evaluation, ...] = (
         "Generated idle motion is recognisably the person's own.",
         "egges2004",
         label="Sec. 8: person identification",
+        inputs="egges2004_recordings",
+        measure="motionvar.egges2004.evaluations.identification:identification",
+        draw="motionvar.egges2004.figures:draw_identification",
+        mem_mb=4000,
     ),
     Evaluation(
         "egges2004_repetition",
@@ -17,6 +21,10 @@ EVALUATIONS: tuple[Evaluation, ...] = (
         "Generated idle motion does not repeat itself, unlike a looped clip.",
         "egges2004",
         label="Sec. 6: repetition",
+        inputs="egges2004_training",
+        measure="motionvar.egges2004.evaluations.repetition:repetition",
+        draw="motionvar.egges2004.figures:draw_repetition",
+        mem_mb=4000,
     ),
     Evaluation(
         "egges2004_fitting",
@@ -24,8 +32,18 @@ EVALUATIONS: tuple[Evaluation, ...] = (
         "Fitted animations start and end at the given postures; the pieces join smoothly.",
         "egges2004",
         label="Sec. 5.4.4, Fig. 4-5: fitting",
+        inputs="egges2004_model",
+        measure="motionvar.egges2004.evaluations.fitting:fitting",
+        draw="motionvar.egges2004.figures:draw_fitting",
     ),
     Evaluation(
-        "egges2004_speed", "Sec. 8", "Idle motion is generated in real time.", "egges2004", label="Sec. 8: real time"
+        "egges2004_speed",
+        "Sec. 8",
+        "Idle motion is generated in real time.",
+        "egges2004",
+        label="Sec. 8: real time",
+        inputs="egges2004_model",
+        measure="motionvar.egges2004.evaluations.speed:speed",
+        draw="motionvar.egges2004.figures:draw_speed",
     ),
 )
