@@ -90,17 +90,32 @@ def test_ci_synthetic_data_lies_in_the_captured_bands(ci_run):
     assert set(outside.index) == IDLE_OUTSIDE, outside[["value", "band_lo", "band_hi"]].to_string()
 
 
+# an edited config key -> the rule it reruns, and rules it must not rerun
+NARROW_EDITS = {
+    # report.animation_clips is the dataset GIF's; Sec. 7.4's GIF takes only the report section's
+    # frame rate and panel size
+    "report:\n  animation_clips: 2\n": ("dataset_animation", {"ma2010_sec7_4"}),
+    # keys one evaluation owns (Evaluation.own_keys): no model, no other evaluation, no applicability
+    "style:\n  gif_panel_px: 150\n": (
+        "du2022_fig5_4",
+        {"du2022_style_autoencoder", "du2022_style_vae", "du2022_style_cvae", "du2022_table5_1", "applicability"},
+    ),
+    "ma2010:\n  timing_repeats: 2\n": ("ma2010_sec8", {"ma2010_clips", "ma2010_model", "ma2010_fig6", "applicability"}),
+}
+
+
 @pytest.mark.e2e
-def test_a_key_one_figure_reads_reruns_that_figure_only(ci_run, tmp_path):
-    """Rules read what they use: an edit of report.animation_clips (the dataset GIF's) reruns the
-    dataset animation, and not Ma 2010's Sec. 7.4, whose GIF takes only the report section's frame
-    rate and panel size (dry run)."""
+@pytest.mark.parametrize("edit", list(NARROW_EDITS), ids=["report", "style", "ma2010"])
+def test_a_key_one_rule_reads_reruns_that_rule_only(ci_run, tmp_path, edit):
+    """Rules read what they use: an edit of a key that one rule reads reruns that rule and what
+    follows from its outputs, and nothing it does not feed (dry run)."""
     work, edited = ci_run[0], tmp_path / "edited.yaml"
-    edited.write_text("report:\n  animation_clips: 2\n")
+    edited.write_text(edit)
     result = snakemake("-d", str(work), "--configfile", CI_CONFIG, str(edited), "-n", cwd=work, timeout=300)
     assert result.returncode == 0, result.stdout[-2000:] + result.stderr[-4000:]
-    planned = result.stdout + result.stderr
-    assert "rule dataset_animation:" in planned and "rule ma2010_sec7_4:" not in planned, planned[-3000:]
+    planned = set(re.findall(r"^(?:local)?rule (\w+):", result.stdout + result.stderr, flags=re.M))
+    reruns, spared = NARROW_EDITS[edit]
+    assert reruns in planned and not planned & spared, planned
 
 
 @pytest.mark.e2e

@@ -1,6 +1,7 @@
 """Write config/README.md, the catalog of the configuration: the shipped config files and every
 key of config/schema.yaml (the schema is the source: its descriptions and defaults, which
-tests/test_settings.py holds equal to the settings classes).
+tests/test_settings.py holds equal to the settings classes), each key that one evaluation owns
+marked with it (``Evaluation.own_keys``).
 
 python tools/config_doc.py
 """
@@ -37,15 +38,25 @@ def _default(node: dict) -> str:
     return f"`{json.dumps(node['default'])}`"
 
 
-def _rows(node: dict, prefix: str) -> list[str]:
+def _owners() -> dict[str, str]:
+    """Dotted config key -> the evaluation that owns it (the only rule given it)."""
+    from motionvar.claim_catalog import EVALUATIONS
+
+    return {f"{e.section}.{k}": e.name for e in EVALUATIONS for k in e.own_keys}
+
+
+def _rows(node: dict, prefix: str, owners: dict[str, str]) -> list[str]:
     rows = []
     for key, child in node.get("properties", {}).items():
         name = f"{prefix}.{key}" if prefix else key
+        meaning = _cell(child.get("description", ""))
+        if name in owners:
+            meaning += f" Read by `{owners[name]}` alone."
         if child.get("properties"):
-            rows.append(f"| `{name}` | | {_cell(child.get('description', ''))} |")
-            rows += _rows(child, name)
+            rows.append(f"| `{name}` | | {meaning} |")
+            rows += _rows(child, name, owners)
         else:
-            rows.append(f"| `{name}` | {_default(child)} | {_cell(child.get('description', ''))} |")
+            rows.append(f"| `{name}` | {_default(child)} | {meaning} |")
     return rows
 
 
@@ -57,7 +68,9 @@ def render(schema: dict) -> str:
         "Written from `config/schema.yaml` by `python tools/config_doc.py` (a test keeps it current).",
         "Each section's defaults are written once, in its settings class (`motionvar.config_sections`);",
         "the schema repeats them, validates every config before a run and fills what a file leaves out.",
-        "A rule is passed the sections it reads whole (`params: settings=...`).",
+        "A rule is passed the sections it reads (`params: settings=...`), less the keys that one evaluation",
+        'owns (`Evaluation.own_keys`, marked "read by ... alone" below): an edit of such a key reruns that',
+        "evaluation alone.",
         "",
         "## Files",
         "",
@@ -66,13 +79,14 @@ def render(schema: dict) -> str:
         *(f"| `config/{name}` | {what} |" for name, what in FILES),
         "",
     ]
+    owners = _owners()
     for section, node in schema["properties"].items():
-        rows = _rows(node, section) if node.get("properties") else [f"| `{section}` | {_default(node)} | |"]
+        rows = _rows(node, section, owners) if node.get("properties") else [f"| `{section}` | {_default(node)} | |"]
         if section == "datasets":  # an entry's keys, by its source
             for kind in ("synthetic_dataset", "bvh_dataset"):
                 entry = schema["$defs"][kind]
                 rows.append(f"| `datasets.<name>` ({kind.split('_')[0]}) | | {_cell(entry.get('description', ''))} |")
-                rows += _rows(entry, "datasets.<name>")
+                rows += _rows(entry, "datasets.<name>", owners)
         parts += [
             f"## `{section}`",
             "",

@@ -248,6 +248,15 @@ def gif_pages(dataset):
     ]
 
 
+def section_for(section, rule=""):
+    """Config section ``section`` as rule ``rule`` is given it (``params.settings``): without the
+    keys that other evaluations own (``Evaluation.own_keys``), so that an edit of such a key
+    reruns its evaluation alone; the rule's settings class fills them with their defaults, which
+    it never reads."""
+    owned = {k for e in EVALUATIONS.values() if e.section == section and e.name != rule for k in e.own_keys}
+    return {k: v for k, v in config[section].items() if k not in owned}
+
+
 def add_input_set(name, files):
     """The files of input set ``name`` (a declaration's ``inputs``): {input name: path pattern or
     input function}. An input named ``joint_map`` brings the map's path as a param too."""

@@ -16,7 +16,7 @@ rule du2022_fda_canonical:
         clips=f"{FDA}/canonical/clips.npz",
         metadata=f"{FDA}/canonical/metadata.csv",
     params:
-        settings=config["fda"],
+        settings=section_for("fda"),
     log:
         ev_log("du2022_fda_canonical"),
     benchmark:
@@ -40,7 +40,7 @@ checkpoint du2022_fda_basis:
         rmse=f"{FDA}/basis_rmse.csv",
         n_basis=f"{FDA}/n_basis.csv",
     params:
-        settings=config["fda"],
+        settings=section_for("fda"),
     log:
         ev_log("du2022_fda_basis"),
     benchmark:
@@ -66,7 +66,7 @@ rule du2022_fda_sfpca:
         model=f"{FDA_SFPCA}/{{primitive}}.npz",
         settings=f"{FDA_SFPCA}/{{primitive}}.json",
     params:
-        settings=config["fda"],
+        settings=section_for("fda"),
     log:
         ev_log("du2022_fda_sfpca", "{primitive}"),
     benchmark:
@@ -92,7 +92,7 @@ rule du2022_fda_curves:
     wildcard_constraints:
         part="|".join(FDA_PARTS),
     params:
-        settings=config["fda"],
+        settings=section_for("fda"),
         methods=lambda wc: FDA_PARTS[wc.part],
     log:
         ev_log("du2022_fda_curves", "{primitive}_{part}"),

@@ -20,7 +20,7 @@ rule du2022_graph_dense_picks:
         metadata=f"{GRAPH}/dense_picks/metadata.csv",
     params:
         entry=graph_dense_entry,
-        settings=config["graph"],
+        settings=section_for("graph"),
         prep=config["prep"],
         joint_map=lambda wc: joint_map_path(wc.dataset),
     log:
@@ -43,7 +43,7 @@ rule du2022_graph_primitive:
         model=f"{GRAPH}/{{primitive}}.npz",
         meta=f"{GRAPH}/{{primitive}}.json",
     params:
-        settings=config["graph"],
+        settings=section_for("graph"),
     log:
         ev_log("du2022_graph_primitive", "{primitive}"),
     benchmark:
@@ -67,7 +67,7 @@ rule du2022_graph_search:
         queries=f"{GRAPH}/search/{{primitive}}.csv",
         trees=f"{GRAPH}/search/{{primitive}}_trees.csv",
     params:
-        settings=config["graph"],
+        settings=section_for("graph"),
         joint_map=lambda wc: joint_map_path(wc.dataset),
     log:
         ev_log("du2022_graph_search", "{primitive}"),
@@ -92,7 +92,7 @@ rule du2022_graph_edges:
         model=GRAPH_EDGES[0],
         settings=GRAPH_EDGES[1],
     params:
-        settings=config["graph"],
+        settings=section_for("graph"),
         joint_map=lambda wc: joint_map_path(wc.dataset),
     log:
         ev_log("du2022_graph_edges"),

@@ -1,8 +1,9 @@
 # Egges, Molet, Magnenat-Thalmann 2004, "Personalised Real-time Idle Motion Synthesis":
 # posture PCA (Sec. 3.2), one idle database per subject (Sec. 5-6), and the evaluations of
 # Sec. 5.4 (fitting), 6 (repetition) and 8 (identification, real time): one rule each, made by
-# evaluations.smk from the declarations of motionvar.egges2004.catalog. Every rule gets the whole config section
-# egges2004 as params.settings (motionvar.egges2004.settings.Egges2004Settings). Inputs:
+# evaluations.smk from the declarations of motionvar.egges2004.catalog. Every rule gets config
+# section egges2004 as params.settings (motionvar.egges2004.settings.Egges2004Settings; section_for:
+# less the keys one evaluation owns). Inputs:
 # the idle clips of results/{dataset}/prep/. Library: motionvar.egges2004 (the method,
 # pipeline, storage), its evaluations/ and figures.
 
@@ -60,7 +61,7 @@ rule egges2004_model:
             kind="figure",
         ),
     params:
-        settings=config["egges2004"],
+        settings=section_for("egges2004"),
         **EGGES_JOINT_MAP,
     log:
         ev_log("egges2004_model"),
@@ -87,7 +88,7 @@ rule egges2004_animation:
             kind="animation",
         ),
     params:
-        settings=config["egges2004"],
+        settings=section_for("egges2004"),
     log:
         ev_log("egges2004_animation"),
     benchmark:

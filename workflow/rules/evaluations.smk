@@ -30,7 +30,7 @@ for _ev in EVALUATIONS.values():
             **_ev_add.outputs,
         params:
             script=_ev.name if _ev_add.outputs else "evaluation",
-            settings=config[_ev.section],
+            settings=section_for(_ev.section, _ev.name),
             **({"joint_map": lambda wc: joint_map_path(wc.dataset)} if "joint_map" in _ev_inputs else {}),
             **_ev_add.params,
         log:

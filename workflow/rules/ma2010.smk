@@ -3,7 +3,7 @@
 # (Fig. 3, 6, 7b, 8, Sec. 7.4, Sec. 8; one rule each, made by evaluations.smk from the
 # declarations of motionvar.ma2010.catalog; their input sets in ma2010_helpers.smk).
 # Options: config.ma2010 (motionvar.ma2010.settings.Ma2010Settings; config/schema.yaml); every
-# rule passes the whole section as params.settings.
+# rule passes the section as params.settings (section_for: less the keys one evaluation owns).
 
 include: "ma2010_helpers.smk"
 
@@ -17,7 +17,7 @@ rule ma2010_clips:
         clips_settings=f"{MA2010}/walk_clips.json",
         table=f"{MA2010}/walk_cycles.csv",
     params:
-        settings=config["ma2010"],
+        settings=section_for("ma2010"),
         joint_map=lambda wc: joint_map_path(wc.dataset),
     log:
         ev_log("ma2010_clips"),
@@ -42,7 +42,7 @@ rule ma2010_model:
         model=MA2010_MODEL[0],
         settings=MA2010_MODEL[1],
     params:
-        settings=config["ma2010"],
+        settings=section_for("ma2010"),
         joint_map=lambda wc: joint_map_path(wc.dataset),
     log:
         ev_log("ma2010_model"),

@@ -69,6 +69,7 @@ EVALUATIONS: tuple[Evaluation, ...] = (
         measure="motionvar.du2022.graph.evaluations.fig4_9:evaluate_fig4_9",
         draw="motionvar.du2022.graph.figures:draw_fig4_9",
         table_format="%.6g",
+        own_keys=("diversity",),
     ),
     Evaluation(
         "du2022_sec4_6_1",
@@ -100,6 +101,7 @@ EVALUATIONS: tuple[Evaluation, ...] = (
         measure="motionvar.du2022.style.evaluations.table5_1:evaluate_table5_1",
         draw="motionvar.du2022.style.figures:draw_table5_1",
         dpi=130,
+        own_keys=("distance_samples",),
     ),
     Evaluation(
         "du2022_table5_2",
@@ -111,6 +113,7 @@ EVALUATIONS: tuple[Evaluation, ...] = (
         draw="motionvar.du2022.style.figures:draw_table5_2",
         dpi=120,
         mem_mb=6000,
+        own_keys=("diversity_samples", "pose_sd_tolerance"),
     ),
     Evaluation(
         "du2022_fig5_4",
@@ -120,5 +123,6 @@ EVALUATIONS: tuple[Evaluation, ...] = (
         inputs="du2022_style_samples",
         measure="motionvar.du2022.style.evaluations.fig5_4:evaluate_fig5_4",
         draw="motionvar.du2022.style.figures:draw_fig5_4",
+        own_keys=("figure_samples", "gif_panel_px"),
     ),
 )

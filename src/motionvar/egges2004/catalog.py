@@ -25,6 +25,7 @@ EVALUATIONS: tuple[Evaluation, ...] = (
         measure="motionvar.egges2004.evaluations.repetition:repetition",
         draw="motionvar.egges2004.figures:draw_repetition",
         mem_mb=4000,
+        own_keys=("repetition", "extrema_pc"),
     ),
     Evaluation(
         "egges2004_fitting",
@@ -35,6 +36,7 @@ EVALUATIONS: tuple[Evaluation, ...] = (
         inputs="egges2004_model",
         measure="motionvar.egges2004.evaluations.fitting:fitting",
         draw="motionvar.egges2004.figures:draw_fitting",
+        own_keys=("fitting",),
     ),
     Evaluation(
         "egges2004_speed",
@@ -45,5 +47,6 @@ EVALUATIONS: tuple[Evaluation, ...] = (
         inputs="egges2004_model",
         measure="motionvar.egges2004.evaluations.speed:speed",
         draw="motionvar.egges2004.figures:draw_speed",
+        own_keys=("speed",),
     ),
 )
