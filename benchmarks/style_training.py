@@ -63,7 +63,7 @@ def timed(fn, repeats: int) -> float:
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument(
-        "--windows", type=int, default=4000, help="autoencoder windows (config style.autoencoder.max_windows)"
+        "--windows", type=int, default=4000, help="autoencoder windows (config du2022_style.autoencoder.max_windows)"
     )
     ap.add_argument(
         "--clips", type=int, default=450, help="clips of a primitive (neutral walk_leftStance, 25 subjects)"

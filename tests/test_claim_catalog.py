@@ -41,7 +41,12 @@ def test_every_evaluation_is_declared_once_and_everything_else_is_read_off_it():
     for e in EVALUATIONS:
         assert e.section in SECTIONS and e.source and e.checks, e
         assert (workflow / "report" / f"{e.name}.rst").is_file() and e.inputs and e.measure and e.draw, e.name
-    papers = {"ma2010": ma2010, "fda": fda_requirements, "graph": graph_requirements, "style": style_requirements}
+    papers = {
+        "ma2010": ma2010,
+        "du2022_fda": fda_requirements,
+        "du2022_graph": graph_requirements,
+        "du2022_style": style_requirements,
+    }
     reqs = [r for sec, of in {**papers, "egges2004": egges2004}.items() for r in of(section_settings(sec, {}))]
     assert sorted(r.evaluation for r in reqs) == sorted(names)
     for r in reqs:

@@ -180,7 +180,7 @@ def test_patterns_end_at_the_end_of_the_text():
     assert [w for w, p in patterns.items() if not (p.startswith("^") and p.endswith("(?!\\n)$"))] == []
     for name, ok in (("ab", True), ("ab\n", False), ("a/b", False), ("..", False), ("-a", False)):
         assert (schema_errors({"datasets": {name: {"source": "synthetic"}}}) == []) == ok, name
-    assert schema_errors({"style": {"styles": ["old\n"]}, "graph": {"primitives": ["walk\n"]}}) != []
+    assert schema_errors({"du2022_style": {"styles": ["old\n"]}, "du2022_graph": {"primitives": ["walk\n"]}}) != []
 
 
 @pytest.mark.parametrize(
@@ -200,22 +200,22 @@ def test_stability_folder_is_a_folder_of_results(folder, ok):
 
 
 def test_primitives_that_name_files_are_names():
-    """graph, fda and style primitives become file names under results/<dataset>/models/."""
+    """du2022_graph, du2022_fda and du2022_style primitives become file names under results/<dataset>/models/."""
     config = {
-        "graph": {
+        "du2022_graph": {
             "primitives": ["../../x"],
             "search": {"primitives": ["/abs"]},
             "synthesis": {"reach_primitive": "a/b"},
         },
-        "fda": {"reconstruction": {"primitives": ["a.b"]}},
-        "style": {"distance_primitive": "../x"},
+        "du2022_fda": {"reconstruction": {"primitives": ["a.b"]}},
+        "du2022_style": {"distance_primitive": "../x"},
     }
     assert sorted(e.split(":")[0] for e in schema_errors(config)) == [
-        "fda.reconstruction.primitives.0",
-        "graph.primitives.0",
-        "graph.search.primitives.0",
-        "graph.synthesis.reach_primitive",
-        "style.distance_primitive",
+        "du2022_fda.reconstruction.primitives.0",
+        "du2022_graph.primitives.0",
+        "du2022_graph.search.primitives.0",
+        "du2022_graph.synthesis.reach_primitive",
+        "du2022_style.distance_primitive",
     ]
 
 
@@ -257,6 +257,8 @@ def run_dry(tmp_path, config_text):
         ("stability: {datasets: [s0, synthetic]}\n", "stability.datasets names ['s0'], not in datasets"),
         ("stability: {datasets: [synthetic]}\n", "stability.datasets needs at least 2 datasets"),
         ("idle: {seed: 1}\n", "config key idle is now egges2004"),
+        ("style: {gif_panel_px: 150}\n", "config key style is now du2022_style"),
+        ("graph: {seed: 1}\n", "config key graph is now du2022_graph"),
         ('datasets:\n  "ab\\n": {source: synthetic}\n', "config key datasets: 'ab\\n' does not match"),
         ("stability: {folder: results/..}\n", "config key stability.folder: 'results/..' does not match"),
     ],

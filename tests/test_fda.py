@@ -616,9 +616,9 @@ def test_canonical_primitives(prep_dataset, canonical_dataset):
     assert len(linear) == 14 and len({m.n_frames for m in linear}) == 1
     with_absent, _ = canonical_primitives(prep_dataset, ["pick", "jump"], 3, "linear")  # jump: not in the data
     assert len(with_absent) == len(linear)
-    with pytest.raises(ValueError, match="fda.behaviours: none of \\['jump'\\] in the prep data"):
+    with pytest.raises(ValueError, match="du2022_fda.behaviours: none of \\['jump'\\] in the prep data"):
         canonical_primitives(prep_dataset, ["jump"], 3, "dtw")
-    with pytest.raises(ValueError, match="no primitive has fda.min_clips"):
+    with pytest.raises(ValueError, match="no primitive has du2022_fda.min_clips"):
         canonical_primitives(prep_dataset, ["pick"], 50, "dtw")
 
 
@@ -730,7 +730,7 @@ def test_reconstruction_curves(fda_curves):
 def test_fig3_10(fda_curves):
     result = evaluate_fig3_10(fda_curves, FdaSettings())
     assert len(result.table) == 24 and "fit_seconds" in result.table  # 2 primitives x 6 methods x 2 dims
-    # normalized FPCA is the variant of fda.reconstruction.normalized_variant; every variant is drawn
+    # normalized FPCA is the variant of du2022_fda.reconstruction.normalized_variant; every variant is drawn
     assert result.figure["methods"][-2:] == ["normalized_fpca_floored", "root_scaled_fpca"]
     assert "z-score with the SD floored" in result.claims[2].note
     shares = [b / n for b, n in result.measurements["normalized_variants"].values()]

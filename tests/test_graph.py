@@ -267,7 +267,7 @@ def test_median_kd_tree_has_median_sample_nodes_and_descends_greedily(prim, join
 
 
 def test_verdict_beam_is_fixed_and_the_budget_beam_beside_it(prim, joints):
-    """The Fig. 4.12 verdicts use graph.search.beam whatever the evaluation counts; the beam the
+    """The Fig. 4.12 verdicts use du2022_graph.search.beam whatever the evaluation counts; the beam the
     thesis' budget would choose (the largest under max_evaluations) is only marked beside it."""
     assert select_beam({2: 58.0, 3: 87.0, 4: 121.0}, 120) == (3, True)
     assert select_beam({2: 58.0, 3: 87.0, 4: 113.0}, 120) == (4, True)
@@ -301,7 +301,7 @@ def test_verdict_beam_is_fixed_and_the_budget_beam_beside_it(prim, joints):
     explicit = SearchSettings(n_samples=300, n_queries=2, leaf_size=8, n_random=10, beam=5, beams=(2,))
     assert explicit.candidates == (2, 5) and SearchSettings().beam == 4
     for bad in ("auto", "wide", 0, True):
-        with pytest.raises(ValueError, match="graph.search.beam"):
+        with pytest.raises(ValueError, match="du2022_graph.search.beam"):
             SearchSettings(beam=bad)
     with pytest.raises(ValueError, match="beams"):
         SearchSettings(beams=())
@@ -635,7 +635,7 @@ def test_fig4_12_verdicts_follow_the_numbers():
 def test_primitive_clips_selects_and_names_the_file(dataset):
     motions, meta = primitive_clips(dataset, "pick_reach", "prep/clips.npz")
     assert len(motions) == 8 and (meta["primitive"] == "pick_reach").all()
-    with pytest.raises(ValueError, match=r"prep/clips.npz: 0 clips of primitive 'run'.*graph.primitives"):
+    with pytest.raises(ValueError, match=r"prep/clips.npz: 0 clips of primitive 'run'.*du2022_graph.primitives"):
         primitive_clips(dataset, "run", "prep/clips.npz")
 
 
@@ -654,10 +654,10 @@ def test_search_primitive_and_fig4_12(prim, right):
     queries, trees = tables[0]
     assert list(queries.columns[:3]) == ["primitive", "kind", "joint"] and set(queries["joint"]) == {"left_ankle"}
     assert set(tables[1][0]["joint"]) == {"right_hand"} and (trees["primitive"] == "walk_leftStance").all()
-    with pytest.raises(KeyError, match="graph.search.joints.walk_leftStance.*left_foot"):
+    with pytest.raises(KeyError, match="du2022_graph.search.joints.walk_leftStance.*left_foot"):
         bad = search.replace(joints={"walk_leftStance": "left_foot"})
         search_primitive(prim, cmu_joint_map(), settings.replace(search=bad))
-    with pytest.raises(KeyError, match="graph.search.pose_joints"):
+    with pytest.raises(KeyError, match="du2022_graph.search.pose_joints"):
         bad = search.replace(joints={}, pose_joints=("hips", "tail"))
         search_primitive(prim, cmu_joint_map(), settings.replace(search=bad))
     result = evaluate_fig4_12(pd.concat([t[0] for t in tables], ignore_index=True))
@@ -875,7 +875,7 @@ def test_settings_have_one_owner():
     assert walk_settings({"seed": 1}, max_steps=3) == s.synthesis.replace(max_steps=3)
     assert s.search.candidates == (2, 3, 4) and s.search.replace(beam=6).candidates == (2, 3, 4, 6)
     assert s.search.joint("walk_leftStance") == "left_ankle" and s.search.joint("other") == s.search.default_joint
-    with pytest.raises(ValueError, match="graph.synthesis.*joint_steps"):
+    with pytest.raises(ValueError, match="du2022_graph.synthesis.*joint_steps"):
         GraphSettings.from_dict({"synthesis": {"joint_steps": "some"}})
-    with pytest.raises(ValueError, match="graph.search.beams"):
+    with pytest.raises(ValueError, match="du2022_graph.search.beams"):
         GraphSettings.from_dict({"search": {"beams": []}})

@@ -18,7 +18,7 @@ from motionvar.io import save_dataset
 
 sys.modules.setdefault("_graph", rule_scripts._load("_graph", "_graph"))  # the scripts' shared loaders
 
-MODEL_SETTINGS = {  # params.settings of du2022_graph_primitive: config.graph's seed and model
+MODEL_SETTINGS = {  # params.settings of du2022_graph_primitive: config.du2022_graph's seed and model
     "seed": 0,
     "model": {
         "n_basis": 8,
@@ -78,7 +78,7 @@ def test_graph_primitive_too_few_clips_names_file_and_key(tmp_path, prep_dir, ca
         run(sm, script("du2022_graph_primitive").main)
     assert exc.value.code == 1
     err = capsys.readouterr().err
-    assert "clips.npz" in err and "graph.primitives" in err and "'pick_reach'" in err
+    assert "clips.npz" in err and "du2022_graph.primitives" in err and "'pick_reach'" in err
     assert not out.exists()
 
 

@@ -96,7 +96,7 @@ NARROW_EDITS = {
     # frame rate and panel size
     "report:\n  animation_clips: 2\n": ("dataset_animation", {"ma2010_sec7_4"}),
     # keys one evaluation owns (Evaluation.own_keys): no model, no other evaluation, no applicability
-    "style:\n  gif_panel_px: 150\n": (
+    "du2022_style:\n  gif_panel_px: 150\n": (
         "du2022_fig5_4",
         {"du2022_style_autoencoder", "du2022_style_vae", "du2022_style_cvae", "du2022_table5_1", "applicability"},
     ),

@@ -937,5 +937,5 @@ def test_settings_defaults_are_the_thesis_values():
         True,
     )
     assert (s.distance_samples, s.diversity_samples) == (1000, 10000)
-    with pytest.raises(ValueError, match="style.vae.epoch"):
+    with pytest.raises(ValueError, match="du2022_style.vae.epoch"):
         StyleSettings.from_dict({"vae": {"epoch": 3}})

@@ -18,9 +18,9 @@ SECTIONS: dict[str, str] = {
     "realism": "motionvar.realism.settings:RealismSettings",
     "ma2010": "motionvar.ma2010.settings:Ma2010Settings",
     "egges2004": "motionvar.egges2004.settings:Egges2004Settings",
-    "fda": "motionvar.du2022.fda.settings:FdaSettings",
-    "graph": "motionvar.du2022.graph.settings:GraphSettings",
-    "style": "motionvar.du2022.style.settings:StyleSettings",
+    "du2022_fda": "motionvar.du2022.fda.settings:FdaSettings",
+    "du2022_graph": "motionvar.du2022.graph.settings:GraphSettings",
+    "du2022_style": "motionvar.du2022.style.settings:StyleSettings",
 }
 
 

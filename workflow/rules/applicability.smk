@@ -15,7 +15,7 @@ checkpoint applicability:
     params:
         evaluations=list(EVALUATIONS),
         joint_map=lambda wc: joint_map_path(wc.dataset),
-        **{section: section_for(section) for section in ("ma2010", "fda", "graph", "style", "egges2004")},
+        **{section: section_for(section) for section in ("ma2010", "du2022_fda", "du2022_graph", "du2022_style", "egges2004")},
     log:
         ev_log("applicability"),
     benchmark:

@@ -74,6 +74,9 @@ EVALUATION_ADDITIONS = {}
 # key stops with a message naming the new one).
 RENAMED_CONFIG_KEYS = {
     "idle": "egges2004",
+    "fda": "du2022_fda",
+    "graph": "du2022_graph",
+    "style": "du2022_style",
 }
 
 

@@ -1,6 +1,6 @@
 # Du 2022 ch. 3, functional data analysis of motion primitives: cubic B-spline functions
 # (Fig. 3.9), FPCA, normalized FPCA, SFPCA and a Bayesian GPLVM (Fig. 3.10, 3.11), latent
-# dimensions per primitive (Table 3.1). Options: config.fda (config/schema.yaml; defaults:
+# dimensions per primitive (Table 3.1). Options: config.du2022_fda (config/schema.yaml; defaults:
 # motionvar.du2022.fda.settings.FdaSettings), passed whole to every rule. Inputs:
 # the aligned primitives of results/{dataset}/prep/, warped to a canonical timeline here.
 # Library: motionvar.du2022.fda (evaluations/, figures.py).
@@ -16,7 +16,7 @@ rule du2022_fda_canonical:
         clips=f"{FDA}/canonical/clips.npz",
         metadata=f"{FDA}/canonical/metadata.csv",
     params:
-        settings=section_for("fda"),
+        settings=section_for("du2022_fda"),
     log:
         ev_log("du2022_fda_canonical"),
     benchmark:
@@ -40,7 +40,7 @@ checkpoint du2022_fda_basis:
         rmse=f"{FDA}/basis_rmse.csv",
         n_basis=f"{FDA}/n_basis.csv",
     params:
-        settings=section_for("fda"),
+        settings=section_for("du2022_fda"),
     log:
         ev_log("du2022_fda_basis"),
     benchmark:
@@ -66,7 +66,7 @@ rule du2022_fda_sfpca:
         model=f"{FDA_SFPCA}/{{primitive}}.npz",
         settings=f"{FDA_SFPCA}/{{primitive}}.json",
     params:
-        settings=section_for("fda"),
+        settings=section_for("du2022_fda"),
     log:
         ev_log("du2022_fda_sfpca", "{primitive}"),
     benchmark:
@@ -92,7 +92,7 @@ rule du2022_fda_curves:
     wildcard_constraints:
         part="|".join(FDA_PARTS),
     params:
-        settings=section_for("fda"),
+        settings=section_for("du2022_fda"),
         methods=lambda wc: FDA_PARTS[wc.part],
     log:
         ev_log("du2022_fda_curves", "{primitive}_{part}"),

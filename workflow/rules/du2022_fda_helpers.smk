@@ -18,7 +18,7 @@ def fda_curve_files():
     """The curves and latents of Fig. 3.10/3.11 per primitive and part ({dataset} left open)."""
     return expand(
         f"{FDA}/curves/{{primitive}}_{{part}}.npz",
-        primitive=config["fda"]["reconstruction"]["primitives"],
+        primitive=config["du2022_fda"]["reconstruction"]["primitives"],
         part=list(FDA_PARTS),
         allow_missing=True,
     )
@@ -31,7 +31,7 @@ def fda_sfpca_files(primitive):
 
 def fda_sfpca_models(wildcards):
     """Input function of Table 3.1: the reference SFPCA model files of the Fig. 3.10 primitives
-    (fda.reconstruction.primitives, whose curves fit SFPCA at that dimension too) that
+    (du2022_fda.reconstruction.primitives, whose curves fit SFPCA at that dimension too) that
     checkpoint du2022_fda_basis found in the data; Table 3.1 fits the other primitives itself
     (one process for all of them: a job per primitive would cost more start-up than it saves)."""
     import pandas as pd
@@ -40,6 +40,6 @@ def fda_sfpca_models(wildcards):
     present = set(pd.read_csv(path)["primitive"])
     return [
         f.format(dataset=wildcards.dataset)
-        for p in config["fda"]["reconstruction"]["primitives"] if p in present
+        for p in config["du2022_fda"]["reconstruction"]["primitives"] if p in present
         for f in fda_sfpca_files(p)
     ]

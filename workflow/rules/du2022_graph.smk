@@ -1,7 +1,7 @@
 # Du 2022 ch. 4, Morphable Graph (Herrmann et al. 2017): motion primitives (DTW + SFPCA +
 # GMM/BIC) fitted to the primitives of the prep stage, space-partitioning tree search
 # (Fig. 4.12), sample diversity (Fig. 4.9), constrained synthesis (Fig. 4.10) and
-# compactness (Sec. 4.6.1). Options: config.graph, passed whole to every rule as params.settings;
+# compactness (Sec. 4.6.1). Options: config.du2022_graph, passed whole to every rule as params.settings;
 # its script builds motionvar.du2022.graph.settings.GraphSettings from it (config/schema.yaml).
 
 
@@ -20,7 +20,7 @@ rule du2022_graph_dense_picks:
         metadata=f"{GRAPH}/dense_picks/metadata.csv",
     params:
         entry=graph_dense_entry,
-        settings=section_for("graph"),
+        settings=section_for("du2022_graph"),
         prep=config["prep"],
         joint_map=lambda wc: joint_map_path(wc.dataset),
     log:
@@ -43,7 +43,7 @@ rule du2022_graph_primitive:
         model=f"{GRAPH}/{{primitive}}.npz",
         meta=f"{GRAPH}/{{primitive}}.json",
     params:
-        settings=section_for("graph"),
+        settings=section_for("du2022_graph"),
     log:
         ev_log("du2022_graph_primitive", "{primitive}"),
     benchmark:
@@ -67,7 +67,7 @@ rule du2022_graph_search:
         queries=f"{GRAPH}/search/{{primitive}}.csv",
         trees=f"{GRAPH}/search/{{primitive}}_trees.csv",
     params:
-        settings=section_for("graph"),
+        settings=section_for("du2022_graph"),
         joint_map=lambda wc: joint_map_path(wc.dataset),
     log:
         ev_log("du2022_graph_search", "{primitive}"),
@@ -92,7 +92,7 @@ rule du2022_graph_edges:
         model=GRAPH_EDGES[0],
         settings=GRAPH_EDGES[1],
     params:
-        settings=section_for("graph"),
+        settings=section_for("du2022_graph"),
         joint_map=lambda wc: joint_map_path(wc.dataset),
     log:
         ev_log("du2022_graph_edges"),

@@ -1,7 +1,7 @@
 # Helpers of du2022_graph.smk (Du 2022 ch. 4, Morphable Graph), kept apart from its rules
 # (snakemake --lint flags a rule file that defines functions).
 
-GRAPH_CFG = config["graph"]
+GRAPH_CFG = config["du2022_graph"]
 GRAPH = "results/{dataset}/models/du2022/graph"
 GRAPH_DENSE = "pick_reach_dense"
 # the graph's transitions, written by rule du2022_graph_edges (motionvar.du2022.graph.storage), read by

@@ -1,5 +1,5 @@
 # Du 2022 ch. 5: convolutional motion autoencoder, a VAE per motion primitive and a CVAE per
-# style with the Gram-matrix style loss (config.style, motionvar.du2022.style.settings). Models
+# style with the Gram-matrix style loss (config.du2022_style, motionvar.du2022.style.settings). Models
 # go to results/{dataset}/models/du2022_style/ (<name>.pt state dict + <name>.json settings);
 # evaluations: Table 5.1, Tables 5.2-5.3, Fig. 5.4-5.5 (motionvar.du2022.style.evaluations).
 # Every rule gets the section as params.settings (section_for: less the keys one evaluation owns).
@@ -18,7 +18,7 @@ rule du2022_style_autoencoder:
         settings=f"{STYLE_MODELS}/autoencoder.json",
         history=f"{STYLE_MODELS}/autoencoder_history.csv",
     params:
-        settings=section_for("style"),
+        settings=section_for("du2022_style"),
         joint_map=lambda wc: joint_map_path(wc.dataset),
     log:
         ev_log("du2022_style_autoencoder"),
@@ -48,7 +48,7 @@ rule du2022_style_vae:
         settings=f"{STYLE_MODELS}/vae/{{primitive}}.json",
         history=f"{STYLE_MODELS}/vae/{{primitive}}_history.csv",
     params:
-        settings=section_for("style"),
+        settings=section_for("du2022_style"),
         joint_map=lambda wc: joint_map_path(wc.dataset),
     log:
         ev_log("du2022_style_vae", "{primitive}"),
@@ -84,7 +84,7 @@ rule du2022_style_cvae:
         settings=style_cvaes(["{primitive}"], "settings"),
         history=style_cvaes(["{primitive}"], "history"),
     params:
-        settings=section_for("style"),
+        settings=section_for("du2022_style"),
         styles=STYLE_CFG["styles"],
         joint_map=lambda wc: joint_map_path(wc.dataset),
     log:
@@ -114,7 +114,7 @@ rule du2022_style_rig:
         model=STYLE_RIG[0],
         settings=STYLE_RIG[1],
     params:
-        settings=section_for("style"),
+        settings=section_for("du2022_style"),
         joint_map=lambda wc: joint_map_path(wc.dataset),
     log:
         ev_log("du2022_style_rig"),

@@ -2,7 +2,7 @@
 
 from motionvar.core.joint_map import OPTIONAL_JOINTS  # the features' hands and toes (du2022.requirements.STYLE_JOINTS)
 
-STYLE_CFG = config["style"]
+STYLE_CFG = config["du2022_style"]
 STYLE_MODELS = "results/{dataset}/models/du2022_style"
 STYLE_PRIMITIVE_PATTERN = "[A-Za-z]+(?:_[A-Za-z]+)?"
 # A saved model is <base>.pt (torch state dict) + <base>.json (settings); its training

@@ -1,5 +1,5 @@
 """Loader shared by the Du 2022 ch. 5 rule scripts: the rule's settings (params
-``settings``, the config section ``style``), its torch threads, its dataset (input
+``settings``, the config section ``du2022_style``), its torch threads, its dataset (input
 ``clips``), the feature joints of its rig (params ``joint_map``) and the trained feature
 space (input ``autoencoder``, when the rule has one)."""
 
@@ -8,7 +8,7 @@ def load_settings(snakemake):
     """The rule's StyleSettings, from the config section it was given whole."""
     from _rule import config_settings
 
-    return config_settings(snakemake, "style")
+    return config_settings(snakemake, "du2022_style")
 
 
 def load_inputs(snakemake):

@@ -17,10 +17,10 @@ def main(snakemake) -> None:
     p = snakemake.params
     papers = {  # config section -> its requirements, in the order of the table's rows
         "ma2010": ma2010,
-        "fda": fda_requirements,
-        "style": style_requirements,
+        "du2022_fda": fda_requirements,
+        "du2022_style": style_requirements,
         "egges2004": egges2004,
-        "graph": graph_requirements,
+        "du2022_graph": graph_requirements,
     }
     reqs = [r for section, of in papers.items() for r in of(section_settings(section, getattr(p, section)))]
     meta = {stage: pd.read_csv(snakemake.input[stage], dtype=str, keep_default_na=False) for stage in ("data", "prep")}

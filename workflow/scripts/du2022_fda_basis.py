@@ -9,7 +9,7 @@ def main(snakemake) -> None:
 
     from motionvar.du2022.fda import choose_basis_sizes
 
-    settings = config_settings(snakemake, "fda")
+    settings = config_settings(snakemake, "du2022_fda")
     rmse, chosen = choose_basis_sizes(canonical(snakemake), settings.basis)
     rmse.to_csv(snakemake.output.rmse, index=False)
     chosen.to_csv(snakemake.output.n_basis, index=False)

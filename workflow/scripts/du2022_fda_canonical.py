@@ -11,7 +11,7 @@ def main(snakemake) -> None:
     from motionvar.du2022.fda import canonical_primitives
     from motionvar.io import load_dataset, save_dataset
 
-    s = config_settings(snakemake, "fda")
+    s = config_settings(snakemake, "du2022_fda")
     dataset = load_dataset(Path(snakemake.input.clips).parent)
     motions, metadata = canonical_primitives(dataset, s.behaviours, s.min_clips, s.time_warping)
     save_dataset(Path(snakemake.output.clips).parent, motions, metadata)

@@ -15,7 +15,7 @@ def main(snakemake) -> None:
     from motionvar.du2022.fda.evaluations import reconstruction_curves
 
     setup_threads(snakemake)
-    settings = config_settings(snakemake, "fda")
+    settings = config_settings(snakemake, "du2022_fda")
     primitive = snakemake.wildcards.primitive
     n_basis = n_basis_of(pd.read_csv(snakemake.input.n_basis), primitive, snakemake.input.n_basis)
     fd, meta = functional_primitive(canonical(snakemake), primitive, n_basis)

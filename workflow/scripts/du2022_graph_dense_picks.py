@@ -13,7 +13,7 @@ def main(snakemake) -> None:
     from motionvar.prep import align_motions
     from motionvar.synth.dense_picks import dense_pick_segments
 
-    entry, settings = snakemake.params.entry, config_settings(snakemake, "graph")
+    entry, settings = snakemake.params.entry, config_settings(snakemake, "du2022_graph")
     if entry["source"] != "synthetic":
         raise ValueError(f"dataset {snakemake.wildcards.dataset}: dense picks need the synthetic generator")
     pieces, meta = dense_pick_segments(

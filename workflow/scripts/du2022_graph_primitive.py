@@ -1,6 +1,6 @@
 """Rule du2022_graph_primitive (Du 2022 Sec. 4.4.1): fit one motion primitive (DTW +
 SFPCA + GMM chosen by BIC) to its aligned clips and save it (npz + json); settings: config
-graph.model and graph.seed (params.settings)."""
+du2022_graph.model and du2022_graph.seed (params.settings)."""
 
 
 def main(snakemake) -> None:
@@ -11,7 +11,7 @@ def main(snakemake) -> None:
 
     from motionvar.du2022.graph import MotionPrimitive, PrimitiveOptions, primitive_clips
 
-    name, settings = snakemake.wildcards.primitive, config_settings(snakemake, "graph")
+    name, settings = snakemake.wildcards.primitive, config_settings(snakemake, "du2022_graph")
     options = PrimitiveOptions.from_settings(settings.model, settings.seed)
     # the dense-grid picks (du2022_graph_dense_picks) are pick_reach clips modelled as pick_reach_dense
     clips = snakemake.input.clips

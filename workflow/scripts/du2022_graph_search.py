@@ -2,8 +2,8 @@
 orientation and pose constraints searched by the k-means tree (at every beam measured),
 the GMM tree, the median tree (a kd-tree, greedy and at the k-means tree's evaluations) and
 our median split, random sampling and brute force; one row per query, method and beam
-(column selected: the verdicts' beam, graph.search.beam; column budget_beam: the largest
-k-means beam under the evaluation budget). Settings: config graph.search and graph.seed
+(column selected: the verdicts' beam, du2022_graph.search.beam; column budget_beam: the largest
+k-means beam under the evaluation budget). Settings: config du2022_graph.search and du2022_graph.seed
 (params.settings)."""
 
 
@@ -15,7 +15,7 @@ def main(snakemake) -> None:
 
     from motionvar.du2022.graph.evaluations import search_primitive
 
-    settings = config_settings(snakemake, "graph")
+    settings = config_settings(snakemake, "du2022_graph")
     (model,) = models([snakemake.input.model]).values()
     queries, trees = search_primitive(model, joint_map(snakemake), settings)
     queries.to_csv(snakemake.output.queries, index=False)

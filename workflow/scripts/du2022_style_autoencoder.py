@@ -1,6 +1,6 @@
 """Rule du2022_style_autoencoder (Du 2022 Sec. 5.3.1, 5.4.1): the convolutional motion
 autoencoder (Eq. 5.1-5.2) trained on sliding windows of all clips of the dataset
-(config style.autoencoder)."""
+(config du2022_style.autoencoder)."""
 
 
 def main(snakemake) -> None:

@@ -1,7 +1,7 @@
 """Rule du2022_style_cvae (Du 2022 Sec. 5.3.3, 5.4.1): the CVAEs of one primitive, one per
 configured style (``params.styles``, in the order of the outputs): the neutral clips as content
 plus one style example, loss Eq. 5.11 with the Gram style term Eq. 5.10 (weight alpha, Gram
-matrices of Eq. 5.9 summed or averaged: config style.cvae); starts from the neutral VAE when
+matrices of Eq. 5.9 summed or averaged: config du2022_style.cvae); starts from the neutral VAE when
 cvae.init_from_neutral. The content is encoded once for every style; each CVAE is seeded by
 itself: the same weights as one job per style."""
 

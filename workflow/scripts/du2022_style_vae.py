@@ -1,6 +1,6 @@
 """Rule du2022_style_vae (Du 2022 Sec. 5.3.2, 5.4.1): the VAE of one motion primitive (Fig.
 5.3, loss Eq. 5.6) in the autoencoder's feature space, trained on its neutral clips
-(config style.vae)."""
+(config du2022_style.vae)."""
 
 
 def main(snakemake) -> None:

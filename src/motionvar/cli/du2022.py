@@ -55,7 +55,7 @@ def add_parser(sub: argparse._SubParsersAction, common) -> None:
         parents=[common()],
         help="a walk along a floor path (Morphable Graph, Algorithm 1)",
         description="A graph walk following the path: each step seeded from a k-means tree of GMM samples and "
-        "optimised by Levenberg-Marquardt on Eq. 4.9 (settings: config graph.synthesis of the run).",
+        "optimised by Levenberg-Marquardt on Eq. 4.9 (settings: config du2022_graph.synthesis of the run).",
     )
     w.add_argument(
         "--path",

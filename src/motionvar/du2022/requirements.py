@@ -33,7 +33,7 @@ def fda_requirements(settings: FdaSettings) -> list[Requirement]:
     or more variants for Fig. 3.11's separation (each at least ``min_clips`` clips)."""
     behaviours, min_clips = settings.behaviours, settings.min_clips
     primitives, pick_primitive = settings.reconstruction.primitives, settings.reconstruction.pick_primitive
-    why = "Du 2022 ch. 3 fits functional models to the segmented primitives (at least fda.min_clips of each)"
+    why = "Du 2022 ch. 3 fits functional models to the segmented primitives (at least du2022_fda.min_clips of each)"
     canonical = Need(
         what=f"{'/'.join(behaviours)} primitives",
         stage="prep",
@@ -110,7 +110,7 @@ def graph_requirements(settings: GraphSettings, min_clips: int = GRAPH_MIN_CLIPS
                         *settings.search.pose_joints,
                     ]
                 ),
-                "Fig. 4.12 constrains these joints (graph.search.joints, default_joint, pose_joints)",
+                "Fig. 4.12 constrains these joints (du2022_graph.search.joints, default_joint, pose_joints)",
             ),
         ),
         Requirement.of(
@@ -141,7 +141,7 @@ def style_requirements(settings: StyleSettings, min_clips: int = STYLE_MIN_CLIPS
     style_primitives, distance_primitive = settings.style_primitives, settings.distance_primitive
     why_vae = "Du 2022 ch. 5 trains a VAE per primitive on its neutral clips"
     why_cvae = (
-        "Du 2022 ch. 5 trains a CVAE per style on that style's clips; set style.styles to styles your "
+        "Du 2022 ch. 5 trains a CVAE per style on that style's clips; set du2022_style.styles to styles your "
         "data has (and neutral_style in the dataset entry if it calls neutral otherwise)"
     )
     neutral = _primitives(vae_primitives, min_clips, why_vae, style=("neutral",))

@@ -14,7 +14,7 @@ from .common import Measurements, _first_min, _share
 LINEAR = ("fpca", "normalized_fpca", "sfpca")
 
 
-#: the normalized FPCA variants (fda.reconstruction.normalized_variant), as the claims name them
+#: the normalized FPCA variants (du2022_fda.reconstruction.normalized_variant), as the claims name them
 NORMALIZED_LABELS = {
     "normalized_fpca": "z-score as written",
     "normalized_fpca_floored": "z-score with the SD floored",
@@ -61,7 +61,7 @@ def _k_at_error(curve: Mapping[str, Sequence[float]], error: float) -> int | Non
 
 def _complex_motions_need_more_basis(m: Measurements) -> Judgement:
     """Sec. 3.3.3, Fig. 3.9, Table 3.1: complex motions need more basis functions, by
-    ``fda.basis.claim_rule``: at equal error (:func:`_more_basis_at_equal_error`) or by the
+    ``du2022_fda.basis.claim_rule``: at equal error (:func:`_more_basis_at_equal_error`) or by the
     cut-off rule's K (:func:`_more_basis_by_cutoff`)."""
     chosen, hard = m["chosen"], m["complex"]
     simple = [p for p in m["simple"] if p in chosen]
@@ -69,18 +69,18 @@ def _complex_motions_need_more_basis(m: Measurements) -> Judgement:
         return Judgement(
             verdict="not applicable",
             measured="-",
-            note=f"Fig. 3.9 has no chosen K for {hard!r} or for any of {list(m['simple'])} (config fda.behaviours).",
+            note=f"Fig. 3.9 has no chosen K for {hard!r} or for any of {list(m['simple'])} (config du2022_fda.behaviours).",
         )
     rules = {"equal_error": _more_basis_at_equal_error, "relative_drop": _more_basis_by_cutoff}
     if m["claim_rule"] not in rules:
-        raise ValueError(f"fda.basis.claim_rule must be one of {list(rules)}; got {m['claim_rule']!r}")
+        raise ValueError(f"du2022_fda.basis.claim_rule must be one of {list(rules)}; got {m['claim_rule']!r}")
     return rules[m["claim_rule"]](m, simple)
 
 
 def _more_basis_at_equal_error(m: Measurements, simple: Sequence[str]) -> Judgement:
     """Fig. 3.9 (p. 44: complex motions "require more basis functions to achieve the same
     reconstruction error"): for each other Fig. 3.10 primitive and each RMSE of
-    ``fda.basis.equal_error_cm`` that it reaches, the pick primitive needs a larger K to reach it
+    ``du2022_fda.basis.equal_error_cm`` that it reaches, the pick primitive needs a larger K to reach it
     too (or reaches it with no candidate). Value: the share of those comparisons; partial from
     half. Not testable when no other primitive reaches any of the RMSEs."""
     curves, chosen, hard = m["primitives"], m["chosen"], m["complex"]
@@ -106,14 +106,14 @@ def _more_basis_at_equal_error(m: Measurements, simple: Sequence[str]) -> Judgem
             verdict="not testable",
             measured=measured,
             note=f"None of {list(simple)} reaches any of {m['equal_error_cm']} cm within the candidate K "
-            "(config fda.basis.n_basis, equal_error_cm).",
+            "(config du2022_fda.basis.n_basis, equal_error_cm).",
         )
     k0 = min(curves[hard]["n_basis"])
     at_k0 = ", ".join(f"{p} {curves[p]['rmse_cm'][curves[p]['n_basis'].index(k0)]:.2f}" for p in (hard, *simple))
     return Judgement(
         verdict=verdict_from_fraction(n_more, len(parts), full=1.0, partial=0.5),
         measured=measured,
-        note="The K each primitive needs to reach each joint-space RMSE of fda.basis.equal_error_cm, stated before the "
+        note="The K each primitive needs to reach each joint-space RMSE of du2022_fda.basis.equal_error_cm, stated before the "
         "re-run (the thesis: 'the same reconstruction error'); value: the share of comparisons where the pick needs "
         "more. The cut-off rule's K and the canonical frames (longer for complex clips, as the thesis adds) are beside."
         + (
@@ -155,12 +155,12 @@ def _more_basis_by_cutoff(m: Measurements, simple: Sequence[str]) -> Judgement:
             verdict="not testable",
             measured=measured,
             note=f"The cut-off rule chose the largest candidate K for {hard} and {', '.join(ceiling)}: the candidates "
-            "(config fda.basis.n_basis) end before either RMSE curve flattens, so they cannot show which needs more.",
+            "(config du2022_fda.basis.n_basis) end before either RMSE curve flattens, so they cannot show which needs more.",
         )
     return Judgement(
         verdict="reproduced" if margin > 0 else "not reproduced",
         measured=measured,
-        note="K chosen per primitive by the cut-off rule (Sec. 3.3.3; fda.basis.min_relative_drop per added "
+        note="K chosen per primitive by the cut-off rule (Sec. 3.3.3; du2022_fda.basis.min_relative_drop per added "
         "function), as the thesis' cut-off point gives Table 3.1's K; value: the pick primitive's K minus the "
         "largest K of the others. The thesis adds that complex clips have more canonical frames, shown beside K.",
         value=float(margin),
@@ -262,7 +262,7 @@ def _normalized_fpca_beats_fpca_observation_pick(m: Measurements) -> Judgement:
         + (f"; each variant below FPCA at: {variants}" if variants else ""),
         note="Observation error (Eq. 3.7): mean distance (cm) between the joint positions of the pick clips and "
         f"of their reconstructions, at each dimension of the curve; normalized FPCA is the {normalized} "
-        "(fda.reconstruction.normalized_variant)." + cause,
+        "(du2022_fda.reconstruction.normalized_variant)." + cause,
         value=_share(ok, len(w)),
         bound=MORE_THAN_HALF,
         unit="share",
@@ -374,7 +374,7 @@ CLAIMS: tuple[ClaimSpec, ...] = (
         statement="Complex motions such as picking need more B-spline basis functions than walking to achieve the "
         "same reconstruction error (p. 44); Table 3.1 chooses a larger K for two-hand picking reach.",
         published="K = 25 for two-hand picking reach vs 10 for walking leftStance (Table 3.1)",
-        bound="fda.basis.claim_rule equal_error (default): at every RMSE of fda.basis.equal_error_cm that another "
+        bound="du2022_fda.basis.claim_rule equal_error (default): at every RMSE of du2022_fda.basis.equal_error_cm that another "
         "Fig. 3.10 primitive reaches, the pick primitive needs a larger K (share 1; partial from 0.5; not testable "
         "when none is reached); relative_drop: the cut-off rule's K for the pick > each other's (not testable when "
         "both chose the largest candidate)",

@@ -239,7 +239,7 @@ def _fig4_12_halves(m: Measurements, kind: str) -> Judgement:
         measured=measured,
         note=(
             f"{ok} of {testable} primitives below {FIG4_12_HALF} at the verdict beam fixed in advance "
-            f"(graph.search.beam), counted where brute force over the same {m['n_samples']} samples (thesis: 10,000) "
+            f"(du2022_graph.search.beam), counted where brute force over the same {m['n_samples']} samples (thesis: 10,000) "
             "gets below it; partial when at least half are."
             + (f" Not testable where brute force does not: {', '.join(unreachable)}." if unreachable else "")
             + (" Missed by " + "; by ".join(missed) + "." if (missed := _fig4_12_causes(causes)) else "")
@@ -286,7 +286,7 @@ def _fig4_12_budget(m: Measurements) -> Judgement:
         + evals_txt,
         note=(
             "'most' read as more than half of the k-means queries, at the verdict beam fixed in advance "
-            "(graph.search.beam, DFKI's code default), so the count is measured, not chosen. The trees hold "
+            "(du2022_graph.search.beam, DFKI's code default), so the count is measured, not chosen. The trees hold "
             f"{m['n_samples']} samples (thesis: 10,000); the thesis gives neither its beam nor its leaf size."
         ),
         value=share,
@@ -390,7 +390,7 @@ def _fig4_12_near_brute_force(m: Measurements, kind: str) -> Judgement:
         note=(
             f"'close' read as leaving at most {FIG4_12_CLOSE_BRUTE:.0%} of the gap between random sampling's and brute "
             f"force's median errors, brute force over the tree's {m['n_samples']} samples (thesis: 10,000); {ok} of "
-            f"{len(rows)} primitives at the verdict beam fixed in advance (graph.search.beam)."
+            f"{len(rows)} primitives at the verdict beam fixed in advance (du2022_graph.search.beam)."
         ),
         value=ok / len(rows),
         bound=1.0,

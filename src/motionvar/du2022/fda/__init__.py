@@ -40,7 +40,7 @@ API:
   :func:`canonical_primitives` (time warping to a canonical timeline),
   :func:`choose_basis_sizes` (K per primitive, Fig. 3.9 cut-off), :func:`n_basis_of`,
   :func:`primitive_motions`, :func:`functional_primitive`, :func:`sfpca_for`.
-- :mod:`.settings`: :class:`~.settings.FdaSettings`, config section ``fda`` (subsections
+- :mod:`.settings`: :class:`~.settings.FdaSettings`, config section ``du2022_fda`` (subsections
   ``basis``, ``reconstruction``, ``sfpca``, ``gplvm``, ``latent``, ``table``), the one place
   its defaults are written; the evaluations take it whole, :func:`sfpca_for` takes its
   ``sfpca`` part.

@@ -49,14 +49,18 @@ def canonical_primitives(
     absent = [b for b in behaviours if b not in known]
     behaviours = [b for b in behaviours if b in known]
     if not behaviours:
-        raise ValueError(f"config fda.behaviours: none of {absent} in the prep data (behaviours: {sorted(known)})")
+        raise ValueError(
+            f"config du2022_fda.behaviours: none of {absent} in the prep data (behaviours: {sorted(known)})"
+        )
     if absent:
-        log.warning("config fda.behaviours %s: not in the data, left out (the data has %s)", absent, sorted(known))
+        log.warning(
+            "config du2022_fda.behaviours %s: not in the data, left out (the data has %s)", absent, sorted(known)
+        )
     out_motions, out_rows = [], []
     for primitive in sorted(meta.loc[meta["behaviour"].isin(behaviours), "primitive"].unique()):
         idx = np.flatnonzero(meta["primitive"].to_numpy() == primitive)
         if len(idx) < min_clips:
-            log.warning("primitive %s: %d clips < fda.min_clips=%d, left out", primitive, len(idx), min_clips)
+            log.warning("primitive %s: %d clips < du2022_fda.min_clips=%d, left out", primitive, len(idx), min_clips)
             continue
         motions = [dataset.motion(int(i)) for i in idx]
         ids = meta["clip_id"].iloc[idx].astype(str).tolist()
@@ -75,7 +79,7 @@ def canonical_primitives(
         out_rows.append(rows.drop(columns=["n_frames", "fps"]))
         log.info("%s: %d clips -> %d canonical frames (%s)", primitive, len(idx), warped[0].n_frames, time_warping)
     if not out_motions:
-        raise ValueError("config fda.behaviours: no primitive has fda.min_clips clips")
+        raise ValueError("config du2022_fda.behaviours: no primitive has du2022_fda.min_clips clips")
     return out_motions, pd.concat(out_rows, ignore_index=True)
 
 
@@ -92,7 +96,9 @@ def choose_basis_sizes(dataset, basis: BasisSettings) -> tuple[pd.DataFrame, pd.
         T = motions[0].n_frames
         ks = [k for k in sorted(n_basis) if k <= T]
         if not ks:
-            raise ValueError(f"config fda.basis.n_basis: every K exceeds the {T} canonical frames of {primitive}")
+            raise ValueError(
+                f"config du2022_fda.basis.n_basis: every K exceeds the {T} canonical frames of {primitive}"
+            )
         rmse = bspline_fit_rmse(motions, ks)
         K = choose_n_basis(np.array(ks), np.array(rmse), min_relative_drop)
         behaviour = meta["behaviour"].iloc[0]
@@ -125,7 +131,7 @@ def n_basis_of(chosen: pd.DataFrame, primitive: str, source: str = "n_basis tabl
     (``source`` names the table in the error)."""
     row = chosen[chosen["primitive"] == primitive]
     if len(row) != 1:
-        raise ValueError(f"{source}: no basis size for primitive {primitive!r} (config fda.behaviours)")
+        raise ValueError(f"{source}: no basis size for primitive {primitive!r} (config du2022_fda.behaviours)")
     return int(row["n_basis"].iloc[0])
 
 
@@ -137,7 +143,7 @@ def functional_primitive(dataset, primitive: str, n_basis: int) -> tuple[Functio
 
 def sfpca_for(fd: FunctionalMotions, n_components: int, settings: SfpcaSettings) -> SFPCA:
     """An unfitted :class:`SFPCA` of ``n_components`` for the clips ``fd`` with the options of
-    ``settings`` (config ``fda.sfpca``): its objective runs forward kinematics at
+    ``settings`` (config ``du2022_fda.sfpca``): its objective runs forward kinematics at
     ``settings.eval_frames_per_basis`` frames per basis function (0: every canonical frame)."""
     from .sfpca import SFPCA  # here: rules that fit no SFPCA skip scipy.optimize and scikit-learn
 

@@ -1,4 +1,4 @@
-"""FdaSettings: config section ``fda``, Du 2022 ch. 3 (Sec. 3.3): cubic B-spline functions
+"""FdaSettings: config section ``du2022_fda``, Du 2022 ch. 3 (Sec. 3.3): cubic B-spline functions
 (Fig. 3.9), FPCA, normalized FPCA, SFPCA and a Bayesian GPLVM (Fig. 3.10, 3.11), latent
 dimensions per primitive (Table 3.1). The one place where the section's defaults are written;
 ``config/schema.yaml`` describes every key.
@@ -32,7 +32,7 @@ class BasisSettings(Settings):
         mostly finds where a curve meets its noise floor).
     equal_error_cm: the joint-space RMSEs (cm) of ``claim_rule: equal_error``."""
 
-    SECTION = "fda.basis"
+    SECTION = "du2022_fda.basis"
 
     n_basis: tuple[int, ...] = (5, 6, 8, 10, 12, 15, 20, 25, 30)
     min_relative_drop: float = 0.05
@@ -58,7 +58,7 @@ class ReconstructionSettings(Settings):
         whose rotation turns by 0.5 degrees (sin(0.25 deg)), the realism table's near-static
         channel (realism.near_static_deg)."""
 
-    SECTION = "fda.reconstruction"
+    SECTION = "du2022_fda.reconstruction"
 
     primitives: tuple[str, ...] = ("walk_leftStance", "pick_reach")
     pick_primitive: str = "pick_reach"
@@ -90,7 +90,7 @@ class SfpcaSettings(Settings):
         the same subspace and gradient to rounding, the first about twice as fast at 1,500
         coefficients."""
 
-    SECTION = "fda.sfpca"
+    SECTION = "du2022_fda.sfpca"
 
     weight_groups: str = "function"
     gradient: str = "autograd"
@@ -116,7 +116,7 @@ class GplvmSettings(Settings):
         None: plain Bayesian GPLVM.
     n_clusters: k-means++ clusters of the prior's labels (Sec. 3.3.5: 3 for walk leftStance)."""
 
-    SECTION = "fda.gplvm"
+    SECTION = "du2022_fda.gplvm"
 
     n_inducing: int = 30
     max_iter: int = 200
@@ -133,7 +133,7 @@ class LatentSettings(Settings):
     tsne_perplexity: t-SNE perplexity (capped at (clips - 1) / 3).
     knn: k of the leave-one-out k-NN label accuracy."""
 
-    SECTION = "fda.latent"
+    SECTION = "du2022_fda.latent"
 
     n_components: int = 20
     tsne_perplexity: float = 30.0
@@ -150,7 +150,7 @@ class TableSettings(Settings):
     observation_error_cm: the latent dimension is the smallest d whose mean joint
         reconstruction error is at most this (cm)."""
 
-    SECTION = "fda.table"
+    SECTION = "du2022_fda.table"
 
     reference_components: int = 20
     max_components: int = 60
@@ -159,7 +159,7 @@ class TableSettings(Settings):
 
 @dataclass(frozen=True)
 class FdaSettings(Settings):
-    """Config section ``fda`` (Du 2022 ch. 3).
+    """Config section ``du2022_fda`` (Du 2022 ch. 3).
 
     seed: seed of the GPLVM initialisation, k-means labels and t-SNE.
     behaviours: behaviours whose primitives are analysed (idle is a long recording, not a
@@ -169,7 +169,7 @@ class FdaSettings(Settings):
         median-length clip (Sec. 4.4.1), ``linear`` resamples every clip to the median length.
     basis, reconstruction, sfpca, gplvm, latent, table: the subsections above."""
 
-    SECTION = "fda"
+    SECTION = "du2022_fda"
 
     seed: int = 0
     behaviours: tuple[str, ...] = ("walk", "run", "sidestep", "pick", "place")

@@ -325,7 +325,7 @@ class StallTest:
 class SFPCA(FPCA):
     """Scaled FPCA (Eq. 3.8), sklearn-style.
 
-    The options that config ``fda.sfpca`` sets default to :class:`.settings.SfpcaSettings`'s
+    The options that config ``du2022_fda.sfpca`` sets default to :class:`.settings.SfpcaSettings`'s
     (:func:`motionvar.du2022.fda.sfpca_for` builds an SFPCA from those settings).
 
     Args:

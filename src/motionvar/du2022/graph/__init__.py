@@ -2,7 +2,7 @@
 latent density chosen by BIC, space-partitioning trees for constraint search, MAP
 synthesis by Levenberg-Marquardt and graph-walk generation.
 
-- :mod:`.settings`: :class:`GraphSettings` (config section ``graph``) and its subsections
+- :mod:`.settings`: :class:`GraphSettings` (config section ``du2022_graph``) and its subsections
   :class:`ModelSettings`, :class:`SearchSettings`, :class:`DiversitySettings`,
   :class:`SynthesisSettings` (the settings of the graph walk).
 - :mod:`.primitive`: :class:`MotionPrimitive` (DTW time warping + SFPCA + GMM/BIC,

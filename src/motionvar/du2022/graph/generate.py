@@ -48,7 +48,7 @@ def check_path(points: Sequence[Sequence[float]]) -> Path2D:
 
 def walk_settings(settings: Mapping[str, object], max_steps: int | None = None) -> SynthesisSettings:
     """The graph walk's :class:`~.settings.SynthesisSettings` from the settings saved with the
-    graph (config ``graph.synthesis`` and ``graph.seed``; other keys ignored), with
+    graph (config ``du2022_graph.synthesis`` and ``du2022_graph.seed``; other keys ignored), with
     ``max_steps`` when given."""
     st = SynthesisSettings.from_dict({k: v for k, v in settings.items() if k in WALK_SETTING_KEYS})
     return st if max_steps is None else st.replace(max_steps=int(max_steps))

@@ -56,13 +56,13 @@ from .settings import GraphSettings, ModelSettings
 FORMAT_VERSION = 1
 
 
-_MODEL = ModelSettings()  # the defaults of config graph.model
+_MODEL = ModelSettings()  # the defaults of config du2022_graph.model
 
 
 @dataclass(frozen=True)
 class PrimitiveOptions:
     """Settings of :meth:`MotionPrimitive.fit`, saved with the model; built from config
-    ``graph.model`` by :meth:`from_settings` (the defaults are :class:`~.settings.ModelSettings`').
+    ``du2022_graph.model`` by :meth:`from_settings` (the defaults are :class:`~.settings.ModelSettings`').
 
     Attributes:
         n_basis: B-spline basis functions per function (Sec. 3.3.3).
@@ -77,7 +77,7 @@ class PrimitiveOptions:
         sfpca_eval_frames: canonical frames at which SFPCA's objective runs FK (None: all).
         sfpca_eigensolver: SFPCA's eigensolver ("full" or "tridiagonal", the same to rounding).
         dtw_window: optional Sakoe-Chiba band of the DTW (frames; not a config key).
-        seed: random state of the GMM fits and of sampling defaults (config ``graph.seed``).
+        seed: random state of the GMM fits and of sampling defaults (config ``du2022_graph.seed``).
     """
 
     n_basis: int = _MODEL.n_basis
@@ -94,7 +94,7 @@ class PrimitiveOptions:
 
     @classmethod
     def from_settings(cls, model: ModelSettings, seed: int) -> PrimitiveOptions:
-        """The options of config ``graph.model`` with the section's ``seed``."""
+        """The options of config ``du2022_graph.model`` with the section's ``seed``."""
         return cls(
             n_basis=model.n_basis,
             n_components=model.n_components,
@@ -179,7 +179,7 @@ def primitive_clips(
         have = dataset.metadata["primitive"].value_counts().to_dict()
         raise ValueError(
             f"{source}: {int(mask.sum())} clips of primitive {primitive!r} (need >= 3; config "
-            f"graph.primitives / graph.search.primitives); clips per primitive: {have}"
+            f"du2022_graph.primitives / du2022_graph.search.primitives); clips per primitive: {have}"
         )
     pairs = dataset.select(mask)
     short = [f"{row['clip_id']} ({m.n_frames} frame(s))" for row, m in pairs if m.n_frames < 2]

@@ -1,10 +1,10 @@
-"""GraphSettings: config section ``graph`` (Du 2022 ch. 4, the Morphable Graph), the one place
+"""GraphSettings: config section ``du2022_graph`` (Du 2022 ch. 4, the Morphable Graph), the one place
 its defaults are written; a value the thesis gives is the default, cited where it is set.
 
-Subsections: :class:`ModelSettings` (``graph.model``, fitting a motion primitive, Sec. 4.4.1),
-:class:`SearchSettings` (``graph.search``, the tree search comparison of Fig. 4.12, Sec. 4.6.2),
-:class:`DiversitySettings` (``graph.diversity``, Fig. 4.9) and :class:`SynthesisSettings`
-(``graph.synthesis``, constrained synthesis and the graph walk of Fig. 4.10, Sec. 4.5,
+Subsections: :class:`ModelSettings` (``du2022_graph.model``, fitting a motion primitive, Sec. 4.4.1),
+:class:`SearchSettings` (``du2022_graph.search``, the tree search comparison of Fig. 4.12, Sec. 4.6.2),
+:class:`DiversitySettings` (``du2022_graph.diversity``, Fig. 4.9) and :class:`SynthesisSettings`
+(``du2022_graph.synthesis``, constrained synthesis and the graph walk of Fig. 4.10, Sec. 4.5,
 Algorithm 1; also what ``motionvar du2022 walk`` reads back from the saved graph).
 """
 
@@ -36,11 +36,11 @@ class ModelSettings(Settings):
     sfpca_weight_groups: one SFPCA weight per function (thesis) or per joint (DFKI).
     sfpca_eval_frames: canonical frames at which the SFPCA objective runs FK (None: all frames).
     sfpca_eigensolver: the SFPCA objective's eigensolver (``full`` or ``tridiagonal``, as config
-        ``fda.sfpca.eigensolver``; the same to rounding). ``full``: these fits are small (20
+        ``du2022_fda.sfpca.eigensolver``; the same to rounding). ``full``: these fits are small (20
         iterations, ~10 s at full size) and Fig. 4.12's verdicts, which turn on 2-4 comparisons,
         change under the solvers' 1e-11 difference in the gradient (docs/speed.md)."""
 
-    SECTION: ClassVar[str] = "graph.model"
+    SECTION: ClassVar[str] = "du2022_graph.model"
 
     n_basis: int = 10
     n_components: int = 20
@@ -73,7 +73,7 @@ class SearchSettings(Settings):
     default_joint: semantic joint of the primitives not in ``joints``.
     pose_joints: semantic joints of the pose constraints (Sec. 4.6.2: hip, shoulders, hands, feet)."""
 
-    SECTION: ClassVar[str] = "graph.search"
+    SECTION: ClassVar[str] = "du2022_graph.search"
 
     primitives: tuple[str, ...] = ("walk_leftStance", "pick_reach", "place_reach")
     n_samples: int = 10000
@@ -105,11 +105,11 @@ class SearchSettings(Settings):
     def __post_init__(self) -> None:
         beams = tuple(self.beams)
         if not beams or any(isinstance(b, bool) or not isinstance(b, Integral) or b < 1 for b in beams):
-            raise ValueError(f"graph.search.beams: a non-empty list of beams >= 1; got {list(self.beams)}")
+            raise ValueError(f"du2022_graph.search.beams: a non-empty list of beams >= 1; got {list(self.beams)}")
         if isinstance(self.beam, bool) or not isinstance(self.beam, Integral) or self.beam < 1:
-            raise ValueError(f"graph.search.beam: an integer >= 1; got {self.beam!r}")
+            raise ValueError(f"du2022_graph.search.beam: an integer >= 1; got {self.beam!r}")
         if not self.max_evaluations > 0:
-            raise ValueError(f"graph.search.max_evaluations must be > 0; got {self.max_evaluations}")
+            raise ValueError(f"du2022_graph.search.max_evaluations must be > 0; got {self.max_evaluations}")
         object.__setattr__(self, "beams", tuple(int(b) for b in beams))
 
     @property
@@ -131,7 +131,7 @@ class DiversitySettings(Settings):
     coverage_threshold: coverage every projection must reach for the claim (a perfect model reaches about level).
     grid: grid cells per axis of the binned kernel density."""
 
-    SECTION: ClassVar[str] = "graph.diversity"
+    SECTION: ClassVar[str] = "du2022_graph.diversity"
 
     n_samples: int = 60000
     level: float = 0.95
@@ -176,7 +176,7 @@ class SynthesisSettings(Settings):
     The walk's start, stepping and end nodes (``start``, ``cyclic``, ``end``) are the primitive
     names of the prep stage, not config keys."""
 
-    SECTION: ClassVar[str] = "graph.synthesis"
+    SECTION: ClassVar[str] = "du2022_graph.synthesis"
     start: ClassVar[str] = "walk_start"
     end: ClassVar[str] = "walk_end"
     cyclic: ClassVar[tuple[str, ...]] = ("walk_leftStance", "walk_rightStance")
@@ -201,20 +201,22 @@ class SynthesisSettings(Settings):
 
     def __post_init__(self) -> None:
         if int(self.look_ahead) < 1:
-            raise ValueError(f"graph.synthesis.look_ahead must be >= 1; got {self.look_ahead}")
+            raise ValueError(f"du2022_graph.synthesis.look_ahead must be >= 1; got {self.look_ahead}")
         if int(self.reach_range_samples) < 100:
-            raise ValueError(f"graph.synthesis.reach_range_samples must be >= 100; got {self.reach_range_samples}")
+            raise ValueError(
+                f"du2022_graph.synthesis.reach_range_samples must be >= 100; got {self.reach_range_samples}"
+            )
         js = self.joint_steps
         if not (js == "all" or (isinstance(js, Integral) and not isinstance(js, bool) and js >= 0)):
-            raise ValueError(f"graph.synthesis.joint_steps: 'all' or an integer >= 0; got {js!r}")
+            raise ValueError(f"du2022_graph.synthesis.joint_steps: 'all' or an integer >= 0; got {js!r}")
         for key in ("method", "joint_method"):
             if getattr(self, key) not in ("lm", "trf"):
-                raise ValueError(f"graph.synthesis.{key} must be 'lm' or 'trf'; got {getattr(self, key)!r}")
+                raise ValueError(f"du2022_graph.synthesis.{key} must be 'lm' or 'trf'; got {getattr(self, key)!r}")
 
 
 @dataclass(frozen=True)
 class GraphSettings(Settings):
-    """Config section ``graph`` (Du 2022 ch. 4).
+    """Config section ``du2022_graph`` (Du 2022 ch. 4).
 
     seed: seed of every random draw (GMM fits, samples, constraints, trees).
     primitives: primitives of the prep stage modelled as nodes of the graph (each needs >= 3 clips).
@@ -223,7 +225,7 @@ class GraphSettings(Settings):
     dense_grid_spacing_cm: node spacing (cm) of the generator's dense target grid.
     model, search, diversity, synthesis: the subsections (module docstring)."""
 
-    SECTION: ClassVar[str] = "graph"
+    SECTION: ClassVar[str] = "du2022_graph"
 
     seed: int = 0
     primitives: tuple[str, ...] = (

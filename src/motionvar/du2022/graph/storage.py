@@ -2,8 +2,8 @@
 motion primitives (each saved by :meth:`~.primitive.MotionPrimitive.save`), in the project's
 one model format (:mod:`motionvar.io.model_file`): the edges and the start and end node
 counts in ``<base>.npz``, the rig's joint map and the settings of graph-walk synthesis
-(Algorithm 1: :class:`~.settings.SynthesisSettings`, config ``graph.synthesis``, and
-``graph.seed``) in ``<base>.json``. With the primitives this is all path following needs: no motion data.
+(Algorithm 1: :class:`~.settings.SynthesisSettings`, config ``du2022_graph.synthesis``, and
+``du2022_graph.seed``) in ``<base>.json``. With the primitives this is all path following needs: no motion data.
 """
 
 from __future__ import annotations

@@ -85,7 +85,7 @@ def optimize_map(
     fd_step: float = 1e-4,
 ) -> MapResult:
     """Minimise Eq. 4.9 from ``s0`` with Levenberg-Marquardt ("lm") or scipy's "trf", at most
-    ``max_nfev`` residual evaluations (config ``graph.synthesis``: ``likelihood_weight``,
+    ``max_nfev`` residual evaluations (config ``du2022_graph.synthesis``: ``likelihood_weight``,
     ``method``, ``max_nfev``)."""
     if method not in ("lm", "trf"):
         raise ValueError(f"optimize_map: method must be 'lm' or 'trf'; got {method!r}")

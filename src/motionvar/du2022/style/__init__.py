@@ -19,7 +19,7 @@ Typical use (one primitive, clips resampled to the canonical 60 frames)::
     samples = sample_features(cvae, maps.shape[1:], space, n=1000, seed=0)
     diversity(samples, layout.n_joints)                        # Eq. 5.13-5.15
 
-Modules: :mod:`.settings` (config section ``style``), :mod:`.features` (Sec. 5.2 representation, windows, scaling),
+Modules: :mod:`.settings` (config section ``du2022_style``), :mod:`.features` (Sec. 5.2 representation, windows, scaling),
 :mod:`.networks` (Eq. 5.1-5.2, Fig. 5.3), :mod:`.losses` (Eq. 5.6-5.12),
 :mod:`.training` (training runs; from a dataset to the saved models),
 :mod:`.model` (feature space, save/load, sampling), :mod:`.data` (clips of a primitive,

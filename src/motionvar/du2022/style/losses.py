@@ -114,7 +114,7 @@ def style_loss(
     feature maps, style_maps (K, S) the encoded style example, ``norm`` frobenius (as
     printed) or mean_squared, ``gram_reduce`` the reduction of Eq. 5.9 (:func:`gram`),
     ``target`` batch_mean (the distance of the decodes' mean Gram matrix) or per_sample (the
-    mean of each decode's distance); config style.cvae.style_norm, .gram and .style_target."""
+    mean of each decode's distance); config du2022_style.cvae.style_norm, .gram and .style_target."""
     if norm not in STYLE_NORMS:
         raise ValueError(f"style_loss: norm must be one of {STYLE_NORMS}; got {norm!r}")
     if target not in STYLE_TARGETS:

@@ -33,7 +33,7 @@ class ConvAutoencoder(nn.Module):
 
     Encoder, Eq. 5.1: Y = Phi(X) = Psi(ReLU(X * W + b)), ``n_kernels`` kernels of
     ``kernel_width`` frames along time (the thesis: 256 of width 15, a quarter of the
-    60-frame canonical timeline: config style.autoencoder), Psi average pooling by ``pool``.
+    60-frame canonical timeline: config du2022_style.autoencoder), Psi average pooling by ``pool``.
     Decoder, Eq. 5.2: X = Phi'(Y) = Psi'(Y * W' + b'), W' of W's shape (a transposed
     convolution, whose weight tensor is (256, C, 15) like W), Psi' average depooling
     (each feature frame repeated ``pool`` times). ``decoder_order="depool_conv"`` depools
@@ -86,7 +86,7 @@ class ConvAutoencoder(nn.Module):
 class MotionVAE(nn.Module):
     """The VAE of one motion primitive (Fig. 5.3): encoder with ``hidden`` units (the
     thesis: 512-256-128, :data:`VAE_HIDDEN`) and a ``latent``-dimensional latent space (the
-    thesis: 32, config style.vae.latent; two linear branches for the mean and the log of
+    thesis: 32, config du2022_style.vae.latent; two linear branches for the mean and the log of
     the diagonal covariance), decoder mirrored (32-128-256-512), tanh on every layer but
     the outputs.
     Works on flattened feature maps y (B, D), D = 256 * 30."""

@@ -1,4 +1,4 @@
-"""Settings of Du 2022 ch. 5 (config section ``style``): the convolutional motion
+"""Settings of Du 2022 ch. 5 (config section ``du2022_style``): the convolutional motion
 autoencoder (Sec. 5.3.1, Eq. 5.1-5.2), the VAE of each motion primitive (Sec. 5.3.2, Fig.
 5.3, Eq. 5.6-5.8), the CVAE of each primitive and style (Sec. 5.3.3, Eq. 5.9-5.11) and the
 evaluations (Table 5.1, Tables 5.2-5.3, Fig. 5.4-5.5).
@@ -25,7 +25,7 @@ from ...core.settings import Settings
 class AutoencoderSettings(Settings):
     """The convolutional autoencoder (Eq. 5.1-5.2) and its training (Adam), Sec. 5.3.1, 5.4.1."""
 
-    SECTION = "style.autoencoder"
+    SECTION = "du2022_style.autoencoder"
 
     kernels: int = 256
     """Convolution kernels (Sec. 5.3.1: 256)."""
@@ -70,7 +70,7 @@ class NetworkTraining(Settings):
 class VaeSettings(NetworkTraining):
     """The neutral VAE of each primitive (Fig. 5.3, loss Eq. 5.6) and its training, Sec. 5.3.2, 5.4.1."""
 
-    SECTION = "style.vae"
+    SECTION = "du2022_style.vae"
 
     latent: int = 32
     """Latent dimensions (Sec. 5.3.2: 32)."""
@@ -82,7 +82,7 @@ class VaeSettings(NetworkTraining):
 class CvaeSettings(NetworkTraining):
     """The CVAE of each primitive and style (Eq. 5.9-5.11) and its training, Sec. 5.3.3, 5.4.1."""
 
-    SECTION = "style.cvae"
+    SECTION = "du2022_style.cvae"
 
     alpha: float = 200.0
     """Style weight alpha of Eq. 5.10 (Sec. 5.3.3: 200)."""
@@ -109,9 +109,9 @@ class CvaeSettings(NetworkTraining):
 
 @dataclass(frozen=True)
 class StyleSettings(Settings):
-    """Config section ``style``: Du 2022 ch. 5's models and evaluations."""
+    """Config section ``du2022_style``: Du 2022 ch. 5's models and evaluations."""
 
-    SECTION = "style"
+    SECTION = "du2022_style"
 
     seed: int = 0
     """Seed of every training run (torch generator) and of the sampling."""

@@ -30,7 +30,7 @@ if TYPE_CHECKING:
 log = logging.getLogger(__name__)
 
 METHODS = ("fpca", "normalized_fpca", "sfpca", "gplvm")
-#: the normalized FPCA of each fda.reconstruction.normalized_variant (Fig. 3.10 only)
+#: the normalized FPCA of each du2022_fda.reconstruction.normalized_variant (Fig. 3.10 only)
 NORMALIZED_METHODS = {
     "zscore": "normalized_fpca",
     "zscore_floored": "normalized_fpca_floored",
@@ -135,7 +135,7 @@ def reconstruction_curves(
     n_max = fd.n_clips - 1  # rank of the centred data
     dims = sorted({d for d in settings.reconstruction.dims if d <= n_max})
     if not dims:
-        raise ValueError(f"config fda.reconstruction.dims: none <= {n_max} (clips - 1 of {primitive})")
+        raise ValueError(f"config du2022_fda.reconstruction.dims: none <= {n_max} (clips - 1 of {primitive})")
     latent_dim = min(settings.latent.n_components, n_max)
     reference = fd.positions()
     out = {

@@ -35,7 +35,7 @@ def evaluate_fig3_10(curves: Sequence[Mapping[str, np.ndarray]], settings: FdaSe
     rec = settings.reconstruction
     if rec.normalized_variant not in NORMALIZED_METHODS:
         raise ValueError(
-            f"fda.reconstruction.normalized_variant must be one of {list(NORMALIZED_METHODS)}; "
+            f"du2022_fda.reconstruction.normalized_variant must be one of {list(NORMALIZED_METHODS)}; "
             f"got {rec.normalized_variant!r}"
         )
     present = list(dict.fromkeys(table["method"]))
@@ -61,7 +61,7 @@ def fig3_10_measurements(table: pd.DataFrame, pick_primitive: str, normalized: s
             variants[method] = [int((v < fpca.reindex(v.index)).sum()), len(v)]
     if normalized not in set(table["method"]):
         raise ValueError(
-            f"Fig. 3.10: no curves of {normalized} (fda.reconstruction.normalized_variant); "
+            f"Fig. 3.10: no curves of {normalized} (du2022_fda.reconstruction.normalized_variant); "
             f"the curves hold {sorted(set(table['method']))}"
         )
     four = table[table["method"].isin([m for m in METHODS if m != "normalized_fpca"]) | (table["method"] == normalized)]

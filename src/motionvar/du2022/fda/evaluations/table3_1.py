@@ -126,6 +126,6 @@ def _given_model(model: SFPCA, primitive: str, fd: FunctionalMotions, d_ref: int
     if int(model.n_components) != d_ref:
         raise ValueError(
             f"SFPCA model of {primitive}: fitted at d = {model.n_components}, Table 3.1's reference "
-            f"dimension is {d_ref} (config fda.table.reference_components): rerun rule du2022_fda_sfpca"
+            f"dimension is {d_ref} (config du2022_fda.table.reference_components): rerun rule du2022_fda_sfpca"
         )
     return model

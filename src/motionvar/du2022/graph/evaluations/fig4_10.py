@@ -33,7 +33,7 @@ from ..settings import REACH_JOINT, GraphSettings, SynthesisSettings
 from ..trees import SpacePartitioningTree
 from .common import semantic_index
 
-#: the compared walks (table tasks ``path_<name>``): overrides of the configured ``graph.synthesis``; the greedy walk
+#: the compared walks (table tasks ``path_<name>``): overrides of the configured ``du2022_graph.synthesis``; the greedy walk
 #: (T = 1, no line 9) and our receding horizon with line 9 (T = 1 with line 9 alone is the thesis' walk on a graph
 #: whose stepping nodes alternate, as ours: one successor per step after the first, so T changes little)
 VARIANTS: dict[str, dict[str, Any]] = {
@@ -221,7 +221,7 @@ def _reaches(
     The variation range and the natural log-likelihood come from ``st.reach_range_samples`` GMM
     samples (their :data:`FIG4_10_NATURAL_PERCENTILE` th percentile; the samples at or above it
     make the range). Returns (table rows, reaching motions, targets, reference numbers)."""
-    hand = semantic_index(joint_map, reach.skeleton, REACH_JOINT, "graph.synthesis (reach joint)")
+    hand = semantic_index(joint_map, reach.skeleton, REACH_JOINT, "du2022_graph.synthesis (reach joint)")
     clips, _ = primitive_clips(dataset, st.reach_primitive, source)
     hand_ends = np.stack([c.positions()[-1, hand] for c in clips])
     train_lp = reach.log_prob(reach.training_latents(clips, source))

@@ -11,7 +11,7 @@ and written in the claim's note.
 Methods (column ``method``):
 
 - ``kmeans``: the k-means tree with beam search, at every beam of ``SearchSettings.candidates``
-  (:mod:`~motionvar.du2022.graph.settings`, config ``graph.search``). Every verdict uses
+  (:mod:`~motionvar.du2022.graph.settings`, config ``du2022_graph.search``). Every verdict uses
   the beam fixed in advance, ``beam`` (4, DFKI's code default; column ``selected``); beside
   it the table marks the budget beam (column ``budget_beam``: the largest beam whose mean
   number of evaluations stays under ``max_evaluations``, the thesis' 120), which no verdict uses;
@@ -213,8 +213,8 @@ def search_primitive(
     map lacks."""
     st, name = settings.search, primitive.name
     sem = st.joint(name)
-    joint = semantic_index(joint_map, primitive.skeleton, sem, f"graph.search.joints.{name}")
-    pose = [semantic_index(joint_map, primitive.skeleton, j, "graph.search.pose_joints") for j in st.pose_joints]
+    joint = semantic_index(joint_map, primitive.skeleton, sem, f"du2022_graph.search.joints.{name}")
+    pose = [semantic_index(joint_map, primitive.skeleton, j, "du2022_graph.search.pose_joints") for j in st.pose_joints]
     table, trees = search_comparison(primitive, joint, pose, st, settings.seed)
     table.insert(0, "primitive", name)
     table.insert(2, "joint", sem)
