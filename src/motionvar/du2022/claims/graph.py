@@ -59,13 +59,13 @@ def _fig4_9_coverage(m: Measurements) -> Judgement:
     thesis states coverage, not that the samples stay inside the training's spread."""
     level, threshold = m["level"], m["coverage_threshold"]
     rows = m["coverage"]
-    worst = float(min(c["coverage"] for c in rows))
+    low = min(rows, key=lambda c: c["coverage"])
+    worst = float(low["coverage"])
     return Judgement(
         verdict=verdict_threshold(worst, threshold, ">=", tolerance=0.1),
-        measured=f"training inside the samples' {level:.0%} region (samples inside the training's, diagnostic): "
-        + "; ".join(
-            f"{c['primitive']} {c['joint']} {c['view']}: {c['coverage']:.2f} ({c['samples_inside']:.2f})" for c in rows
-        ),
+        measured=f"training inside the samples' {level:.0%} region: lowest {worst:.2f} ({low['primitive']} "
+        f"{low['joint']} {low['view']}) of {len(rows)} projections; samples inside the training's (diagnostic): lowest "
+        f"{min(c['samples_inside'] for c in rows):.2f}",
         note=(
             f"Coverage per primitive, joint and 2-D projection: the share of the training clips' last-frame "
             f"end-effector positions inside the region holding {level:.0%} of the binned kernel density of "
@@ -89,24 +89,19 @@ def _fig4_10_follows_path(m: Measurements) -> Judgement:
     mean_step, dev = p["mean_step_cm"], p["max_deviation_cm"]
     value = max(mean_step / FIG4_10_PATH_CLOSE_CM, dev / FIG4_10_PATH_MAX_CM)
     value = value if math.isfinite(mean_step) and math.isfinite(dev) else float("nan")
-    own = p["mean_step_own_cm"]
-    greedy = "" if own is None else f"; after each step's own LM (before line 9) {own:.1f} cm"
-    compared = "".join(
-        f"; {v['label']}: {v['n_steps']} steps, {v['mean_step_cm']:.1f} cm per step, at most "
-        f"{v['max_deviation_cm']:.1f} cm from the path, end {v['end_gap_cm']:.0f} cm from it"
-        for v in m["variants"].values()
-    )
+    compared = ", ".join(v["label"].split(" (")[0] for v in m["variants"].values())
     return Judgement(
         verdict=verdict_threshold(value, 1.0, "<=", tolerance=1.0),
-        measured=f"{p['n_steps']} steps; hips position error per step, final {mean_step:.1f} cm (tree: "
-        f"{p['mean_tree_cm']:.1f} cm{greedy}), heading {p['heading_deg']:.1f} deg; hips at most {dev:.1f} cm "
-        f"from the path; end of walk {p['end_gap_cm']:.0f} cm from the path's end" + compared,
+        measured=f"{p['n_steps']} steps; hips position error per step {mean_step:.1f} cm, heading "
+        f"{p['heading_deg']:.1f} deg; hips at most {dev:.1f} cm from the path; end of walk {p['end_gap_cm']:.0f} cm "
+        "from the path's end",
         note=(
             "Mean remaining hips position error per step and largest floor distance of the hips from the path over "
             f"the walk's frames, where the thesis shows the walk in a figure only; reproduced when <= "
             f"{FIG4_10_PATH_CLOSE_CM:.0f} cm and <= {FIG4_10_PATH_MAX_CM:.0f} cm, partial up to twice each. "
             f"Synthesis: {m['mode'] or 'see the caption'}; steps are not blended, each placed at the previous "
-            "step's last canonical frame; measured also lists the compared walks (same trees)."
+            "step's last canonical frame; the table gives each step's error after the tree and after its own LM, and "
+            f"the compared walks on the same trees ({compared or 'none'})."
         ),
         value=value,
         bound=1.0,
@@ -341,7 +336,7 @@ def _fig4_12_median_tree(m: Measurements) -> Judgement:
     evals_txt = "; ".join(
         f"{p}: " + ", ".join(f"{k} {e[k]:.0f}" for k in ("kmeans", *variants) if k in e) for p, e in evals.items()
     )
-    budget = "" if "median_budget" not in variants else " greedy, median tree at the k-means budget"
+    budget = "" if "median_budget" not in variants else " (greedy and at the k-means budget)"
     variant = ""
     if cases and "median_means" in cases[0]["median"]:
         mm = [
@@ -354,8 +349,7 @@ def _fig4_12_median_tree(m: Measurements) -> Judgement:
         )
     return Judgement(
         verdict=verdict_from_fraction(closer, n),
-        measured=f"median errors (median tree{budget}, random, k-means): "
-        + "; ".join(f"{r[0]}: " + ", ".join(f"{v:.3g}" for v in r[1:]) for r in rows)
+        measured=f"median tree{budget} closer to random than to k-means in {closer} of {n} comparisons"
         + (f"; mean evaluations {evals_txt}" if evals_txt else ""),
         note=(
             f"{closer} of {n} comparisons closer to random: the median tree by greedy descent and with the smallest "
