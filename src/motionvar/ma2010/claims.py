@@ -133,7 +133,7 @@ def _loo_stride(m: Measurements) -> Judgement:
     asked for, xi by ``ma2010.loo_xi``) against the strides asked for is within the published
     1.2 cm (partial: within twice that)."""
     err, root, alt, xi = m["stride_error_cm"], m["root_group"], m["ablation_root_group"], m["loo_xi"]
-    ablation = f"the root rotation in {alt} (an ablation)" if alt is not None else "no ablation"
+    ablation = f"the root in {alt}" if alt is not None else "no ablation"
 
     def worst(cycles: str) -> str:
         s = _stats(m, f"ours_{xi}_xi", cycles)
@@ -144,10 +144,9 @@ def _loo_stride(m: Measurements) -> Judgement:
         measured=f"max {err['max']:.2f} cm, mean {err['mean']:.2f} cm over {err['n']} cycles ({err['n_within']} "
         f"within {PUBLISHED_MAX_STRIDE_ERROR_CM} cm); max of the steady cycles {worst('steady')}, of the closing "
         f"cycles {worst('closing')}",
-        note=f"Stride error of ours with {XI_TEXT[xi]} (root in {root}; ma2010.loo_xi), the larger of its two support "
-        f"phases, against the strides asked for; {_folds_text(m)}, closing cycles apart. The table's summary rows "
-        f"give the other xi, {ablation} and the own clip retimed (what the time warp alone costs); paper: 25 captured "
-        "subjects' walks." + _failure_causes(m),
+        note=f"Stride error of ours with {XI_TEXT[xi]} (root in {root}), the larger support phase's, "
+        f"against the strides asked for; {_folds_text(m)}, closing cycles apart. The other xi, {ablation} and the own "
+        "clip retimed are in the table; paper: 25 captured subjects' walks." + _failure_causes(m),
         value=err["max"],
         bound=PUBLISHED_MAX_STRIDE_ERROR_CM,
         unit="cm",
