@@ -58,7 +58,7 @@ def main() -> None:
     ]
     fps = clips[0].fps
     settings = Egges2004Settings()
-    pca = PosturePCA.fit(clips, settings.translation_scale)
+    pca = PosturePCA(settings.translation_scale).fit(clips)
     t0 = time.perf_counter()
     db = build_database(
         [analyse_recording(m, pca, cmu_joint_map(), f"clip{i}") for i, m in enumerate(clips)],

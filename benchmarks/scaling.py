@@ -158,7 +158,7 @@ def _kriging_query(data, model):
 def _pca_fit(motions):
     from motionvar.egges2004 import Egges2004Settings, PosturePCA
 
-    return PosturePCA.fit(motions, Egges2004Settings().translation_scale)
+    return PosturePCA(Egges2004Settings().translation_scale).fit(motions)
 
 
 def _pca_query(motions, pca):
@@ -194,7 +194,7 @@ def _idle_prepare(n: int):
             for _ in range(2)
         ]
         settings = Egges2004Settings()
-        pca = PosturePCA.fit(recs, settings.translation_scale)
+        pca = PosturePCA(settings.translation_scale).fit(recs)
         db = build_database(
             [analyse_recording(m, pca, cmu_joint_map(), f"clip{i}") for i, m in enumerate(recs)],
             pca,

@@ -90,7 +90,7 @@ def main() -> None:
     )
 
     ae, _ = train_autoencoder(windows[:64], one, 0)
-    space = FeatureSpace(ae, FeatureScaler.fit(windows[:256].astype(float), layout.n_joints))
+    space = FeatureSpace(ae, FeatureScaler(layout.n_joints).fit(windows[:256].astype(float)))
     maps = torch.rand(args.clips, 256, T // 2, generator=gen)
     vae_cfg = VaeSettings(samples_per_input=10, epochs=1, lr=1e-3, batch_size=32, optimizer="adam")
     cvae_cfg = CvaeSettings(alpha=200.0, epochs=1, lr=1e-3, batch_size=32, optimizer="adam")

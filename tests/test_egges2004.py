@@ -38,7 +38,7 @@ RESTS = [4, 3, 5, 3, 6, 4, 3]
 @pytest.fixture(scope="module")
 def toy():
     recs = [toy_recording(SEQ, RESTS, seed=s) for s in range(2)]
-    pca = PosturePCA.fit([m for m, _ in recs], 0.01)
+    pca = PosturePCA(0.01).fit([m for m, _ in recs])
     jm = cmu_joint_map()
     analysed = [analyse_recording(m, pca, jm, f"r{i}") for i, (m, _) in enumerate(recs)]
     db = build_database(analysed, pca, AnalysisSettings(), "s1", 0)
@@ -71,7 +71,7 @@ def test_continuous_rotvecs_do_not_jump_through_pi():
 
 def test_pca_with_a_joint_subset_keeps_the_others_at_their_mean():
     m, _ = toy_recording(["left", "right"], [2, 2])
-    pca = PosturePCA.fit([m], 0.01, joints=[0, 1, 2])
+    pca = PosturePCA(0.01, joints=[0, 1, 2]).fit([m])
     rot, root = pca.to_rotations(pca.project(m))
     assert rot.shape == m.rotations.shape and np.allclose(root, m.root_pos)
     assert np.allclose(rot[:, 5:, 0], 1.0)  # identity rotations in the toy data
@@ -80,10 +80,10 @@ def test_pca_with_a_joint_subset_keeps_the_others_at_their_mean():
 def test_pca_rejects_bad_input():
     m, _ = toy_recording(["left", "right"], [2, 2])
     with pytest.raises(ValueError, match="no motions"):
-        PosturePCA.fit([], 0.01)
+        PosturePCA(0.01).fit([])
     with pytest.raises(ValueError, match="joint indices"):
-        PosturePCA.fit([m], 0.01, joints=[40])
-    pca = PosturePCA.fit([m], 0.01, joints=[0, 1])
+        PosturePCA(0.01, joints=[40]).fit([m])
+    pca = PosturePCA(0.01, joints=[0, 1]).fit([m])
     small = Motion(
         cmu_skeleton().__class__(("a",), np.array([-1]), np.zeros((1, 3))), np.zeros((3, 3)), qidentity((3, 1)), 30.0
     )
@@ -359,7 +359,7 @@ def test_movement_only_features_identify_people_who_differ_only_in_movement():
         ]
         for k, (t, st) in enumerate(twins)
     }
-    pca = PosturePCA.fit([ms[0] for ms in clips.values()], 0.01)  # one training clip each spans the postures
+    pca = PosturePCA(0.01).fit([ms[0] for ms in clips.values()])  # one training clip each spans the postures
     jm = cmu_joint_map()
     analysed = {s: [analyse_recording(m, pca, jm, f"{s}_{c}") for c, m in enumerate(ms)] for s, ms in clips.items()}
     train = [(s, r.pcs, r.support) for s, rs in analysed.items() for r in rs[:3]]

@@ -69,6 +69,10 @@ def _assert_same(a, b, where="model"):
         assert type(a) is type(b), where
         for f in fields(a):
             _assert_same(getattr(a, f.name), getattr(b, f.name), f"{where}.{f.name}")
+    elif hasattr(a, "__dict__") and any(k.endswith("_") for k in vars(a)):  # an estimator: its learned attributes
+        assert type(a) is type(b), where
+        for k in [k for k in vars(a) if k.endswith("_")]:
+            _assert_same(getattr(a, k), getattr(b, k), f"{where}.{k}")
     elif isinstance(a, dict):
         assert list(a) == list(b), where
         for k in a:

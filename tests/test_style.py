@@ -199,12 +199,12 @@ def test_sliding_windows_of_60_overlapping_by_half():
 
 def test_scaler_pools_positions_and_inverts(layout):
     f = motions_features([toy_walk(seed=s) for s in range(4)], layout)
-    sc = FeatureScaler.fit(f, 21)
-    assert len(np.unique(sc.std[:63])) == 1 and sc.std[63] == sc.std[64]
+    sc = FeatureScaler(21).fit(f)
+    assert len(np.unique(sc.std_[:63])) == 1 and sc.std_[63] == sc.std_[64]
     assert np.allclose(sc.inverse(sc.transform(f)), f, atol=1e-4)
     # float64 scaled * std + mean, into a given array too (strided input as a decoder's transpose)
     scaled = sc.transform(f).transpose(1, 0, 2).copy().transpose(1, 0, 2)
-    expected = np.asarray(scaled, dtype=float) * sc.std + sc.mean
+    expected = np.asarray(scaled, dtype=float) * sc.std_ + sc.mean_
     out = np.empty(f.shape)
     assert sc.inverse(scaled).tobytes() == expected.tobytes()
     assert sc.inverse(scaled, out=out) is out and out.tobytes() == expected.tobytes()
@@ -403,7 +403,7 @@ def tiny(layout):
     """A trained tiny feature space and a clip set (a few seconds)."""
     clips = [toy_walk(n_frames=120, seed=s, turn=0.2 * s) for s in range(6)]
     windows = sliding_windows([motion_features(m, layout) for m in clips], 60, 30)
-    scaler = FeatureScaler.fit(windows, 21)
+    scaler = FeatureScaler(21).fit(windows)
     ae, hist = train_autoencoder(
         scaler.transform(windows), AutoencoderSettings(kernels=16, epochs=30, lr=3e-3, batch_size=8), seed=0
     )
@@ -574,8 +574,10 @@ def test_save_load_sample_and_distance_matrix(tiny, tmp_path, layout):
     assert shape == (16, 30) and info["style"] == "neutral"
     # exact round trip: weights and the float32 scaler
     assert all(torch.equal(a, b) for a, b in zip(space.ae.state_dict().values(), space2.ae.state_dict().values()))
-    assert space2.scaler.mean.dtype == space.scaler.mean.dtype == np.float32
-    assert np.array_equal(space2.scaler.mean, space.scaler.mean) and np.array_equal(space2.scaler.std, space.scaler.std)
+    assert space2.scaler.mean_.dtype == space.scaler.mean_.dtype == np.float32
+    assert np.array_equal(space2.scaler.mean_, space.scaler.mean_) and np.array_equal(
+        space2.scaler.std_, space.scaler.std_
+    )
     a = sample_features(vae, shape, space, 5, seed=3)
     b = sample_features(vae2, shape, space2, 5, seed=3)
     assert a.shape == (5, 60, 66) and np.array_equal(a, b)

@@ -14,7 +14,6 @@ PCA, which keeps the translation on the same footing as rotations in radians.
 from __future__ import annotations
 
 from collections.abc import Sequence
-from dataclasses import dataclass
 
 import numpy as np
 
@@ -46,35 +45,29 @@ def posture_vectors(motion: Motion, joints: np.ndarray, translation_scale: float
     return np.concatenate([r, motion.root_pos * translation_scale], axis=1)
 
 
-@dataclass
 class PosturePCA:
-    """PCA of posture vectors (Sec. 3.2): ``project`` to and ``reconstruct`` from PC space.
+    """PCA of posture vectors (Sec. 3.2), a scikit-learn-style estimator: ``PosturePCA(scale,
+    joints).fit(motions)``, then ``project`` to and ``reconstruct`` from PC space.
 
-    Attributes:
-        joints: indices of the joints in the posture vector (the paper uses 25).
+    Parameters:
         translation_scale: factor on the root translation (0.01: cm -> m).
+        joints: indices of the joints in the posture vector (the paper uses 25); None: every joint.
+
+    Attributes learned by :meth:`fit`:
+        joints_: the joint indices used.
         mean_: (D,) mean posture vector.
         components_: (D, D) principal axes as rows, by decreasing variance.
         explained_variance_: (D,) the eigenvalues.
-        base_rotations: (J, 4) rotations given to the joints left out of ``joints``.
+        base_rotations_: (J, 4) rotations given to the joints left out of ``joints_``.
     """
 
-    joints: np.ndarray
-    translation_scale: float
-    mean_: np.ndarray
-    components_: np.ndarray
-    explained_variance_: np.ndarray
-    base_rotations: np.ndarray
+    def __init__(self, translation_scale: float, joints: Sequence[int] | None = None) -> None:
+        self.translation_scale = float(translation_scale)
+        self.joints = joints
 
-    @classmethod
-    def fit(
-        cls,
-        motions: Sequence[Motion],
-        translation_scale: float,
-        joints: Sequence[int] | None = None,
-    ) -> "PosturePCA":
+    def fit(self, motions: Sequence[Motion]) -> PosturePCA:
         """Fit on all frames of ``motions`` (one rig), the root translation times
-        ``translation_scale``; ``joints=None`` takes every joint."""
+        ``translation_scale``."""
         from sklearn.decomposition import PCA  # only fitting needs scikit-learn (a slow import)
 
         if len(motions) == 0:
@@ -82,10 +75,10 @@ class PosturePCA:
         n_joints = motions[0].skeleton.n_joints
         if any(m.skeleton.n_joints != n_joints for m in motions):
             raise ValueError("PosturePCA.fit: motions have different numbers of joints")
-        joints = np.arange(n_joints) if joints is None else np.asarray(joints, dtype=np.int64)
+        joints = np.arange(n_joints) if self.joints is None else np.asarray(self.joints, dtype=np.int64)
         if joints.size == 0 or joints.min() < 0 or joints.max() >= n_joints:
             raise ValueError(f"PosturePCA.fit: joint indices must lie in [0, {n_joints}); got {joints.tolist()}")
-        X = np.concatenate([posture_vectors(m, joints, translation_scale) for m in motions])
+        X = np.concatenate([posture_vectors(m, joints, self.translation_scale) for m in motions])
         if len(X) < 2:
             raise ValueError("PosturePCA.fit: need at least two frames")
         pca = PCA(svd_solver="full").fit(X)
@@ -102,7 +95,21 @@ class PosturePCA:
         base[:, 0] = 1.0
         if left_out.size:
             base[left_out] = qnormalize(np.concatenate([m.rotations[:, left_out] for m in motions]).mean(axis=0))
-        return cls(joints, float(translation_scale), pca.mean_, components, variance, base)
+        return self.set_fitted(joints, pca.mean_, components, variance, base)
+
+    def set_fitted(
+        self,
+        joints: np.ndarray,
+        mean: np.ndarray,
+        components: np.ndarray,
+        explained_variance: np.ndarray,
+        base_rotations: np.ndarray,
+    ) -> PosturePCA:
+        """Set the learned attributes (:meth:`fit`, or a saved model's arrays); returns self."""
+        self.joints_ = np.asarray(joints, dtype=np.int64)
+        self.mean_, self.components_, self.explained_variance_ = mean, components, explained_variance
+        self.base_rotations_ = base_rotations
+        return self
 
     @property
     def n_dims(self) -> int:
@@ -140,20 +147,20 @@ class PosturePCA:
 
     def project(self, motion: Motion) -> np.ndarray:
         """(T, D) PC values of every frame of ``motion`` (Fig. 1, left to right)."""
-        if motion.skeleton.n_joints != self.base_rotations.shape[0]:
+        if motion.skeleton.n_joints != self.base_rotations_.shape[0]:
             raise ValueError(
                 f"PosturePCA.project: motion has {motion.skeleton.n_joints} joints, "
-                f"the PCA was fitted on {self.base_rotations.shape[0]}"
+                f"the PCA was fitted on {self.base_rotations_.shape[0]}"
             )
-        return self.vectors_to_pc(posture_vectors(motion, self.joints, self.translation_scale))
+        return self.vectors_to_pc(posture_vectors(motion, self.joints_, self.translation_scale))
 
     def to_rotations(self, pcs: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """PC values (T, k) -> (local quaternions (T, J, 4), root positions (T, 3) in cm)
         (Fig. 1, right to left; Eq. 3 as the exponential map)."""
         v = self.pc_to_vectors(np.atleast_2d(pcs))
-        T, m = v.shape[0], self.joints.size
-        rot = np.broadcast_to(self.base_rotations, (T, *self.base_rotations.shape)).copy()
-        rot[:, self.joints] = rotvec_to_quat(v[:, : 3 * m].reshape(T, m, 3))
+        T, m = v.shape[0], self.joints_.size
+        rot = np.broadcast_to(self.base_rotations_, (T, *self.base_rotations_.shape)).copy()
+        rot[:, self.joints_] = rotvec_to_quat(v[:, : 3 * m].reshape(T, m, 3))
         return rot, v[:, 3 * m :] / self.translation_scale
 
     def reconstruct(self, pcs: np.ndarray, skeleton: Skeleton, fps: float) -> Motion:

@@ -149,7 +149,7 @@ def fit_idle_model(
     first = next(iter(train.values()))[0][1]
     joint_map.validate(first.skeleton, source="idle: joint map")
     motions = [m for clips in train.values() for _, m in clips]
-    pca = PosturePCA.fit(motions, settings.translation_scale)
+    pca = PosturePCA(settings.translation_scale).fit(motions)
     recordings, databases = {}, {}
     for subject, clips in train.items():
         recordings[subject] = [analyse_recording(m, pca, joint_map, str(row["clip_id"])) for row, m in clips]

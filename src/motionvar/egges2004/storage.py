@@ -71,11 +71,11 @@ def save_idle_model(path: str | Path, model: IdleModel) -> list[Path]:
     returns both paths. A failed write leaves no file."""
     pca = model.pca
     arrays = {
-        "pca.joints": pca.joints,
+        "pca.joints": pca.joints_,
         "pca.mean": pca.mean_,
         "pca.components": pca.components_,
         "pca.explained_variance": pca.explained_variance_,
-        "pca.base_rotations": pca.base_rotations,
+        "pca.base_rotations": pca.base_rotations_,
     }
     subjects = []
     for i, (s, db) in enumerate(model.databases.items()):
@@ -159,9 +159,8 @@ def load_idle_model(path: str | Path) -> IdleModel:
     arrays, settings = load_model(path, kind=KIND)
     source = model_base(path)
     try:
-        pca = PosturePCA(
+        pca = PosturePCA(settings["translation_scale"], arrays["pca.joints"]).set_fitted(
             arrays["pca.joints"],
-            settings["translation_scale"],
             arrays["pca.mean"],
             arrays["pca.components"],
             arrays["pca.explained_variance"],

@@ -251,7 +251,7 @@ def method_sequences(
     krig = mk05_kriging(settings).fit(five)
     rbf = rose98_rbf(settings).fit(five)
     seqs = example_pose_sequences(five)
-    codec = PoseCodec.fit(np.concatenate(seqs))
+    codec = PoseCodec().fit(np.concatenate(seqs))
     gplvm = BayesianGPLVM(settings.gplvm_latent_dim, max_iter=settings.gplvm_iterations, random_state=seed).fit(
         np.concatenate([codec.encode(r) for r in seqs])[:: settings.gplvm_frame_step]
     )

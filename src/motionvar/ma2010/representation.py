@@ -158,38 +158,39 @@ class ClipSet:
         )
 
 
-@dataclass(frozen=True)
 class ClipCodec:
     """Clip <-> feature vector for a subset of joints, optionally with the clip's key
     times (timing, for the inverse time warp; encoded by ``key_timing``,
     :func:`.correspondence.encode_key_times`) and root height curve (Sec. 6.3, behaviours
-    with flight phases). Layout: [tangents (T*|I|*3), key times (K), root height (T)]."""
+    with flight phases). Layout: [tangents (T*|I|*3), key times (K), root height (T)]. A scikit-learn-style estimator:
+    ``ClipCodec(joints, ...).fit(clips)`` learns ``reference_``, the (T, J, 4) per-frame mean rotations of
+    the examples."""
 
-    reference: np.ndarray  # (T, J, 4) per-frame mean rotations of the examples
-    joints: np.ndarray
-    timing: bool = False
-    root_height: bool = False
-    key_timing: str = Ma2010Settings.key_timing
-
-    @classmethod
-    def fit(
-        cls,
-        clips: ClipSet,
+    def __init__(
+        self,
         joints: np.ndarray,
         timing: bool = False,
         root_height: bool = False,
         key_timing: str = Ma2010Settings.key_timing,
-    ) -> "ClipCodec":
-        reference = mean_rotation(clips.rotations, axis=0)
-        return cls(reference, np.asarray(joints, dtype=np.int64), timing, root_height, key_timing)
+    ) -> None:
+        self.joints = np.asarray(joints, dtype=np.int64)
+        self.timing, self.root_height, self.key_timing = timing, root_height, key_timing
+
+    def fit(self, clips: ClipSet) -> ClipCodec:
+        return self.set_fitted(mean_rotation(clips.rotations, axis=0))
+
+    def set_fitted(self, reference: np.ndarray) -> ClipCodec:
+        """Set the learned reference rotations (:meth:`fit`, or a saved model's); returns self."""
+        self.reference_ = reference
+        return self
 
     @property
     def n_frames(self) -> int:
-        return self.reference.shape[0]
+        return self.reference_.shape[0]
 
     def encode(self, clips: ClipSet) -> np.ndarray:
         """(N, D) feature vectors."""
-        v = to_tangent(clips.rotations[:, :, self.joints], self.reference[None, :, self.joints])
+        v = to_tangent(clips.rotations[:, :, self.joints], self.reference_[None, :, self.joints])
         parts = [v.reshape(clips.n_clips, -1)]
         if self.timing:
             parts.append(encode_key_times(clips.key_times, self.key_timing))
@@ -203,7 +204,7 @@ class ClipCodec:
         M, T, n_j = features.shape[0], self.n_frames, len(self.joints)
         n_rot = T * n_j * 3
         v = features[:, :n_rot].reshape(M, T, n_j, 3)
-        rot = from_tangent(v, self.reference[None, :, self.joints])
+        rot = from_tangent(v, self.reference_[None, :, self.joints])
         pos = n_rot
         keys = height = None
         if self.timing:
@@ -213,24 +214,22 @@ class ClipCodec:
         return rot, keys, height
 
 
-@dataclass(frozen=True)
 class PoseCodec:
     """Single poses <-> vectors: tangent vectors of every joint about its mean rotation over
-    all frames of the examples (J * 3 values), for pose-based models (GPLVM, DBN)."""
+    all frames of the examples (J * 3 values), for pose-based models (GPLVM, DBN). A
+    scikit-learn-style estimator: ``PoseCodec().fit(rotations)`` learns ``reference_`` (J, 4)."""
 
-    reference: np.ndarray  # (J, 4)
-
-    @classmethod
-    def fit(cls, rotations: np.ndarray) -> "PoseCodec":
+    def fit(self, rotations: np.ndarray) -> PoseCodec:
         """From example rotations (..., J, 4) (all leading axes are frames)."""
         q = np.asarray(rotations, dtype=float)
-        return cls(mean_rotation(q.reshape(-1, *q.shape[-2:]), axis=0))
+        self.reference_ = mean_rotation(q.reshape(-1, *q.shape[-2:]), axis=0)
+        return self
 
     def encode(self, rotations: np.ndarray) -> np.ndarray:
         """(T, J, 4) -> (T, J*3)."""
-        return to_tangent(rotations, self.reference).reshape(len(rotations), -1)
+        return to_tangent(rotations, self.reference_).reshape(len(rotations), -1)
 
     def decode(self, vectors: np.ndarray) -> np.ndarray:
         """(T, J*3) -> (T, J, 4)."""
         v = np.asarray(vectors, dtype=float).reshape(len(vectors), -1, 3)
-        return from_tangent(v, self.reference)
+        return from_tangent(v, self.reference_)

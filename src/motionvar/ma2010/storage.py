@@ -109,7 +109,7 @@ def save_style_variation_model(
         arrays[f"network.{node}.weights"] = m.weights
         nodes[node] = {"parents": list(m.parents), "mu": m.mu, "sigma2": m.sigma2}
     for g, (codec, krig) in model.interpolators_.items():
-        arrays[f"codec.{g}.reference"] = codec.reference
+        arrays[f"codec.{g}.reference"] = codec.reference_
         arrays[f"codec.{g}.joints"] = codec.joints
         for k in _KRIGING_ARRAYS:
             arrays[f"kriging.{g}.{k}"] = getattr(krig, k)
@@ -197,12 +197,11 @@ def load_style_variation_model(path: str | Path) -> SavedStyleModel:
         model.interpolators_ = {}
         for g, spec in info["interpolators"].items():
             codec = ClipCodec(
-                arrays[f"codec.{g}.reference"],
                 arrays[f"codec.{g}.joints"],
                 spec["timing"],
                 spec["root_height"],
                 spec.get("key_timing", "absolute"),  # files written before the setting: absolute
-            )
+            ).set_fitted(arrays[f"codec.{g}.reference"])
             model.interpolators_[g] = (codec, _kriging(arrays, g, spec))
         jm = JointMap.from_dict(info["joint_map"], origin=f"{source}.json")
         return SavedStyleModel(

@@ -154,8 +154,8 @@ class StyleVariationModel:
         self.interpolators_: dict[str, tuple[ClipCodec, UniversalKriging]] = {}
         for g, joints in self.groups.items():
             lead = g == self.timing_group_
-            codec = ClipCodec.fit(
-                clips, joints, timing=lead, root_height=lead and self.flight, key_timing=self.key_timing
+            codec = ClipCodec(joints, timing=lead, root_height=lead and self.flight, key_timing=self.key_timing).fit(
+                clips
             )
             x = np.concatenate([clips.style, self.xi_[g][:, None]], axis=1)
             krig = UniversalKriging(

@@ -9,7 +9,7 @@ Typical use (one primitive, clips resampled to the canonical 60 frames)::
     s = StyleSettings()                                        # the thesis' values (Sec. 5.4.1)
     layout = style_joints(skeleton, joint_map)                 # 21 joints (Sec. 5.2)
     windows = sliding_windows([motion_features(m, layout) for m in all_clips], 60, 30)
-    scaler = FeatureScaler.fit(windows, layout.n_joints)
+    scaler = FeatureScaler(layout.n_joints).fit(windows)
     ae, hist = train_autoencoder(scaler.transform(windows), s.autoencoder, s.seed)
     space = FeatureSpace(ae, scaler)                           # Eq. 5.1-5.2
     maps = space.encode(motions_features(neutral_clips, layout))

@@ -239,33 +239,41 @@ def sliding_windows(clips: Sequence[np.ndarray], size: int, stride: int) -> np.n
     return np.concatenate(out).astype(np.float32)
 
 
-@dataclass
 class FeatureScaler:
-    """Per-channel mean and a pooled scale per channel group (the thesis does not say
-    how features were normalised; as Holden et al. 2016, positions share one standard
-    deviation so that the pose's geometry is kept, the two ground-velocity channels
-    another, the yaw rate a third)."""
+    """Per-channel mean and a pooled scale per channel group, a scikit-learn-style estimator:
+    ``FeatureScaler(n_joints).fit(features)``, then ``transform`` and ``inverse`` (the thesis
+    does not say how features were normalised; as Holden et al. 2016, positions share one standard
+    deviation so that the pose's geometry is kept, the two ground-velocity channels another, the
+    yaw rate a third).
 
-    mean: np.ndarray
-    std: np.ndarray
+    Parameters: ``n_joints`` (the features' 3 * n_joints position channels come first), ``floor``
+    (the least scale). Learned by :meth:`fit`: ``mean_`` and ``std_``, (C,) float32."""
 
-    @classmethod
-    def fit(cls, features: np.ndarray, n_joints: int, floor: float = 1e-6) -> "FeatureScaler":
+    def __init__(self, n_joints: int, floor: float = 1e-6) -> None:
+        self.n_joints, self.floor = n_joints, floor
+
+    def fit(self, features: np.ndarray) -> FeatureScaler:
         """From features (..., C) pooled over all leading axes."""
         x = np.asarray(features, dtype=float).reshape(-1, features.shape[-1])
         mean = x.mean(axis=0)
         dev = x - mean
-        groups = [slice(0, 3 * n_joints), slice(3 * n_joints, 3 * n_joints + 2), slice(3 * n_joints + 2, None)]
+        n = self.n_joints
+        groups = [slice(0, 3 * n), slice(3 * n, 3 * n + 2), slice(3 * n + 2, None)]
         std = np.empty_like(mean)
         for g in groups:
-            std[g] = max(float(np.sqrt((dev[:, g] ** 2).mean())), floor)
-        return cls(mean=mean.astype(np.float32), std=std.astype(np.float32))
+            std[g] = max(float(np.sqrt((dev[:, g] ** 2).mean())), self.floor)
+        return self.set_fitted(mean.astype(np.float32), std.astype(np.float32))
+
+    def set_fitted(self, mean: np.ndarray, std: np.ndarray) -> FeatureScaler:
+        """Set the learned mean and scale (:meth:`fit`, or a saved model's); returns self."""
+        self.mean_, self.std_ = mean, std
+        return self
 
     def transform(self, features: np.ndarray) -> np.ndarray:
-        return ((features - self.mean) / self.std).astype(np.float32)
+        return ((features - self.mean_) / self.std_).astype(np.float32)
 
     def inverse(self, scaled: np.ndarray, out: np.ndarray | None = None) -> np.ndarray:
         """Features in the data's units (float64) of scaled ones: scaled * std + mean,
         written into ``out`` (float64, scaled's shape) when given, without temporaries."""
-        out = np.multiply(scaled, self.std, out=out, dtype=np.float64)
-        return np.add(out, self.mean, out=out)
+        out = np.multiply(scaled, self.std_, out=out, dtype=np.float64)
+        return np.add(out, self.mean_, out=out)

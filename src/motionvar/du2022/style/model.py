@@ -65,9 +65,9 @@ class FeatureSpace:
             {
                 "kind": AUTOENCODER_KIND,
                 "hparams": self.ae.hparams,
-                "scaler_dtype": str(np.asarray(self.scaler.mean).dtype),
-                "scaler_mean": np.asarray(self.scaler.mean).tolist(),
-                "scaler_std": np.asarray(self.scaler.std).tolist(),
+                "scaler_dtype": str(np.asarray(self.scaler.mean_).dtype),
+                "scaler_mean": np.asarray(self.scaler.mean_).tolist(),
+                "scaler_std": np.asarray(self.scaler.std_).tolist(),
             },
         )
 
@@ -78,8 +78,9 @@ class FeatureSpace:
         ae.load_state_dict(state)
         ae.eval()
         dtype = np.dtype(settings["scaler_dtype"])
-        scaler = FeatureScaler(
-            mean=np.asarray(settings["scaler_mean"], dtype=dtype), std=np.asarray(settings["scaler_std"], dtype=dtype)
+        mean = np.asarray(settings["scaler_mean"], dtype=dtype)
+        scaler = FeatureScaler(n_joints=(len(mean) - 3) // 3).set_fitted(
+            mean, np.asarray(settings["scaler_std"], dtype=dtype)
         )
         return cls(ae=ae, scaler=scaler)
 

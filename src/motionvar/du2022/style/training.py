@@ -397,7 +397,7 @@ def fit_feature_space(
             len(dataset),
             ", ".join(layout.names),
         )
-        scaler = FeatureScaler.fit(windows, layout.n_joints)
+        scaler = FeatureScaler(layout.n_joints).fit(windows)
         ae, history = train_autoencoder(scaler.transform(windows), ae_settings, seed)
         space = FeatureSpace(ae, scaler)
         history["windows"] = len(windows)

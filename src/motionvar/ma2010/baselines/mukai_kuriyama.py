@@ -45,7 +45,7 @@ class StyleClipInterpolation:
         of one walk: one kernel at their mean style, :meth:`.rbf.RBFInterpolation.fit`); Kriging
         takes every clip as it is."""
         joints = np.arange(clips.skeleton.n_joints)
-        self.codec_ = ClipCodec.fit(clips, joints, timing=True, root_height=self.flight, key_timing=self.key_timing)
+        self.codec_ = ClipCodec(joints, timing=True, root_height=self.flight, key_timing=self.key_timing).fit(clips)
         self.n_keys_ = len(clips.reference_keys)
         self.reference_keys_ = clips.reference_keys
         y = self.codec_.encode(clips)

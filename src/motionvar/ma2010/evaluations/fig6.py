@@ -50,7 +50,7 @@ def least_squares_clips(
     """Whole clips at styles c (M, d) from a linear least-squares fit on style alone (the
     trend of universal Kriging without its residual interpolation): the reference that
     tells whether Kriging or RBF interpolate anything beyond a hyperplane."""
-    codec = ClipCodec.fit(train, np.arange(train.skeleton.n_joints), timing=True, key_timing=key_timing)
+    codec = ClipCodec(np.arange(train.skeleton.n_joints), timing=True, key_timing=key_timing).fit(train)
     sd = train.style.std(axis=0)
     mean, scale = train.style.mean(axis=0), np.where(sd > 1e-12, sd, 1.0)  # standardized, as the interpolators
     design = np.column_stack([np.ones(train.n_clips), (train.style - mean) / scale])

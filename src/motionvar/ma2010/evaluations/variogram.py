@@ -78,7 +78,7 @@ def variogram_fits(walks: WalkCycles, settings: Ma2010Settings) -> EvaluationRes
     model = walks.fit_model(settings)
     krigs: dict[str, UniversalKriging] = {g: model.interpolators_[g][1] for g in GROUP_ORDER}
     # MK05's clip vectors (:mod:`..baselines.mukai_kuriyama`: every joint and the key times) over style alone
-    codec = ClipCodec.fit(clips, np.arange(clips.skeleton.n_joints), timing=True, key_timing=settings.key_timing)
+    codec = ClipCodec(np.arange(clips.skeleton.n_joints), timing=True, key_timing=settings.key_timing).fit(clips)
     style_only = UniversalKriging(variogram_model, variogram_scale=variogram_scale)
     krigs[STYLE_ONLY] = style_only.fit(clips.style, codec.encode(clips))
     source = getattr(walks, "source_clips", None)  # each cycle's walk (capture)
