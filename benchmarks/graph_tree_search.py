@@ -70,9 +70,9 @@ def main() -> None:
 
     jm = cmu_joint_map()
     clips = align_motions(dense_pick_segments(args.subjects, 0, 5)[0], jm)
-    prim = MotionPrimitive.fit(
-        clips, "pick_reach", PrimitiveOptions(n_components=20, sfpca_max_iter=0, gmm_components=(1, 4))
-    )
+    prim = MotionPrimitive(
+        "pick_reach", PrimitiveOptions(n_components=20, sfpca_max_iter=0, gmm_components=(1, 4))
+    ).fit(clips)
     S = prim.sample(args.samples, 0)
     hand = jm.index(prim.skeleton, "right_hand")
     last = prim.n_frames - 1

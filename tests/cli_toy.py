@@ -74,7 +74,7 @@ def _graph(models):
 
     opt = PrimitiveOptions(n_basis=8, n_components=5, gmm_components=(1, 2), sfpca_max_iter=0)
     for k, name in enumerate(("walk_leftStance", "walk_rightStance")):
-        MotionPrimitive.fit(toy_clips(10, seed=k), name, opt).save(models / "du2022" / "graph" / name)
+        MotionPrimitive(name, opt).fit(toy_clips(10, seed=k)).save(models / "du2022" / "graph" / name)
     graph = MorphableGraph(
         {"walk_leftStance": {"walk_rightStance": 3}, "walk_rightStance": {"walk_leftStance": 3}},
         {"walk_leftStance": 2},

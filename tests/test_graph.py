@@ -65,12 +65,12 @@ def clips():
 
 @pytest.fixture(scope="module")
 def prim(clips):
-    return MotionPrimitive.fit(clips, "walk_leftStance", OPT)
+    return MotionPrimitive("walk_leftStance", OPT).fit(clips)
 
 
 @pytest.fixture(scope="module")
 def right(clips):
-    return MotionPrimitive.fit(clips[::-1], "walk_rightStance", OPT)
+    return MotionPrimitive("walk_rightStance", OPT).fit(clips[::-1])
 
 
 @pytest.fixture(scope="module")
@@ -159,9 +159,9 @@ def test_primitive_save_load_roundtrip(prim, tmp_path):
 
 def test_primitive_bad_input(clips, tmp_path):
     with pytest.raises(ValueError, match="at least 3 clips"):
-        MotionPrimitive.fit(clips[:2], "x", OPT)
+        MotionPrimitive("x", OPT).fit(clips[:2])
     with pytest.raises(ValueError, match="gmm_components"):
-        MotionPrimitive.fit(clips, "x", PrimitiveOptions(gmm_components=(3, 1)))
+        MotionPrimitive("x", PrimitiveOptions(gmm_components=(3, 1))).fit(clips)
     with pytest.raises(ValueError, match="not a readable motion primitive"):
         MotionPrimitive.load(tmp_path / "missing")
 
@@ -697,7 +697,7 @@ def test_fig4_9_coverage_of_the_training_clips(prim, dataset):
 
 
 def test_fig4_10_follows_path_and_reaches(prim, right, clips, dataset, tmp_path):
-    pick = MotionPrimitive.fit(clips[8:], "pick_reach", OPT)  # the dataset's pick_reach clips
+    pick = MotionPrimitive("pick_reach", OPT).fit(clips[8:])  # the dataset's pick_reach clips
     models = {"walk_leftStance": prim, "walk_rightStance": right, "pick_reach": pick}
     synthesis = {"path": [[0.0, 0.0], [200.0, 0.0]], "reach_targets": 2, "tree_samples": 300, "max_nfev": 30}
     synthesis.update(reach_offset_cm=1.0, reach_range_samples=2000)  # the toy's hand range is nearly a line
@@ -784,7 +784,7 @@ def test_fig4_10_training_latents_and_targets(clips, dataset):
     position and within the reach bound of a natural sample's hand (inside the range)."""
     from motionvar.du2022.graph.evaluations.fig4_10 import _reach_targets
 
-    pick = MotionPrimitive.fit(clips[8:], "pick_reach", OPT)
+    pick = MotionPrimitive("pick_reach", OPT).fit(clips[8:])
     assert np.allclose(pick.training_latents(clips[8:]), pick.training_latent_, atol=1e-9)
     with pytest.raises(ValueError, match="toy.npz: the 8 clips of pick_reach are not the ones"):
         pick.training_latents(clips[:8], "toy.npz")
@@ -833,7 +833,7 @@ def test_sec4_6_1_model_size_at_half_of_the_clips(clips, dataset, tmp_path):
     assert not np.array_equal(half_clip_indices(9, 0), half_clip_indices(9, 1))
     picks, _ = primitive_clips(dataset, "pick_reach")
     walks, _ = primitive_clips(dataset, "walk_leftStance")
-    models = {"pick_reach": MotionPrimitive.fit(picks, "pick_reach", OPT), "walk_leftStance": prim_of(walks)}
+    models = {"pick_reach": MotionPrimitive("pick_reach", OPT).fit(picks), "walk_leftStance": prim_of(walks)}
     sizes = {n: sum(f.stat().st_size for f in m.save(tmp_path / n)) for n, m in models.items()}
     fitted = fit_half(models, {"pick_reach": picks, "walk_leftStance": walks}, 0)
     assert list(fitted) == ["pick_reach"]  # 4 walks: a half of 2 cannot be fitted
@@ -860,7 +860,7 @@ def test_sec4_6_1_model_size_at_half_of_the_clips(clips, dataset, tmp_path):
 
 
 def prim_of(motions):
-    return MotionPrimitive.fit(motions, "walk_leftStance", OPT)
+    return MotionPrimitive("walk_leftStance", OPT).fit(motions)
 
 
 def test_settings_have_one_owner():

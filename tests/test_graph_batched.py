@@ -36,7 +36,7 @@ KINDS = ("position", "orientation", "pose")
 
 @pytest.fixture(scope="module")
 def prim():
-    return MotionPrimitive.fit(toy_clips(16), "walk_leftStance", OPT)
+    return MotionPrimitive("walk_leftStance", OPT).fit(toy_clips(16))
 
 
 @pytest.fixture(scope="module")

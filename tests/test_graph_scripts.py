@@ -131,7 +131,7 @@ def test_compactness_refits_half_of_the_clips(tmp_path):
         )
     )
     save_dataset(d, clips, meta)
-    model = MotionPrimitive.fit(clips, "walk_leftStance", SMALL)
+    model = MotionPrimitive("walk_leftStance", SMALL).fit(clips)
     model.save(tmp_path / "walk_leftStance")
     out, sm = _compactness_rule(tmp_path, [tmp_path / "walk_leftStance.npz"], d / "clips.npz")
     script("du2022_sec4_6_1").main(sm)
@@ -148,7 +148,7 @@ def test_compactness_refits_half_of_the_clips(tmp_path):
 
 
 def test_compactness_dense_model_needs_dense_clips(tmp_path, prep_dir, capsys):
-    model = MotionPrimitive.fit(toy_clips(4), "pick_reach_dense", SMALL)
+    model = MotionPrimitive("pick_reach_dense", SMALL).fit(toy_clips(4))
     model.save(tmp_path / "pick_reach_dense")
     out, sm = _compactness_rule(tmp_path, [tmp_path / "pick_reach_dense.npz"], prep_dir / "clips.npz")
     with pytest.raises(SystemExit) as exc:

@@ -135,6 +135,6 @@ def test_graph_and_style_clips_name_the_clip(tmp_path):
     ):
         graph_clips(data, "walk_leftStance", source="prep/clips.npz")
     with pytest.raises(ValueError, match="warp_to_median: clips walk_leftStance #2 \\(1 frame"):
-        MotionPrimitive.fit([data.motion(i) for i in range(4)], "walk_leftStance")
+        MotionPrimitive("walk_leftStance").fit([data.motion(i) for i in range(4)])
     with pytest.raises(ValueError, match="resample_motion: clip sliver_07 has 1 frame"):
         style_clips(data, "walk_leftStance", "neutral", 16)

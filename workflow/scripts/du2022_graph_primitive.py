@@ -16,7 +16,7 @@ def main(snakemake) -> None:
     # the dense-grid picks (du2022_graph_dense_picks) are pick_reach clips modelled as pick_reach_dense
     clips = snakemake.input.clips
     motions, _ = primitive_clips(dataset(clips), name.removesuffix("_dense"), source=clips)
-    model = MotionPrimitive.fit(motions, name, options)
+    model = MotionPrimitive(name, options).fit(motions)
     model.save(snakemake.output.model)
     logging.info(
         "%s: %d clips, %d latent dimensions, %d Gaussians (scores %s), canonical %d frames",

@@ -224,19 +224,25 @@ def _gmm_from_arrays(weights: np.ndarray, means: np.ndarray, covariances: np.nda
 
 class MotionPrimitive:
     """A motion primitive M(s): latent vector s -> motion (Sec. 4.4.1), with density p(s)
-    (Eq. 4.1). Build with :meth:`fit`; see the module docstring for the steps.
+    (Eq. 4.1); a scikit-learn-style estimator: ``MotionPrimitive(name, options).fit(motions)``
+    (see the module docstring for the steps).
 
-    Attributes (fitted): ``name``, ``skeleton`` (names, parents, mean bone offsets),
-    ``fps``, ``n_frames`` (canonical timeline), ``basis``, ``mean_`` (K, D + 1) mean
-    coefficients of Y'(t), ``weights_`` (D + 1,) function weights (SFPCA's, then the time
-    function's), ``components_`` (n, K (D + 1)) principal axes, ``explained_variance_ratio_``,
-    ``gmm_`` (scikit-learn GaussianMixture), ``gmm_scores_`` (K -> BIC/AIC),
-    ``training_latent_`` (N, n) training scores (not saved: the model holds no data).
+    Parameters: ``name``, ``options`` (:class:`PrimitiveOptions`). Learned by :meth:`fit`:
+    ``skeleton`` (names, parents, mean bone offsets), ``fps``, ``n_frames`` (canonical timeline),
+    ``basis``, ``mean_`` (K, D + 1) mean coefficients of Y'(t), ``weights_`` (D + 1,) function
+    weights (SFPCA's, then the time function's), ``components_`` (n, K (D + 1)) principal axes,
+    ``explained_variance_ratio_``, ``gmm_`` (scikit-learn GaussianMixture), ``gmm_scores_``
+    (K -> BIC/AIC), ``training_latent_`` (N, n) training scores (not saved: the model holds no
+    data).
     """
 
-    def __init__(
+    def __init__(self, name: str = "primitive", options: PrimitiveOptions | None = None) -> None:
+        self.name = name
+        self.options = options or PrimitiveOptions()
+        self.training_latent_: np.ndarray | None = None
+
+    def set_fitted(
         self,
-        name: str,
         skeleton: Skeleton,
         fps: float,
         n_frames: int,
@@ -247,9 +253,8 @@ class MotionPrimitive:
         gmm: GaussianMixture,
         explained_variance_ratio: np.ndarray | None = None,
         gmm_scores: dict[int, float] | None = None,
-        options: PrimitiveOptions | None = None,
-    ) -> None:
-        self.name = name
+    ) -> MotionPrimitive:
+        """Set the learned state (:meth:`fit`, or a saved model's, :meth:`load`); returns self."""
         self.skeleton = skeleton
         self.fps = float(fps)
         self.n_frames = int(n_frames)
@@ -264,27 +269,19 @@ class MotionPrimitive:
             else np.asarray(explained_variance_ratio, dtype=float)
         )
         self.gmm_scores_ = dict(gmm_scores or {})
-        self.options = options or PrimitiveOptions()
-        self.training_latent_: np.ndarray | None = None
         self._gram_sqrt, self._gram_isqrt = basis.gram_sqrt()
         K, D1 = self.mean_.shape
         # eigenfunction coefficients of Y'(t), unscaled: (n, K, D + 1)
         self._eig = np.einsum("kl,nld->nkd", self._gram_isqrt, self.components_.reshape(-1, K, D1)) / self.weights_
         self._maps: dict[tuple[int, ...], tuple[np.ndarray, np.ndarray]] = {}
         self._nll_ref: float | None = None
+        return self
 
     # ---- fitting ---------------------------------------------------------------------
-    @classmethod
-    def fit(
-        cls,
-        motions: Sequence[Motion],
-        name: str = "primitive",
-        options: PrimitiveOptions | None = None,
-        clip_ids: Sequence[str] | None = None,
-    ) -> "MotionPrimitive":
+    def fit(self, motions: Sequence[Motion], clip_ids: Sequence[str] | None = None) -> MotionPrimitive:
         """Fit the primitive to aligned clips of one primitive (module docstring, steps 1-4);
         ``clip_ids`` name the clips in errors (else "<name> #<index>")."""
-        opt = options or PrimitiveOptions()
+        opt, name = self.options, self.name
         opt.validate()
         if len(motions) < 3:
             raise ValueError(f"primitive {name}: need at least 3 clips to model; got {len(motions)}")
@@ -314,8 +311,7 @@ class MotionPrimitive:
         reg = opt.reg_covar * float(np.mean(np.var(latent, axis=0)))
         gmm, scores = select_gmm(latent, opt.gmm_components, opt.gmm_criterion, reg, opt.seed)
         sk = motions[0].skeleton.with_offsets(fd.offsets.mean(axis=0))
-        model = cls(
-            name,
+        self.set_fitted(
             sk,
             motions[0].fps,
             n_ref,
@@ -326,10 +322,9 @@ class MotionPrimitive:
             gmm,
             explained_variance_ratio=evr,
             gmm_scores=scores,
-            options=opt,
         )
-        model.training_latent_ = latent
-        return model
+        self.training_latent_ = latent
+        return self
 
     # ---- latent space ----------------------------------------------------------------
     @property
@@ -508,8 +503,7 @@ class MotionPrimitive:
         opts["gmm_components"] = tuple(opts["gmm_components"])
         sk = Skeleton(names=tuple(meta["joint_names"]), parents=a["parents"], offsets=a["offsets"])
         gmm = _gmm_from_arrays(a["gmm_weights"], a["gmm_means"], a["gmm_covariances"])
-        return cls(
-            meta["name"],
+        return cls(meta["name"], PrimitiveOptions(**opts)).set_fitted(
             sk,
             meta["fps"],
             meta["n_frames"],
@@ -520,5 +514,4 @@ class MotionPrimitive:
             gmm,
             explained_variance_ratio=a["explained_variance_ratio"],
             gmm_scores={int(k): v for k, v in meta["gmm_scores"].items()},
-            options=PrimitiveOptions(**opts),
         )

@@ -62,7 +62,7 @@ def fit_half(
     for name, model in models.items():
         idx = half_clip_indices(len(clips[name]), seed)
         if len(idx) >= MIN_FIT_CLIPS:
-            out[name] = (idx, MotionPrimitive.fit([clips[name][i] for i in idx], name, model.options))
+            out[name] = (idx, MotionPrimitive(name, model.options).fit([clips[name][i] for i in idx]))
     return out
 
 
