@@ -217,23 +217,25 @@ def ev_benchmark(rule_name, extra=""):
     return f"results/{{dataset}}/benchmarks/{rule_name}.tsv"
 
 
-# GIF path pattern -> (paper, caption, labels): the report shows HTML pages of them
+# GIF path pattern -> (page rule, category, caption, labels): the report shows HTML pages of them
 # (rules gif_page_* in report.smk), since Snakemake's report cannot display a GIF itself.
 GIF_PAGES = {}
 
 
-def in_report(path, paper, caption, **labels):
+def in_report(path, paper, caption, page="", **labels):
     """``path`` as a report output of ``paper`` (a key of PAPER_CATEGORY, or "summary"),
     subcategory the dataset, with ``labels`` shown as columns of the report's table.
 
     A ``.gif`` stays a plain output; the report gets ``<path>.html``, a page that plays
-    it (same caption, category and labels), built by a rule of report.smk and added to
-    the default target."""
+    it (same caption, category and labels), built by rule ``page`` (``gif_page_<what>``, made
+    in report.smk) and added to the default target."""
     category = SUMMARY_CATEGORY if paper == "summary" else PAPER_CATEGORY[paper]
     if path.endswith(".gif"):
         if path in GIF_PAGES:
             raise ValueError(f"{path} given to in_report twice")
-        GIF_PAGES[path] = (category, caption, labels)
+        if not page.startswith("gif_page_"):
+            raise ValueError(f"{path}: a GIF needs the name of its page's rule, page='gif_page_<what>'")
+        GIF_PAGES[path] = (page, category, caption, labels)
         return path
     return report(
         path, caption=caption, category=category, subcategory="{dataset}",

@@ -130,6 +130,7 @@ add_to_evaluation(
             "results/{dataset}/figures/du2022_fig4_10.gif",
             "du2022",
             "../report/du2022_fig4_10.rst",
+            page="gif_page_du2022_fig4_10",
             figure="Fig. 4.10",
             kind="animation",
         )

@@ -175,12 +175,19 @@ add_to_evaluation("du2022_table5_2", extra=(STYLE_TRAINING_FIGURE,))
 add_to_evaluation(
     "du2022_fig5_4",
     outputs={
-        f"gif_{group}": in_report(
-            f"results/{{dataset}}/figures/du2022_fig5_4_{group}.gif",
+        "gif_neutral": in_report(
+            "results/{dataset}/figures/du2022_fig5_4_neutral.gif",
             "du2022",
             "../report/du2022_fig5_4.rst",
-            figure=f"Fig. {figure} animation",
-        )
-        for group, figure in (("neutral", "5.4"), ("styles", "5.5"))
+            page="gif_page_du2022_fig5_4_neutral",
+            figure="Fig. 5.4 animation",
+        ),
+        "gif_styles": in_report(
+            "results/{dataset}/figures/du2022_fig5_4_styles.gif",
+            "du2022",
+            "../report/du2022_fig5_4.rst",
+            page="gif_page_du2022_fig5_4_styles",
+            figure="Fig. 5.5 animation",
+        ),
     },
 )

@@ -84,6 +84,7 @@ rule egges2004_animation:
             "results/{dataset}/figures/egges2004_idle.gif",
             "egges2004",
             "../report/egges2004_idle.rst",
+            page="gif_page_egges2004_idle",
             figure="generated idle motion per subject",
             kind="animation",
         ),

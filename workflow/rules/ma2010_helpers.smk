@@ -34,6 +34,7 @@ add_to_evaluation(
     outputs={
         "animation": in_report(
             "results/{dataset}/figures/ma2010_sec7_4.gif", "ma2010", "../report/ma2010_sec7_4.rst",
+            page="gif_page_ma2010_sec7_4",
             figure="Sec. 7.4", kind="animation",
         ),
     },

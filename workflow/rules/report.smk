@@ -69,6 +69,7 @@ rule dataset_animation:
             "results/{dataset}/figures/dataset_animation.gif",
             "data",
             "../report/dataset_animation.rst",
+            page="gif_page_dataset_animation",
             figure="animation, one clip per behaviour",
         ),
     params:
@@ -187,11 +188,10 @@ rule stability_report:
 
 
 # One page per GIF given to in_report (common.smk): the GIF inlined in a small HTML page,
-# which the report shows (it cannot show a GIF file itself). Defined last, after every
-# rule file has registered its GIFs.
-for _gif, (_category, _caption, _labels) in GIF_PAGES.items():
-    _stem = re.sub(r"\W+", "_", os.path.basename(_gif)[: -len(".gif")]).strip("_")
-    _name = f"gif_page_{_stem}"
+# which the report shows (it cannot show a GIF file itself); each rule is named where its GIF
+# is given to in_report (page="gif_page_<what>"). Defined last, after every rule file has
+# registered its GIFs.
+for _gif, (_name, _category, _caption, _labels) in GIF_PAGES.items():
 
     rule:
         name:
