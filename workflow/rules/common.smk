@@ -254,10 +254,10 @@ def gif_pages(dataset):
 
 
 def section_for(section, rule=""):
-    """Config section ``section`` as rule ``rule`` is given it (``params.settings``): without the
-    keys that other evaluations own (``Evaluation.own_keys``), so that an edit of such a key
-    reruns its evaluation alone; the rule's settings class fills them with their defaults, which
-    it never reads."""
+    """Config section ``section`` as it is given to the rule named ``rule`` (``params.settings``),
+    without the keys that other evaluations own (``Evaluation.own_keys``), so that an edit of such
+    a key reruns its evaluation alone; the rule's settings class fills them with their defaults,
+    which it never reads."""
     owned = {k for e in EVALUATIONS.values() if e.section == section and e.name != rule for k in e.own_keys}
     return {k: v for k, v in config[section].items() if k not in owned}
 
