@@ -444,10 +444,9 @@ def _synthesis_time(m: Measurements) -> Judgement:
         measured=f"{sps:.4f} s per s ({1 / sps:.0f}x real time), mean of {m['repeats']} runs (SD "
         f"{m['sd_seconds_per_second']:.4f}), for {m['motion_seconds']:.1f} s from {m['example_cycles']} example "
         f"cycles, on {m['cpu']} ({m['logical_cores']} logical cores)",
-        note="Mean wall-clock time per second of motion of the synthesis call (xi sampling, SVIs, inverse time "
-        "warp, transitions, footskate cleanup) on one core, the data loaded and the model fitted, as the paper "
-        "times synthesis, not training. The paper's average is on 2010 hardware, ours on the CPU named: a sanity "
-        f"check of the cost, not a replication. {PROTOCOL}",
+        note="Mean wall-clock time per second of motion of synthesis (xi sampling, SVIs, inverse time warp, "
+        "transitions, footskate cleanup) on one core, as the paper times it. The paper's is on 2010 hardware, ours on "
+        f"the CPU named: a sanity check, not a replication. {PROTOCOL}",
         value=sps,
         bound=PUBLISHED_SECONDS_PER_SECOND,
         unit="s per s",
