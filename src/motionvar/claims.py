@@ -200,7 +200,7 @@ class Evaluation:
     ``label`` how the report names it (``source`` where empty).
 
     How it runs: ``inputs`` names the input set the workflow loads for it (its files and their
-    loader: ``workflow/rules/<paper>_helpers.smk``, ``workflow/scripts/_inputs.py``), passed to
+    loader: ``add_input_set`` in the paper's rule files, ``workflow/scripts/_evaluation.py``), passed to
     ``measure`` as keyword arguments with ``settings=`` the section's settings (where ``measure``
     takes them); ``measure`` returns an :class:`EvaluationResult` and ``draw`` its figure. Both are
     ``"module:function"`` names, imported when the rule runs (:func:`resolve`). ``table_format``:

@@ -65,7 +65,7 @@ from motionvar.claim_catalog import EVALUATIONS as _DECLARED
 # name -> the library's declaration (motionvar.claims.Evaluation)
 EVALUATIONS = {e.name: e for e in _DECLARED}
 # input set (Evaluation.inputs) -> {input name: path pattern or input function}; loaded for the
-# rule's measuring function by workflow/scripts/_inputs.py
+# rule's measuring function by workflow/scripts/_evaluation.py (LOADERS)
 INPUT_SETS = {}
 # evaluation name -> RuleAdditions
 EVALUATION_ADDITIONS = {}

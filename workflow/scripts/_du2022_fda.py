@@ -15,9 +15,9 @@ def setup_threads(snakemake) -> None:
 
 def canonical(snakemake):
     """The canonical (time-warped) primitives written by rule du2022_fda_canonical."""
-    from motionvar.io import load_dataset
+    from _rule import dataset
 
-    return load_dataset(Path(snakemake.input.clips).parent)
+    return dataset(snakemake.input.clips)
 
 
 def load_curves(paths) -> list[dict]:

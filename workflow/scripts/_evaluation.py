@@ -42,20 +42,14 @@ def evaluate(snakemake) -> Evaluated:
     return Evaluated(result, settings, inputs)
 
 
-def _dataset(path):
-    """The packed dataset whose ``clips.npz`` (or other file) is ``path``."""
-    from motionvar.io import load_dataset
-
-    return load_dataset(Path(path).parent)
-
-
 def ma2010_data(snakemake, settings) -> dict:
-    from _rule import joint_map
+    from _ma2010 import walks_source
+    from _rule import dataset, joint_map
 
     return {
-        "dataset": _dataset(snakemake.input.clips),
+        "dataset": dataset(snakemake.input.clips),
         "joint_map": joint_map(snakemake),
-        "what": f"{snakemake.input.metadata} (config ma2010.walk_styles / walk_variants)",
+        "what": walks_source(snakemake),
     }
 
 
@@ -110,10 +104,10 @@ def du2022_fda_curves(snakemake, settings) -> dict:
 def du2022_fda_sfpca(snakemake, settings) -> dict:
     """The canonical primitives, the chosen basis sizes, the saved SFPCA models."""
     import pandas as pd
-    from _du2022_fda import load_sfpca
+    from _du2022_fda import canonical, load_sfpca
 
     return {
-        "dataset": _dataset(snakemake.input.clips),
+        "dataset": canonical(snakemake),
         "chosen": pd.read_csv(snakemake.input.n_basis),
         "sfpca_models": load_sfpca(snakemake.input.sfpca),
     }
@@ -128,12 +122,12 @@ def du2022_graph_queries(snakemake, settings) -> dict:
 def du2022_graph_models(snakemake, settings) -> dict:
     """The motion primitives, the prep dataset (named ``source`` in errors), the joint map."""
     from _graph import models
-    from _rule import joint_map
+    from _rule import dataset, joint_map
 
     clips = snakemake.input.clips
     return {
         "models": models(snakemake.input.models),
-        "dataset": _dataset(clips),
+        "dataset": dataset(clips),
         "joint_map": joint_map(snakemake),
         "source": clips,
     }

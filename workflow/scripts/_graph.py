@@ -5,13 +5,6 @@ from __future__ import annotations
 from pathlib import Path
 
 
-def dataset(clips_path: str):
-    """The packed dataset whose ``clips.npz`` is ``clips_path``."""
-    from motionvar.io import load_dataset
-
-    return load_dataset(Path(clips_path).parent)
-
-
 def models(paths) -> dict:
     """The motion primitives saved at the ``.npz`` files among ``paths``, by name, in order."""
     from motionvar.du2022.graph import MotionPrimitive
@@ -31,6 +24,8 @@ def model_bytes(paths) -> dict:
 
 def primitive_clips_of(loaded, snakemake) -> dict:
     """The clips of each loaded primitive (prep stage's, or the dense picks' for ``*_dense``)."""
+    from _rule import dataset
+
     from motionvar.du2022.graph.evaluations.sec4_6_1 import clips_by_primitive
 
     prep, dense = snakemake.input.clips, list(snakemake.input.dense_clips)

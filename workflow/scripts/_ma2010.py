@@ -6,6 +6,12 @@ from __future__ import annotations
 WALKS_DTYPES = {"clip_id": str, "subject": str, "source_clip": str}
 
 
+def walks_source(snakemake) -> str:
+    """How errors about the dataset's walking clips name it: its metadata and the config keys
+    that select the walks."""
+    return f"{snakemake.input.metadata} (config ma2010.walk_styles / walk_variants)"
+
+
 def settings(snakemake):
     """The rule's Ma2010Settings, built from its whole config section (params.settings)."""
     from _rule import config_settings

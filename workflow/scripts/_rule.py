@@ -183,6 +183,15 @@ def config_settings(snakemake, section: str):
     return section_settings(section, getattr(params, section) if hasattr(params, section) else params.settings)
 
 
+def dataset(path):
+    """The packed dataset (motionvar.io) whose ``clips.npz`` (or ``metadata.csv``) is ``path``."""
+    from pathlib import Path
+
+    from motionvar.io import load_dataset
+
+    return load_dataset(Path(path).parent)
+
+
 def joint_map(snakemake):
     """The dataset's joint map: the YAML file its config names (``params.joint_map``), or the
     CMU rig's."""

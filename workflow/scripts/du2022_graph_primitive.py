@@ -6,8 +6,7 @@ du2022_graph.model and du2022_graph.seed (params.settings)."""
 def main(snakemake) -> None:
     import logging
 
-    from _graph import dataset
-    from _rule import config_settings
+    from _rule import config_settings, dataset
 
     from motionvar.du2022.graph import MotionPrimitive, PrimitiveOptions, primitive_clips
 

@@ -8,7 +8,7 @@ def main(snakemake) -> None:
     import logging
     from pathlib import Path
 
-    from _ma2010 import settings
+    from _ma2010 import settings, walks_source
     from _rule import joint_map
 
     from motionvar.io import load_dataset
@@ -20,7 +20,7 @@ def main(snakemake) -> None:
         load_dataset(Path(snakemake.input.clips).parent),
         joint_map(snakemake),
         s,
-        what=f"{snakemake.input.metadata} (config ma2010.walk_styles / walk_variants)",
+        what=walks_source(snakemake),
     )
     saved = {k: v for k, v in s.to_dict().items() if k in s.CLIP_KEYS}
     save_model(snakemake.output.clips, clips.to_arrays(), {"kind": CLIPSET_KIND, **saved})
