@@ -38,11 +38,14 @@ PAPER_SECONDS_PER_SECOND = 0.15
 
 def fit_model(data_dir: Path, n_frames: int):
     jm = cmu_joint_map()
-    settings = Ma2010Settings(n_frames=n_frames)  # neutral forward walks, the default variogram
+    settings = Ma2010Settings().replace(clips__n_frames=n_frames)  # neutral forward walks, the default variogram
     clips, table = walk_cycles(load_dataset(data_dir), jm, settings, what=str(data_dir))
     sk = clips.skeleton
     model = StyleVariationModel(
-        jm.group_indices(sk), "lower_first", settings.variogram_model, variogram_scale=settings.variogram_scale
+        jm.group_indices(sk),
+        "lower_first",
+        settings.model.variogram_model,
+        variogram_scale=settings.model.variogram_scale,
     ).fit(clips)
     return model, clips, root_solver(sk, jm), table["subject"].nunique()
 

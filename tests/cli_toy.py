@@ -51,9 +51,9 @@ def _ma2010(ds, models):
             {"clip_id": f"w{i}", "subject": s.subject_id, "behaviour": "walk", "style": "neutral", "variant": "forward"}
         )
     save_dataset(ds / "data", motions, pd.DataFrame(rows))
-    settings = Ma2010Settings(n_frames=32)
+    settings = Ma2010Settings().replace(clips__n_frames=32)
     clips, table = walk_cycles(load_dataset(ds / "data"), JM, settings)
-    walks = WalkCycles(clips, table["subject"].tolist(), JM, root_group=settings.root_group)
+    walks = WalkCycles(clips, table["subject"].tolist(), JM, root_group=settings.model.root_group)
     model = walks.fit_model(settings)
     save_style_variation_model(models / "ma2010" / "style_variation", model, JM, clips.clip_ids, walks.subjects)
 

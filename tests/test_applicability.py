@@ -63,7 +63,9 @@ def test_unmet_names_what_is_missing_and_why():
 
 def test_every_paper_declares_its_evaluations_and_decides_from_the_data():
     reqs = [
-        *ma2010_requirements(Ma2010Settings(walk_styles=("neutral",), walk_variants=("forward",))),
+        *ma2010_requirements(
+            Ma2010Settings().replace(clips__walk_styles=("neutral",), clips__walk_variants=("forward",))
+        ),
         *fda_requirements(
             FdaSettings.from_dict(
                 {"behaviours": ["walk"], "min_clips": 1, "reconstruction": {"primitives": ["walk_leftStance"]}}
@@ -100,7 +102,9 @@ def test_a_rig_without_hands_or_toes_leaves_out_what_needs_them():
     handless = JointMap({s: cmu.joints[s] for s in REQUIRED_JOINTS}, cmu.groups, origin="config/joint_maps/x.yaml")
     assert handless.lacking == ("left_hand", "right_hand", "left_toe", "right_toe") and not handless.has("left_toe")
     reqs = [
-        *ma2010_requirements(Ma2010Settings(walk_styles=("neutral",), walk_variants=("forward",))),
+        *ma2010_requirements(
+            Ma2010Settings().replace(clips__walk_styles=("neutral",), clips__walk_variants=("forward",))
+        ),
         *style_requirements(
             StyleSettings.from_dict(
                 {"styles": ["proud"], "vae_primitives": ["walk_leftStance"], "style_primitives": ["walk_leftStance"]}

@@ -402,7 +402,7 @@ def test_model_rule_scripts_save_what_the_command_loads(tmp_path):
             "ma2010_model",
             input=fake.output,
             output=Named(model=str(out / "style_variation.npz"), settings=str(out / "style_variation.json")),
-            params=Named(settings=options, joint_map=None),
+            params=Named(settings={"model": options}, joint_map=None),
         ),
         script("ma2010_model").main,
     )

@@ -312,5 +312,5 @@ def test_config_readme_is_the_schema_written_out():
     schema = yaml.safe_load(tool.SCHEMA.read_text(encoding="utf-8"))
     text = tool.DOC.read_text(encoding="utf-8")
     assert text == tool.render(schema), "run python tools/config_doc.py"
-    for key in ("ma2010.loo_max_clips", "egges2004.held_out_by", "stability.marks", "datasets.<name>.unit_cm"):
+    for key in ("ma2010.fig6.max_clips", "egges2004.held_out_by", "stability.marks", "datasets.<name>.unit_cm"):
         assert f"`{key}`" in text, key

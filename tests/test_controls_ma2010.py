@@ -211,12 +211,14 @@ def sec7_4_measurements(ours: str = "shaky", rivals: str = "examples") -> dict:
     def sequences(kind: str) -> list:
         return list(examples[:2]) if kind == "examples" else [shaky(m) for m in examples[:2]]
 
-    settings = Ma2010Settings(perlin_amplitude_sweep_rad=(0.1, 0.3), dbn_max_parents_sweep=(8,))
+    settings = Ma2010Settings().replace(
+        sec7_4__perlin_amplitude_sweep_rad=(0.1, 0.3), sec7_4__dbn_max_parents_sweep=(8,)
+    )
     out = {v: sequences(rivals) for v in method_variants(settings)}
     out |= {v: [examples[0], examples[0]] for v in out if family(v) in ("rbf", "kriging")}
     out["ours"] = sequences(ours)
     ref = NaturalnessReference.from_examples(
-        examples, solver, settings.contact_height_cm, settings.discontinuity_factor
+        examples, solver, settings.sec7_4.contact_height_cm, settings.sec7_4.discontinuity_factor
     )
     full = min(m.duration for motions in out.values() for m in motions)
     table = pd.DataFrame(sequence_rows(out, examples, ref, full))

@@ -48,12 +48,14 @@ from motionvar.ma2010.variation import determinative_joints, joint_importance, j
 
 JM = cmu_joint_map()
 DEFAULTS = Ma2010Settings()
-KEYFRAMES = (DEFAULTS.keyframe_prominence, DEFAULTS.keyframe_min_separation_s)  # extract_cycles' thresholds
+KEYFRAMES = (DEFAULTS.clips.keyframe_prominence, DEFAULTS.clips.keyframe_min_separation_s)  # extract_cycles' thresholds
 
 
 def svi_model(groups, structure="auto"):
-    """The model with the default variogram (config ma2010.variogram_model, variogram_scale)."""
-    return StyleVariationModel(groups, structure, DEFAULTS.variogram_model, variogram_scale=DEFAULTS.variogram_scale)
+    """The model with the default variogram (config ma2010.model.variogram_model, variogram_scale)."""
+    return StyleVariationModel(
+        groups, structure, DEFAULTS.model.variogram_model, variogram_scale=DEFAULTS.model.variogram_scale
+    )
 
 
 @pytest.fixture(scope="module")

@@ -46,8 +46,8 @@ from motionvar.ma2010.examples import WalkCycles, joint_groups, walk_cycles
 from motionvar.ma2010.settings import Ma2010Settings
 
 JM = cmu_joint_map()
-TOY = Ma2010Settings(n_frames=24)  # neutral forward walks, a short timeline
-LINEAR = TOY.replace(variogram_model="linear")
+TOY = Ma2010Settings().replace(clips__n_frames=24)  # neutral forward walks, a short timeline
+LINEAR = TOY.replace(model__variogram_model="linear")
 
 
 def toy_dataset(path, styles, n_cycles=3):
@@ -109,8 +109,8 @@ def test_walk_cycles_cut_walks_into_cycles(tmp_path):
 def test_walk_cycles_name_the_problem(tmp_path, styles, n_cycles, expected):
     data = toy_dataset(tmp_path, styles, n_cycles)
     with pytest.raises(ValueError, match=expected) as err:
-        walk_cycles(data, JM, TOY, what="meta.csv (config ma2010.walk_styles)")
-    assert str(err.value).startswith("meta.csv (config ma2010.walk_styles)")
+        walk_cycles(data, JM, TOY, what="meta.csv (config ma2010.clips.walk_styles)")
+    assert str(err.value).startswith("meta.csv (config ma2010.clips.walk_styles)")
 
 
 def test_walk_cycles_need_one_subject_per_cycle(walks):
@@ -122,7 +122,7 @@ def test_fig3_step_phases_and_key_frames(tmp_path):
     assert np.allclose(step_phases(np.array([5, 15, 40]), np.array([0, 10, 20])), [0.5, 0.5])
     assert circular_sd([0.2, 0.2, 0.2]) == pytest.approx(0.0, abs=1e-6) and circular_sd([0.0, 0.5]) > 0.3
     data = toy_dataset(tmp_path, ["neutral"] * 2)
-    result = fig3_keyframes(data, JM, TOY.replace(fig3_max_clips=1))
+    result = fig3_keyframes(data, JM, TOY.replace(fig3__max_clips=1))
     assert set(result.table["behaviour"]) == {"walk"} and set(result.figure["shown"]) == {"walk"}
     assert set(result.table["extremum"]) == {"max", "min"} and (result.table["part"] == "lower").all()
     # no run clips: the run claim is not applicable, and the walk's claim judged on its own scan
@@ -136,7 +136,7 @@ def test_fig3_step_phases_and_key_frames(tmp_path):
 
 
 def test_fig6_leave_one_out(walks):
-    result = fig6_leave_one_out(walks, LINEAR.replace(loo_max_clips=2))
+    result = fig6_leave_one_out(walks, LINEAR.replace(fig6__max_clips=2))
     t = result.table
     folds, summary = t[t["kind"] == "fold"], t[t["kind"] == "summary"]
     assert len(folds) == 2 and t.columns[0] == "kind" and {"clip_id", "subject", "source_clip", "closing"} <= set(t)
@@ -154,10 +154,10 @@ def test_fig6_leave_one_out(walks):
     ]
     assert "steady cycles" in result.claims[0].measured and "upper_body" in result.claims[0].note
     stride, kriging = result.claims
-    # the verdict on the network's conditional-mean xi (ma2010.loo_xi), the others as diagnostics
+    # the verdict on the network's conditional-mean xi (ma2010.fig6.xi), the others as diagnostics
     assert stride.value == folds["ours_mean_xi_stride_error_cm"].max() and (stride.bound, stride.unit) == (1.2, "cm")
     assert "conditional-mean xi" in stride.note and {"ours_own_xi", "ours_sampled_xi"} <= set(summary["method"])
-    own = fig6_leave_one_out(walks, LINEAR.replace(loo_max_clips=2, loo_xi="own"), ablation=False)
+    own = fig6_leave_one_out(walks, LINEAR.replace(fig6__max_clips=2, fig6__xi="own"), ablation=False)
     assert own.claims[0].value == own.table["ours_own_xi_stride_error_cm"].max()
     # two folds: too few for a paired test to reach p < 0.05
     assert kriging.verdict == "not testable" and "fewer than 5 differing folds" in kriging.note
@@ -190,7 +190,7 @@ def test_fig6_compares_with_the_strides_asked_for(walks):
     """Fig. 6 compares each synthesized cycle's strides with the strides asked for (the held-out
     cycle's style, which the same measure gave it); the held-out cycle's own clip on the common
     timeline, retimed and measured alike, is a diagnostic row."""
-    lower_first = LINEAR.replace(structure="lower_first", loo_max_clips=2)
+    lower_first = LINEAR.replace(model__structure="lower_first", fig6__max_clips=2)
     result = fig6_leave_one_out(walks, lower_first, ablation=False)
     folds = result.table[result.table["kind"] == "fold"]
     validation = folds[["validation_left_cm", "validation_right_cm"]].to_numpy()
@@ -211,7 +211,9 @@ def test_mk05_rbf_reaches_the_held_out_walks_and_the_paired_test_decides(walks):
     distance to the nearest other example, here walk) reaches the held-out walks between the
     others, where its clips differ from least squares; where no kernel reaches, it is the
     least-squares fit. The claim is a one-sided Wilcoxon signed-rank test over the folds (p < 0.05)."""
-    result = fig6_leave_one_out(walks, LINEAR.replace(structure="lower_first", loo_unit="walk"), ablation=False)
+    result = fig6_leave_one_out(
+        walks, LINEAR.replace(model__structure="lower_first", fig6__unit="walk"), ablation=False
+    )
     folds = result.table[result.table["kind"] == "fold"]
     mk05 = result.measurements["mk05"]
     assert mk05["reached"] == {name: int(folds[f"{name}_reaches"].sum()) for name in ("rbf", "rbf_cycles")}
@@ -233,7 +235,7 @@ def test_mk05_rbf_reaches_the_held_out_walks_and_the_paired_test_decides(walks):
 
 
 def test_root_group_choice_moves_only_the_root_rotation(walks):
-    """Config ma2010.root_group: the root joint (0, the pelvis) goes with the legs by default
+    """Config ma2010.model.root_group: the root joint (0, the pelvis) goes with the legs by default
     (as every shipped joint map says), or with the upper body; nothing else moves."""
     sk = walks.clips.skeleton
     legs, upper = joint_groups(JM, sk, "legs"), joint_groups(JM, sk, "upper_body")
@@ -246,7 +248,7 @@ def test_root_group_choice_moves_only_the_root_rotation(walks):
     assert np.array_equal(legs["left_arm"], JM.group_indices(sk)["left_arm"])
     assert sk.names[0] in JM.groups["legs"]  # the shipped CMU map: the root with the legs
     moved = WalkCycles(walks.clips, walks.subjects, JM, "toy walks", root_group="upper_body")
-    lower_first = LINEAR.replace(structure="lower_first")
+    lower_first = LINEAR.replace(model__structure="lower_first")
     assert 0 in moved.groups["upper_body"] and 0 in walks.groups["legs"]
     with pytest.raises(ValueError, match="root_group must be one of"):
         joint_groups(JM, sk, "left_arm")
@@ -273,24 +275,24 @@ def test_whole_walk_folds_never_train_on_a_sibling_cycle():
 
 
 def test_fig6_whole_walk_folds_leave_out_every_sibling(walks):
-    settings = LINEAR.replace(structure="lower_first", loo_max_clips=3, loo_unit="walk")
+    settings = LINEAR.replace(model__structure="lower_first", fig6__max_clips=3, fig6__unit="walk")
     result = fig6_leave_one_out(walks, settings, ablation=False)
     folds = result.table[result.table["kind"] == "fold"]
     size = pd.Series(walks.source_clips).value_counts()
     assert np.array_equal(folds["n_train"], walks.clips.n_clips - size[folds["source_clip"]].to_numpy())
     assert "ours_own_xi_root_upper_body_stride_error_cm" not in folds
-    per_cycle = fig6_leave_one_out(walks, settings.replace(loo_unit="cycle"), ablation=False).table
+    per_cycle = fig6_leave_one_out(walks, settings.replace(fig6__unit="cycle"), ablation=False).table
     assert np.all(per_cycle.loc[per_cycle["kind"] == "fold", "n_train"] == walks.clips.n_clips - 1)
 
 
 def test_trend_rcond_reaches_every_trend_fit(walks):
-    """ma2010.trend_rcond is the cut-off of every trend hyperplane: ours (the model's), and in
+    """ma2010.model.trend_rcond is the cut-off of every trend hyperplane: ours (the model's), and in
     Fig. 6's folds Kriging's, the RBFs' linear part and the least-squares reference. On a design
     whose styles lie on a line but for one example, a cut of 0.3 drops the thin direction, so
     the least-squares clips off the line differ from the literal fit's; on the line they agree."""
     from motionvar.ma2010.evaluations.fig6 import least_squares_clips
 
-    assert walks.fit_model(LINEAR.replace(trend_rcond=0.3)).trend_rcond == 0.3
+    assert walks.fit_model(LINEAR.replace(model__trend_rcond=0.3)).trend_rcond == 0.3
     clips = walks.clips
     t = np.linspace(-1.0, 1.0, clips.n_clips)
     on_line = np.column_stack([60.0 + 5.0 * t, 62.0 + 5.0 * t])
@@ -308,11 +310,11 @@ def test_trend_rcond_reaches_every_trend_fit(walks):
         ).max()
     )
     with pytest.raises(ValueError, match="trend_rcond"):
-        LINEAR.replace(trend_rcond=1.0)
+        LINEAR.replace(model__trend_rcond=1.0)
 
 
 def test_fig7b_reliability(walks, model):
-    result = fig7b_reliability(walks, model, TOY.replace(reliability_grid=3, reliability_margin=0.2))
+    result = fig7b_reliability(walks, model, TOY.replace(fig7b__grid=3, fig7b__margin=0.2))
     t = result.table
     assert len(t) == 9 and np.all(t["nearest_example_cm"] >= 0) and np.all(t["examples_line_cm"] >= 0)
     assert t["on_examples_line"].any() and not t["on_examples_line"].all()
@@ -370,7 +372,7 @@ def test_fig7b_asymmetry_floor_is_taken_off_the_off_line_points():
 
 def test_fig8_variants_vary_and_interpolations_do_not(walks, model):
     settings = LINEAR.replace(
-        fig8_variants=3, fig8_draws=40, fig8_bootstrap=200, seed=1, spread_ratio_bounds=(0.1, 10.0)
+        fig8__variants=3, fig8__draws=40, fig8__bootstrap=200, seed=1, fig8__spread_ratio_bounds=(0.1, 10.0)
     )
     result = fig8_fixed_style(walks, model, settings)
     t = result.table
@@ -400,7 +402,7 @@ def test_fig8_is_not_testable_without_enough_examples_near_the_style(walks, mode
     from motionvar.applicability import unmet_reason
     from motionvar.ma2010.requirements import requirements
 
-    settings = LINEAR.replace(fig8_variants=2, seed=1)
+    settings = LINEAR.replace(fig8__variants=2, seed=1)
     claim = fig8_fixed_style(walks, model, settings).claims[0]
     assert claim.verdict == "not testable" and "2 from 2 subject" in claim.note
     one = WalkCycles(walks.clips, ["a"] * walks.clips.n_clips, JM, "one walker", root_group="legs")
@@ -417,13 +419,13 @@ def test_fig8_is_not_testable_without_enough_examples_near_the_style(walks, mode
 
 def test_sec7_4_comparison(walks):
     settings = LINEAR.replace(
-        comparison_examples=3,
-        comparison_seconds=2.0,
-        comparison_sequences=2,
-        gplvm_iterations=2,
-        gplvm_frame_step=4,
-        perlin_amplitude_sweep_rad=(0.05, 0.2),
-        dbn_max_parents_sweep=(4,),
+        sec7_4__examples=3,
+        sec7_4__seconds=2.0,
+        sec7_4__sequences=2,
+        sec7_4__gplvm_iterations=2,
+        sec7_4__gplvm_frame_step=4,
+        sec7_4__perlin_amplitude_sweep_rad=(0.05, 0.2),
+        sec7_4__dbn_max_parents_sweep=(4,),
     )
     result = sec7_4_comparison(walks, settings)
     t = result.table
@@ -588,15 +590,28 @@ def test_sec7_4_claims_judge_the_examples_range():
 )
 def test_sec7_4_sweeps_name_the_bad_key(key, value, expected):
     with pytest.raises(ValueError, match=expected):
-        Ma2010Settings(**{key: value})
+        Ma2010Settings().replace(**{f"sec7_4__{key}": value})
 
 
-def test_sec7_4_former_keys_name_the_sweeps():
-    with pytest.raises(ValueError, match="ma2010.perlin_amplitude_rad is now ma2010.perlin_amplitude_sweep_rad"):
-        Ma2010Settings.from_dict({"perlin_amplitude_rad": 0.1})
-    with pytest.raises(ValueError, match="ma2010.dbn_max_parents is now ma2010.dbn_max_parents_sweep"):
-        Ma2010Settings.from_dict({"dbn_max_parents": 8})
-    assert Ma2010Settings.from_dict({"perlin_amplitude_sweep_rad": [0, 0.3]}).perlin_amplitude_sweep_rad == (0, 0.3)
+@pytest.mark.parametrize(
+    "given, expected",
+    [
+        ({"loo_max_clips": 3}, "ma2010.loo_max_clips is now ma2010.fig6.max_clips"),
+        ({"timing_repeats": 2}, "ma2010.timing_repeats is now ma2010.sec8.repeats"),
+        ({"perlin_amplitude_rad": 0.1}, "ma2010.perlin_amplitude_rad is now ma2010.sec7_4.perlin_amplitude_sweep_rad"),
+        (
+            {"sec7_4": {"dbn_max_parents": 8}},
+            "ma2010.sec7_4.dbn_max_parents is now ma2010.sec7_4.dbn_max_parents_sweep",
+        ),
+    ],
+)
+def test_former_keys_name_their_place_in_the_nested_section(given, expected):
+    """The section is nested per stage; a key of the flat section (or an older name) stops the
+    run naming the key that replaced it."""
+    with pytest.raises(ValueError, match=expected):
+        Ma2010Settings.from_dict(given)
+    nested = Ma2010Settings.from_dict({"sec7_4": {"perlin_amplitude_sweep_rad": [0, 0.3]}, "fig6": {"max_clips": 3}})
+    assert nested.sec7_4.perlin_amplitude_sweep_rad == (0, 0.3) and nested.fig6.max_clips == 3
 
 
 def test_ours_draws_xi_once_per_sequence_or_per_clip(walks, model):
@@ -614,7 +629,7 @@ def test_ours_draws_xi_once_per_sequence_or_per_clip(walks, model):
 
 
 def test_a_sequence_breaks_down_at_its_first_failed_synthesis(walks, model):
-    """Under ma2010.key_timing absolute a predicted clip may have key times that do not
+    """Under ma2010.model.key_timing absolute a predicted clip may have key times that do not
     increase: Sec. 7.4's sequence stops before it (and so scores as broken down) instead of
     clamping it into a zero-length segment; a first clip that fails leaves one frame."""
     from motionvar.ma2010.comparison import until_failed
@@ -644,7 +659,7 @@ def test_a_sequence_breaks_down_at_its_first_failed_synthesis(walks, model):
 def test_sec8_timing_with_a_fake_clock(walks, model):
     """Sec. 8 reports the mean over the timing runs (the paper: "on average"), not the best."""
     ticks = iter([0.0, 0.5, 10.0, 11.0])  # the first run takes 0.5 s, the second 1 s
-    settings = TOY.replace(timing_seconds=2.0, timing_repeats=2)
+    settings = TOY.replace(sec8__seconds=2.0, sec8__repeats=2)
     result = sec8_timing(walks, model, settings, clock=lambda: float(next(ticks)))
     row = result.table.iloc[0]
     lo, hi = row["min_seconds_per_second"], row["max_seconds_per_second"]

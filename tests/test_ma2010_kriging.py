@@ -168,11 +168,11 @@ def test_variogram_evaluation_table_and_figure(tmp_path):
         }
     )
     save_dataset(tmp_path, motions, meta)
-    settings = Ma2010Settings(n_frames=24)
+    settings = Ma2010Settings().replace(clips__n_frames=24)
     clips, table = walk_cycles(load_dataset(tmp_path), jm, settings)
     walks = WalkCycles(clips, table["subject"].tolist(), jm, source="toy walks", root_group="legs")
     for model, scale in (("auto", "sd"), ("linear", "none")):
-        result = variogram_fits(walks, settings.replace(variogram_model=model, variogram_scale=scale))
+        result = variogram_fits(walks, settings.replace(model__variogram_model=model, model__variogram_scale=scale))
         t = result.table
         assert result.claims == []  # a diagnostic: the paper states nothing about the variogram
         assert set(t["group"]) == {*GROUP_ORDER, STYLE_ONLY} and {"all pairs", "old"} <= set(t["series"])

@@ -17,7 +17,9 @@ from motionvar.io import save_dataset
 # the scripts import their loaders as Snakemake runs them, from their own folder
 rule_scripts.helper_module("_ma2010")
 
-SETTINGS = {"walk_styles": ["neutral"], "walk_variants": ["forward"], "n_frames": 24}  # config section ma2010
+SETTINGS = {
+    "clips": {"walk_styles": ["neutral"], "walk_variants": ["forward"], "n_frames": 24}
+}  # config section ma2010
 
 
 def toy_dataset(tmp_path, styles, n_cycles=3):
@@ -65,7 +67,7 @@ def test_clips_script_writes_the_cycles_as_a_model_file(tmp_path):
 
 @pytest.mark.parametrize(
     "styles, n_cycles, expected",
-    [(["proud", "proud"], 3, "config ma2010.walk_styles"), (["neutral"], 1.2, "need at least 3")],
+    [(["proud", "proud"], 3, "config ma2010.clips.walk_styles"), (["neutral"], 1.2, "need at least 3")],
 )
 def test_clips_script_names_the_problem(tmp_path, capsys, styles, n_cycles, expected):
     out, fake = clips_fake(tmp_path, toy_dataset(tmp_path, styles, n_cycles))
@@ -88,7 +90,7 @@ def test_evaluation_scripts_reject_a_stale_cycle_table(tmp_path, capsys):
         input=Named(clips=str(out / "walk_clips.npz"), table=str(out / "walk_cycles.csv")),
         output=Named(table=str(ev / "t.csv"), figure=str(ev / "f.png"), claims=str(ev / "c.json")),
         params=Named(
-            settings={**SETTINGS, "variogram_model": "linear", "timing_seconds": 2.0, "timing_repeats": 1},
+            settings={**SETTINGS, "model": {"variogram_model": "linear"}, "sec8": {"seconds": 2.0, "repeats": 1}},
             joint_map=None,
         ),
     )

@@ -100,7 +100,10 @@ NARROW_EDITS = {
         "du2022_fig5_4",
         {"du2022_style_autoencoder", "du2022_style_vae", "du2022_style_cvae", "du2022_table5_1", "applicability"},
     ),
-    "ma2010:\n  timing_repeats: 2\n": ("ma2010_sec8", {"ma2010_clips", "ma2010_model", "ma2010_fig6", "applicability"}),
+    "ma2010:\n  sec8: {repeats: 2}\n": (
+        "ma2010_sec8",
+        {"ma2010_clips", "ma2010_model", "ma2010_fig6", "applicability"},
+    ),
 }
 
 

@@ -102,3 +102,16 @@ def test_merged_section_round_trips_through_its_settings(config_name, section):
     cfg = validated(SHIPPED[config_name]())
     built = settings_class(section).from_dict(cfg[section])
     assert built.to_dict() == cfg[section]
+
+
+def test_replace_reaches_into_a_subsection_by_double_underscore():
+    """``replace(sub__key=...)`` changes one key of a subsection (scikit-learn's nested-parameter
+    names), leaving the rest and the original as they were."""
+    from motionvar.ma2010.settings import Ma2010Settings
+
+    before = Ma2010Settings()
+    after = before.replace(fig6__max_clips=3, model__structure="lower_first", seed=2)
+    assert (after.fig6.max_clips, after.model.structure, after.seed) == (3, "lower_first", 2)
+    assert after.fig6.unit == before.fig6.unit and before.fig6.max_clips == 0
+    with pytest.raises(TypeError):
+        before.replace(fig6__no_such_key=1)

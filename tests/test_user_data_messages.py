@@ -77,13 +77,13 @@ def test_walk_cycles_say_what_the_walks_lack(tmp_path):
         "[0-9.]+-[0-9.]+ s, median [0-9.]+ s\\); need at least 3.*"
         "two foot strikes of each foot",
     ):
-        walk_cycles(walks(tmp_path, n_cycles=0.3), JM, Ma2010Settings(n_frames=24), what="meta.csv")
+        walk_cycles(walks(tmp_path, n_cycles=0.3), JM, Ma2010Settings().replace(clips__n_frames=24), what="meta.csv")
 
 
 def test_sec7_4_needs_cycles_of_two_subjects(tmp_path):
-    settings = Ma2010Settings(n_frames=24)
+    settings = Ma2010Settings().replace(clips__n_frames=24)
     clips, table = walk_cycles(walks(tmp_path, n_cycles=3, n_clips=2), JM, settings)
-    one = WalkCycles(clips, ["solo"] * clips.n_clips, JM, source="my walks", root_group=settings.root_group)
+    one = WalkCycles(clips, ["solo"] * clips.n_clips, JM, source="my walks", root_group=settings.model.root_group)
     with pytest.raises(
         NotApplicable,
         match=f"my walks: 1 subject\\(s\\) among the {clips.n_clips} walking cycles; Sec. "

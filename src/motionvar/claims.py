@@ -205,10 +205,10 @@ class Evaluation:
     takes them); ``measure`` returns an :class:`EvaluationResult` and ``draw`` its figure. Both are
     ``"module:function"`` names, imported when the rule runs (:func:`resolve`). ``table_format``:
     the table's float format (pandas ``float_format``; empty: repr), ``dpi``: the figure's,
-    ``mem_mb``: the rule's memory. ``own_keys``: the keys of its section that only this evaluation
-    reads; no other rule is given them, so an edit of one reruns this evaluation alone. An evaluation with outputs besides its table, figure and claims
-    (a GIF) has its own script, ``workflow/scripts/<name>.py``, which writes them after
-    ``_rule.write_declared``."""
+    ``mem_mb``: the rule's memory. ``own_keys``: the keys (or subsections) of its section that only
+    this evaluation reads; no other rule is given them, so an edit of one reruns this evaluation
+    alone. An evaluation with outputs besides its table, figure and claims (a GIF) has its own
+    script, ``workflow/scripts/<name>.py``, which writes them after ``_rule.write_declared``."""
 
     name: str
     source: str

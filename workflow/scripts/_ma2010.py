@@ -9,7 +9,7 @@ WALKS_DTYPES = {"clip_id": str, "subject": str, "source_clip": str}
 def walks_source(snakemake) -> str:
     """How errors about the dataset's walking clips name it: its metadata and the config keys
     that select the walks."""
-    return f"{snakemake.input.metadata} (config ma2010.walk_styles / walk_variants)"
+    return f"{snakemake.input.metadata} (config ma2010.clips.walk_styles / walk_variants)"
 
 
 def settings(snakemake):
@@ -21,7 +21,7 @@ def settings(snakemake):
 
 def load_walks(snakemake, settings):
     """The cycles of input ``clips`` (ClipSet model file) with the subjects and walks of input
-    ``table``; the root rotation in the joint group ``settings.root_group``."""
+    ``table``; the root rotation in the joint group ``settings.model.root_group``."""
     import pandas as pd
     from _rule import joint_map
 
@@ -40,6 +40,6 @@ def load_walks(snakemake, settings):
         table["subject"].tolist(),
         joint_map(snakemake),
         source=snakemake.input.table,
-        root_group=settings.root_group,
+        root_group=settings.model.root_group,
         source_clips=table["source_clip"].tolist(),
     )

@@ -22,8 +22,7 @@ def main(snakemake) -> None:
         s,
         what=walks_source(snakemake),
     )
-    saved = {k: v for k, v in s.to_dict().items() if k in s.CLIP_KEYS}
-    save_model(snakemake.output.clips, clips.to_arrays(), {"kind": CLIPSET_KIND, **saved})
+    save_model(snakemake.output.clips, clips.to_arrays(), {"kind": CLIPSET_KIND, **s.clips.to_dict()})
     table.to_csv(snakemake.output.table, index=False)
     logging.info("%d cycles of %d subjects", clips.n_clips, table["subject"].nunique())
 

@@ -1,5 +1,5 @@
 """Rule ma2010_model (Ma 2010 Sec. 5-6): the style-and-variation model fitted once on all
-the walking cycles (config ma2010.structure, variogram_model, root_group) and saved as
+the walking cycles (config ma2010.model: structure, variogram_model, root_group) and saved as
 .npz + .json (motionvar.ma2010.storage), for the `motionvar ma2010` command."""
 
 
@@ -19,7 +19,7 @@ def main(snakemake) -> None:
         walks.joint_map,
         walks.clips.clip_ids,
         walks.subjects,
-        settings={k: getattr(s, k) for k in ("structure", "variogram_model", "root_group")},
+        settings={k: getattr(s.model, k) for k in ("structure", "variogram_model", "root_group")},
     )
     logging.info(
         "%d cycles of %d subjects; structure %s; style range %s - %s",

@@ -21,7 +21,7 @@ def main(snakemake) -> None:
         [result.figure["sequences"][v][0] for v in shown],
         labels=[labels[v] for v in shown],
         out_fps=report.animation_fps,
-        max_seconds=s.animation_seconds,
+        max_seconds=s.sec7_4.animation_seconds,
         panel_px=report.animation_panel_px,
     )
 

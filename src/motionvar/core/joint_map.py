@@ -9,7 +9,7 @@ the legs together because foot constraints matter, and Sec. 6.3 already treats t
 root's height with the legs (A). Measured: with the root in D, a xi_D two SDs from its mean
 tilts the pelvis ~1 degree, drops a swinging foot below the stance foot and breaks the
 stride of a synthesized walk (Fig. 6). Ma 2010's evaluations can move it back
-(``motionvar.ma2010.examples.joint_groups``, config ``ma2010.root_group``).
+(``motionvar.ma2010.examples.joint_groups``, config ``ma2010.model.root_group``).
 """
 
 from __future__ import annotations

@@ -57,7 +57,14 @@ class Settings:
         return {f.name: _plain(getattr(self, f.name)) for f in dataclasses.fields(self)}
 
     def replace(self: S, **changes: Any) -> S:
-        """A copy with ``changes`` (dataclasses.replace)."""
+        """A copy with ``changes`` (dataclasses.replace); ``sub__key=value`` changes ``key`` of
+        subsection ``sub``, as scikit-learn's ``set_params`` names a nested parameter."""
+        nested: dict[str, dict[str, Any]] = {}
+        for name in [k for k in changes if "__" in k]:
+            sub, key = name.split("__", 1)
+            nested.setdefault(sub, {})[key] = changes.pop(name)
+        for sub, inner in nested.items():
+            changes[sub] = changes.get(sub, getattr(self, sub)).replace(**inner)
         return dataclasses.replace(self, **changes)
 
 

@@ -12,7 +12,7 @@ EVALUATIONS: tuple[Evaluation, ...] = (
         inputs="ma2010_data",
         measure="motionvar.ma2010.evaluations.fig3:fig3_keyframes",
         draw="motionvar.ma2010.figures:draw_fig3",
-        own_keys=("fig3_phase_sd", "fig3_max_clips"),
+        own_keys=("fig3",),
     ),
     Evaluation(
         "ma2010_fig6",
@@ -23,7 +23,7 @@ EVALUATIONS: tuple[Evaluation, ...] = (
         measure="motionvar.ma2010.evaluations.fig6:fig6_leave_one_out",
         draw="motionvar.ma2010.figures:draw_fig6",
         mem_mb=4000,
-        own_keys=("loo_max_clips", "loo_unit", "loo_xi"),
+        own_keys=("fig6",),
     ),
     Evaluation(
         "ma2010_variogram",
@@ -42,7 +42,7 @@ EVALUATIONS: tuple[Evaluation, ...] = (
         inputs="ma2010_walks_model",
         measure="motionvar.ma2010.evaluations.fig7b:fig7b_reliability",
         draw="motionvar.ma2010.figures:draw_fig7b",
-        own_keys=("reliability_grid", "reliability_margin"),
+        own_keys=("fig7b",),
     ),
     Evaluation(
         "ma2010_fig8",
@@ -52,7 +52,7 @@ EVALUATIONS: tuple[Evaluation, ...] = (
         inputs="ma2010_walks_model",
         measure="motionvar.ma2010.evaluations.fig8:fig8_fixed_style",
         draw="motionvar.ma2010.figures:draw_fig8",
-        own_keys=("fig8_variants", "fig8_draws", "fig8_bootstrap", "spread_ratio_bounds"),
+        own_keys=("fig8",),
     ),
     Evaluation(
         "ma2010_sec7_4",
@@ -63,22 +63,7 @@ EVALUATIONS: tuple[Evaluation, ...] = (
         measure="motionvar.ma2010.evaluations.sec7_4:sec7_4_comparison",
         draw="motionvar.ma2010.figures:draw_sec7_4",
         mem_mb=4000,
-        own_keys=(
-            "comparison_examples",
-            "comparison_seconds",
-            "comparison_sequences",
-            "comparison_xi",
-            "comparison_landing",
-            "perlin_amplitude_sweep_rad",
-            "perlin_frequency_hz",
-            "gplvm_latent_dim",
-            "gplvm_iterations",
-            "gplvm_frame_step",
-            "dbn_max_parents_sweep",
-            "contact_height_cm",
-            "discontinuity_factor",
-            "animation_seconds",
-        ),
+        own_keys=("sec7_4",),
     ),
     Evaluation(
         "ma2010_sec8",
@@ -88,6 +73,6 @@ EVALUATIONS: tuple[Evaluation, ...] = (
         inputs="ma2010_walks_model",
         measure="motionvar.ma2010.evaluations.sec8:sec8_timing",
         draw="motionvar.ma2010.figures:draw_sec8",
-        own_keys=("timing_seconds", "timing_repeats"),
+        own_keys=("sec8",),
     ),
 )

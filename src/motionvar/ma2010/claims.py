@@ -84,7 +84,7 @@ def _gait_phase(behaviour: str) -> Callable[[Measurements], Judgement]:
     return judge
 
 
-# --- Fig. 6 (ma2010_fig6): measurements ``stride_error_cm`` (ours with the xi of ``loo_xi`` against the
+# --- Fig. 6 (ma2010_fig6): measurements ``stride_error_cm`` (ours with the xi of ``fig6.xi`` against the
 # strides asked for, every held-out cycle: max, mean, n, n_within), ``summary`` (table method -> cycles "all" /
 # "steady" / "closing" -> its summary row), the folds' setup, and ``mk05`` (the paired pose errors of Kriging and
 # RBF over the folds, evaluations.fig6.paired_pose_errors)
@@ -130,7 +130,7 @@ def _failure_causes(m: Measurements) -> str:
 
 def _loo_stride(m: Measurements) -> Judgement:
     """Fig. 6, Sec. 7.1: in leave-one-out cross validation every stride error of ours (the style
-    asked for, xi by ``ma2010.loo_xi``) against the strides asked for is within the published
+    asked for, xi by ``ma2010.fig6.xi``) against the strides asked for is within the published
     1.2 cm (partial: within twice that)."""
     err, root, alt, xi = m["stride_error_cm"], m["root_group"], m["ablation_root_group"], m["loo_xi"]
     ablation = f"the root in {alt}" if alt is not None else "no ablation"
@@ -456,7 +456,7 @@ def _synthesis_time(m: Measurements) -> Judgement:
 
 _FIG3_SOURCE = "Fig. 3, Sec. 4.1-4.2"
 _FIG3_PUBLISHED = "each local extremum of S_M(t) is a key frame, used to cut and time-warp clips (no number given)"
-_FIG3_BOUND = "circular SD of the maxima's phase <= fig3_phase_sd (0.05, ours) of a step; partial <= twice that"
+_FIG3_BOUND = "circular SD of the maxima's phase <= fig3.phase_sd (0.05, ours) of a step; partial <= twice that"
 
 
 def _fig3_statement(behaviour: str) -> str:
@@ -587,7 +587,7 @@ CLAIMS: tuple[ClaimSpec, ...] = (
         kind="consistency",
         statement="On average 0.15 s of computation synthesizes 1 s of motion.",
         published=f"{PUBLISHED_SECONDS_PER_SECOND} s per s",
-        bound="mean over timing_repeats runs of seconds of computation per second of motion <= 0.15",
+        bound="mean over sec8.repeats runs of seconds of computation per second of motion <= 0.15",
         judge=_synthesis_time,
     ),
 )

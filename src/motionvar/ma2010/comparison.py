@@ -57,9 +57,9 @@ def method_variants(settings: Ma2010Settings) -> dict[str, str]:
     out: dict[str, str] = {}
     for m in METHODS:
         if m == "perlin":
-            out |= {f"perlin_{a:g}": f"{LABELS[m]} {a:g} rad" for a in settings.perlin_amplitude_sweep_rad}
+            out |= {f"perlin_{a:g}": f"{LABELS[m]} {a:g} rad" for a in settings.sec7_4.perlin_amplitude_sweep_rad}
         elif m == "dbn":
-            out |= {f"dbn_{p}": f"{LABELS[m]} {p} parents" for p in settings.dbn_max_parents_sweep}
+            out |= {f"dbn_{p}": f"{LABELS[m]} {p} parents" for p in settings.sec7_4.dbn_max_parents_sweep}
         else:
             out[m] = LABELS[m]
     return out
@@ -112,7 +112,7 @@ def ours_clips(
 ) -> ClipPrediction:
     """n_clips predicted cycles at one style, xi sampled from the network (Eq. 10) once for
     all of them (``xi_per`` "sequence": one person walks the whole sequence, the cycles are
-    the same) or anew for every cycle ("clip"); config ma2010.comparison_xi (Sec. 7.4 does
+    the same) or anew for every cycle ("clip"); config ma2010.sec7_4.xi (Sec. 7.4 does
     not say)."""
     if xi_per not in XI_DRAWS:
         raise ValueError(f"ours_clips: xi_per must be one of {list(XI_DRAWS)}; got {xi_per!r}")
@@ -125,7 +125,7 @@ def ours_clips(
 
 def until_failed(pred: ClipPrediction) -> ClipPrediction:
     """The clips of ``pred`` before its first failed synthesis (key times that do not increase,
-    possible under ``ma2010.key_timing: absolute``; at least the first clip's first frame): a
+    possible under ``ma2010.model.key_timing: absolute``; at least the first clip's first frame): a
     sequence breaks down there instead of having the clip clamped into a zero-length segment."""
     ok = key_times_increase(pred.key_times)
     if ok.all():
@@ -229,42 +229,44 @@ def dbn_sequence(
 def method_sequences(
     examples: ClipSet, groups: Mapping[str, np.ndarray], solver: RootSolver, settings: Ma2010Settings
 ) -> dict[str, list[Motion]]:
-    """Sec. 7.4: ``settings.comparison_sequences`` sequences of about
-    ``settings.comparison_seconds`` s per method and setting (key of :func:`method_variants`
+    """Sec. 7.4: ``settings.sec7_4.sequences`` sequences of about
+    ``settings.sec7_4.seconds`` s per method and setting (key of :func:`method_variants`
     -> list of Motion, in that order), every method learning from the same ``examples``: ours
     (the model of Sec. 5-6 with ``settings`` structure and variogram, xi sampled once per
-    sequence or per cycle: ``comparison_xi``), Perlin noise (each of
+    sequence or per cycle: ``sec7_4.xi``), Perlin noise (each of
     ``perlin_amplitude_sweep_rad``, ``perlin_frequency_hz``) on the examples concatenated in
     random order, the Bayesian GPLVM (``gplvm_latent_dim``, ``gplvm_iterations``; every
     ``gplvm_frame_step``-th example pose) along a helix, RBF and style-only Kriging at the
     examples' mean style, and the DBN (each of ``dbn_max_parents_sweep``) unrolled (both pose
     models on :class:`PoseCodec` vectors). Clip-based methods land their transitions by
-    ``comparison_landing`` (:func:`.postprocess.landing_frame`). Sequence ``s`` draws from
+    ``sec7_4.landing`` (:func:`.postprocess.landing_frame`). Sequence ``s`` draws from
     ``numpy.random.default_rng([seed, s])``; the settings of a swept method share its draws."""
-    five, k, seconds, seed = examples, settings.comparison_sequences, settings.comparison_seconds, settings.seed
-    xi_per, landing_rule = settings.comparison_xi, settings.comparison_landing
+    five, k, seconds, seed = examples, settings.sec7_4.sequences, settings.sec7_4.seconds, settings.seed
+    xi_per, landing_rule = settings.sec7_4.xi, settings.sec7_4.landing
     fps = five.fps
     style = five.style.mean(axis=0)
     n_clips = clips_for_duration(five, seconds)
     n_frames = int(round(seconds * fps)) + 1
-    ours = style_variation_model(groups, settings.structure, settings).fit(five)
+    ours = style_variation_model(groups, settings.model.structure, settings).fit(five)
     krig = mk05_kriging(settings).fit(five)
     rbf = rose98_rbf(settings).fit(five)
     seqs = example_pose_sequences(five)
     codec = PoseCodec().fit(np.concatenate(seqs))
-    gplvm = BayesianGPLVM(settings.gplvm_latent_dim, max_iter=settings.gplvm_iterations, random_state=seed).fit(
-        np.concatenate([codec.encode(r) for r in seqs])[:: settings.gplvm_frame_step]
-    )
-    dbns = {p: LauDBN(p).fit([codec.encode(r) for r in seqs]) for p in settings.dbn_max_parents_sweep}
+    gplvm = BayesianGPLVM(
+        settings.sec7_4.gplvm_latent_dim, max_iter=settings.sec7_4.gplvm_iterations, random_state=seed
+    ).fit(np.concatenate([codec.encode(r) for r in seqs])[:: settings.sec7_4.gplvm_frame_step])
+    dbns = {p: LauDBN(p).fit([codec.encode(r) for r in seqs]) for p in settings.sec7_4.dbn_max_parents_sweep}
     turns = seconds / float(np.mean(five.key_times[:, -1]))
-    amplitudes = settings.perlin_amplitude_sweep_rad
+    amplitudes = settings.sec7_4.perlin_amplitude_sweep_rad
     out: dict[str, list[Motion]] = {v: [] for v in method_variants(settings)}
     for s in range(k):  # n_sequences sequences per method
         rng = np.random.default_rng([seed, s])
         out["ours"].append(
             covering(lambda n, r: ours_sequence(ours, style, n, solver, r, xi_per, landing_rule), n_clips, seconds, rng)
         )
-        noisy = perlin_sequences(five, n_clips, solver, rng, amplitudes, settings.perlin_frequency_hz, landing_rule)
+        noisy = perlin_sequences(
+            five, n_clips, solver, rng, amplitudes, settings.sec7_4.perlin_frequency_hz, landing_rule
+        )
         for a, m in zip(amplitudes, noisy):
             out[f"perlin_{a:g}"].append(trim(m, seconds))
         out["gplvm"].append(

@@ -39,7 +39,7 @@ class CycleExtraction:
 
 def joint_groups(joint_map: JointMap, skeleton: Skeleton, root_group: str) -> dict[str, np.ndarray]:
     """The four joint groups of Fig. 4 (``JointMap.group_indices``) with the root joint
-    (joint 0, the pelvis) moved into ``root_group`` (config ma2010.root_group, one of
+    (joint 0, the pelvis) moved into ``root_group`` (config ma2010.model.root_group, one of
     :data:`.settings.ROOT_GROUPS`): "legs" (A, what every shipped joint map says) or
     "upper_body" (D). Fig. 4 does not say where the root rotation goes; it tilts the
     pelvis that carries both legs, Sec. 8 keeps the legs together for foot constraints and
@@ -278,14 +278,16 @@ def walk_cycles(
     speed, the two strides and the duration). ValueError naming ``what`` when no clip
     matches or fewer than 3 cycles come out."""
     meta = dataset.metadata
-    idx = rows_matching(meta, behaviour="walk", style=settings.walk_styles, variant=settings.walk_variants, what=what)
+    idx = rows_matching(
+        meta, behaviour="walk", style=settings.clips.walk_styles, variant=settings.clips.walk_variants, what=what
+    )
     motions = [dataset.motion(int(i)) for i in idx]
     cycles, keys, table = collect_cycles(
         motions,
         meta["clip_id"].iloc[idx].tolist(),
         joint_map,
-        settings.keyframe_prominence,
-        settings.keyframe_min_separation_s,
+        settings.clips.keyframe_prominence,
+        settings.clips.keyframe_min_separation_s,
     )
     if len(cycles) < 3:
         seconds = np.array([m.duration for m in motions])
@@ -297,7 +299,7 @@ def walk_cycles(
             "again: two steps, so a clip needs two foot strikes of each foot, a walk of at least ~2 s"
         )
     sk = standard_skeleton([c.skeleton for c in cycles])
-    clips = build_clipset(cycles, keys, sk, joint_map, settings.n_frames, clip_ids=table["clip_id"].tolist())
+    clips = build_clipset(cycles, keys, sk, joint_map, settings.clips.n_frames, clip_ids=table["clip_id"].tolist())
     src = meta.set_index("clip_id").loc[table["source_clip"]]
     table["subject"] = src["subject"].astype(str).to_numpy()
     for col in ("style", "stride_length_cm", "speed_cm_s"):
@@ -321,7 +323,7 @@ class WalkCycles:
     """The walking cycles of a dataset (:func:`walk_cycles`) as the evaluations use them:
     the clips, each cycle's subject and the rig's joint map (``source`` names where they
     came from, for error messages), with the joint groups (:func:`joint_groups`, the root
-    rotation in ``root_group``, config ma2010.root_group) and the root solver derived. ``source_clips`` names each
+    rotation in ``root_group``, config ma2010.model.root_group) and the root solver derived. ``source_clips`` names each
     cycle's walk (the ``source_clip`` column of :func:`walk_cycles`' table); without it,
     the walk is read from the cycle's clip id ("<source>_c<k>", :func:`collect_cycles`)."""
 
@@ -349,4 +351,4 @@ class WalkCycles:
     def fit_model(self, settings: Ma2010Settings) -> StyleVariationModel:
         """The model of Sec. 5-6 fitted to all the cycles, with the structure and variogram of
         ``settings`` ("auto" structure: Fig. 5 by D_l vs D_u of the cycles)."""
-        return style_variation_model(self.groups, settings.structure, settings).fit(self.clips)
+        return style_variation_model(self.groups, settings.model.structure, settings).fit(self.clips)

@@ -296,7 +296,7 @@ class UniversalKriging:
     """Universal Kriging of vector-valued samples s_i (N, D) at parameters x_i (N, p).
 
     ``variogram_model``, ``variogram_scale``, ``variogram_weights``: see the module
-    docstring (config ma2010.variogram_model, variogram_scale; the weights are Cressie's in
+    docstring (config ma2010.model.variogram_model, variogram_scale; the weights are Cressie's in
     every model, "pairs" only in the variogram table's plain fit).
     ``trend_rcond``: singular values of the trend's design [1, c] below ``trend_rcond`` x the
     largest count as zero in the pseudo-inverse (0: numerical precision only, the literal

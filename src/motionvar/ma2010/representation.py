@@ -20,7 +20,7 @@ from ..core.kinematics import fk
 from ..core.quaternions import qexp, qinv, qlog, qmul, qnormalize
 from ..core.skeleton import Skeleton
 from .correspondence import decode_key_times, encode_key_times
-from .settings import Ma2010Settings
+from .settings import ModelSettings
 
 
 def mean_rotation(q: np.ndarray, axis: int = 0) -> np.ndarray:
@@ -171,7 +171,7 @@ class ClipCodec:
         joints: np.ndarray,
         timing: bool = False,
         root_height: bool = False,
-        key_timing: str = Ma2010Settings.key_timing,
+        key_timing: str = ModelSettings.key_timing,
     ) -> None:
         self.joints = np.asarray(joints, dtype=np.int64)
         self.timing, self.root_height, self.key_timing = timing, root_height, key_timing

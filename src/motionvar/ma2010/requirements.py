@@ -46,7 +46,7 @@ TOES = Joints(("left_toe", "right_toe"), "Ma 2010's footskate cleanup stands eac
 def requirements(settings: Ma2010Settings) -> list[Requirement]:
     """One requirement per evaluation: walking clips (``behaviour`` walk) of the settings'
     ``walk_styles`` and ``walk_variants`` (an empty list accepts any)."""
-    walk_styles, walk_variants = settings.walk_styles, settings.walk_variants
+    walk_styles, walk_variants = settings.clips.walk_styles, settings.clips.walk_variants
     styles = "/".join(walk_styles) if walk_styles else "any-style"
     where = {"behaviour": ("walk",), "style": tuple(walk_styles), "variant": tuple(walk_variants)}
     out = []
@@ -60,7 +60,8 @@ def requirements(settings: Ma2010Settings) -> list[Requirement]:
             min_subjects=subjects,
             min_seconds=MIN_WALK_S,
             why="Ma 2010 models the gait cycles of walking (Sec. 4; a cycle needs two foot strikes of each "
-            "foot); set ma2010.walk_styles and ma2010.walk_variants to labels your data has" + WHY.get(ev.name, ""),
+            "foot); set ma2010.clips.walk_styles and ma2010.clips.walk_variants to labels your data has"
+            + WHY.get(ev.name, ""),
         )
         out.append(Requirement.of(ev, (need,), TOES))
     return out

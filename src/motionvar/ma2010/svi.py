@@ -23,7 +23,7 @@ from .keyframes import keyframe_signal
 from .kriging import UniversalKriging
 from .network import LOWER_FIRST, STYLE, UPPER_FIRST, PropagationNetwork, choose_structure
 from .representation import ClipCodec, ClipSet
-from .settings import Ma2010Settings
+from .settings import Ma2010Settings, ModelSettings
 from .variation import determinative_joints, joint_importance, joint_variation, latent_variation
 
 GROUP_ORDER = ("legs", "left_arm", "right_arm", "upper_body")  # A, B, C, D (Fig. 4)
@@ -89,7 +89,7 @@ class StyleVariationModel:
             its examples by :func:`structure_evidence`), "lower_first", "upper_first", or an
             explicit parent mapping.
         variogram_model, variogram_scale: the variogram of each group's Kriging, see
-            :mod:`.kriging` (config ma2010.variogram_model, variogram_scale).
+            :mod:`.kriging` (config ma2010.model.variogram_model, variogram_scale).
         flight: predict the root height curve (behaviours with flight phases, Sec. 6.3).
         trend_rcond: relative cut-off of the pseudo-inverse of each group's Kriging trend
             (Eq. 12-13; :class:`.kriging.UniversalKriging`); 0 is the literal fit.
@@ -106,7 +106,7 @@ class StyleVariationModel:
         *,
         variogram_scale: str,
         trend_rcond: float = 0.0,
-        key_timing: str = Ma2010Settings.key_timing,
+        key_timing: str = ModelSettings.key_timing,
     ):
         self.groups = {g: np.asarray(v, dtype=np.int64) for g, v in groups.items()}
         self.trend_rcond = trend_rcond
@@ -207,13 +207,13 @@ def style_variation_model(
     groups: Mapping[str, np.ndarray], structure: str | Mapping[str, tuple[str, ...]], settings: Ma2010Settings
 ) -> StyleVariationModel:
     """An unfitted :class:`StyleVariationModel` on ``groups`` with ``structure`` and the variogram,
-    trend cut-off and key timing of ``settings`` (config ma2010.variogram_model, variogram_scale,
+    trend cut-off and key timing of ``settings`` (config ma2010.model.variogram_model, variogram_scale,
     trend_rcond, key_timing)."""
     return StyleVariationModel(
         groups,
         structure,
-        settings.variogram_model,
-        variogram_scale=settings.variogram_scale,
-        trend_rcond=settings.trend_rcond,
-        key_timing=settings.key_timing,
+        settings.model.variogram_model,
+        variogram_scale=settings.model.variogram_scale,
+        trend_rcond=settings.model.trend_rcond,
+        key_timing=settings.model.key_timing,
     )

@@ -12,7 +12,7 @@ import numpy as np
 
 from ..kriging import UniversalKriging
 from ..representation import ClipCodec, ClipSet
-from ..settings import Ma2010Settings
+from ..settings import Ma2010Settings, ModelSettings
 from ..svi import ClipPrediction
 from .rbf import RBFInterpolation
 
@@ -29,7 +29,7 @@ class StyleClipInterpolation:
         variogram_scale: str | None,
         flight: bool = False,
         trend_rcond: float = 0.0,
-        key_timing: str = Ma2010Settings.key_timing,
+        key_timing: str = ModelSettings.key_timing,
     ):
         if method not in ("kriging", "rbf"):
             raise ValueError(f"StyleClipInterpolation: method must be 'kriging' or 'rbf'; got {method!r}")
@@ -68,15 +68,15 @@ def mk05_kriging(settings: Ma2010Settings, flight: bool = False) -> StyleClipInt
     variogram, trend cut-off and key timing of ``settings`` (as ours)."""
     return StyleClipInterpolation(
         "kriging",
-        settings.variogram_model,
-        settings.variogram_scale,
+        settings.model.variogram_model,
+        settings.model.variogram_scale,
         flight,
-        settings.trend_rcond,
-        settings.key_timing,
+        settings.model.trend_rcond,
+        settings.model.key_timing,
     )
 
 
 def rose98_rbf(settings: Ma2010Settings, flight: bool = False) -> StyleClipInterpolation:
     """RBF interpolation with a linear term (Rose et al. 1998), with the trend cut-off of its
     linear part and the key timing of ``settings`` (as ours)."""
-    return StyleClipInterpolation("rbf", None, None, flight, settings.trend_rcond, settings.key_timing)
+    return StyleClipInterpolation("rbf", None, None, flight, settings.model.trend_rcond, settings.model.key_timing)

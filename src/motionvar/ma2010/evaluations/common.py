@@ -107,7 +107,7 @@ def loo_folds(
 ) -> list[tuple[np.ndarray, np.ndarray]]:
     """Leave-one-out folds: a list of (training cycle indices, held-out cycle indices).
 
-    ``unit`` (config ma2010.loo_unit, one of :data:`..settings.LOO_UNITS`) "walk": a fold
+    ``unit`` (config ma2010.fig6.unit, one of :data:`..settings.LOO_UNITS`) "walk": a fold
     leaves out every cycle of one walk (``source_clips`` names each cycle's walk) and
     predicts the cycles of ``held_out`` among them, so no model is trained on a sibling
     cycle of the cycle it predicts (the paper predicts a new clip from the others, Sec. 7.1;

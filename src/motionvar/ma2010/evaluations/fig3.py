@@ -97,16 +97,16 @@ def scan_behaviour(
     dataset, idx: np.ndarray, behaviour: str, joint_map: JointMap, settings: Ma2010Settings
 ) -> BehaviourScan:
     """Key frames (``settings`` keyframe_prominence, keyframe_min_separation_s) and foot
-    strikes of the first ``settings.fig3_max_clips`` clips ``idx`` (0: all) of one behaviour."""
+    strikes of the first ``settings.fig3.max_clips`` clips ``idx`` (0: all) of one behaviour."""
     meta = dataset.metadata
-    clips = idx[: settings.fig3_max_clips or None]
+    clips = idx[: settings.fig3.max_clips or None]
     scan = BehaviourScan()
     truth = [has_true_contacts(meta.iloc[int(i)]) for i in clips]
     if len(truth):
         scan.strike_source = "ground truth" if all(truth) else "detected" if not any(truth) else "mixed"
     for k, i in enumerate(clips):  # loop over clips
         m = dataset.motion(int(i))
-        ex = extract_cycles(m, joint_map, settings.keyframe_prominence, settings.keyframe_min_separation_s)
+        ex = extract_cycles(m, joint_map, settings.clips.keyframe_prominence, settings.clips.keyframe_min_separation_s)
         strikes = foot_strikes(meta.iloc[int(i)], m, joint_map)
         maxima = ex.frames[ex.kinds == 1]
         scan.n_maxima, scan.n_struck = scan.n_maxima + len(maxima), scan.n_struck + int(len(strikes) >= 2)
@@ -141,15 +141,17 @@ def fig3_keyframes(dataset, joint_map: JointMap, settings: Ma2010Settings, what:
     """Fig. 3 on a dataset (``motionvar.io.MotionDataset``): the key frames of the first
     walk (of ``settings`` walk_styles and walk_variants) and the first run as the table,
     and per behaviour a claim on the circular SD of the maxima's phase within the step over
-    its first ``settings.fig3_max_clips`` clips (0: all), reproduced at most
-    ``settings.fig3_phase_sd`` (measurements: :func:`behaviour_measurements` per behaviour).
+    its first ``settings.fig3.max_clips`` clips (0: all), reproduced at most
+    ``settings.fig3.phase_sd`` (measurements: :func:`behaviour_measurements` per behaviour).
     ``what`` names the metadata in errors. A behaviour without clips, or whose clips hold no
     maximum between two foot strikes, gets its claim with verdict ``not applicable`` and the
     reason. Figure: ``shown`` (behaviour -> clip id, motion, its
     :class:`CycleExtraction`, foot strikes) and ``strike_source`` (behaviour -> "ground
     truth" or "detected": the shown clip's strikes)."""
     meta = dataset.metadata
-    walks = rows_matching(meta, behaviour="walk", style=settings.walk_styles, variant=settings.walk_variants, what=what)
+    walks = rows_matching(
+        meta, behaviour="walk", style=settings.clips.walk_styles, variant=settings.clips.walk_variants, what=what
+    )
     runs = np.flatnonzero(meta["behaviour"].astype(str).to_numpy() == "run")
     rows, shown, shown_source, behaviours = [], {}, {}, {}
     for behaviour, idx in (("walk", walks), ("run", runs)):
@@ -158,11 +160,11 @@ def fig3_keyframes(dataset, joint_map: JointMap, settings: Ma2010Settings, what:
         if scan.shown is not None:
             shown[behaviour], shown_source[behaviour] = scan.shown, scan.shown_source
         if len(idx):  # a behaviour without clips has no claim
-            behaviours[behaviour] = behaviour_measurements(scan, len(idx[: settings.fig3_max_clips or None]))
+            behaviours[behaviour] = behaviour_measurements(scan, len(idx[: settings.fig3.max_clips or None]))
     measurements = {
         "behaviours": behaviours,
-        "phase_sd_bound": settings.fig3_phase_sd,
-        "max_clips": settings.fig3_max_clips,
+        "phase_sd_bound": settings.fig3.phase_sd,
+        "max_clips": settings.fig3.max_clips,
     }
     claims = judge_claims(CLAIMS, "ma2010_fig3", measurements)
     figure = {"shown": shown, "strike_source": shown_source}

@@ -23,7 +23,7 @@ from ..baselines.mukai_kuriyama import mk05_kriging, rose98_rbf
 from ..claims import CLAIMS
 from ..examples import WalkCycles, joint_groups
 from ..representation import ClipCodec, ClipSet
-from ..settings import ROOT_GROUPS, Ma2010Settings
+from ..settings import ROOT_GROUPS, Ma2010Settings, ModelSettings
 from ..svi import GROUP_ORDER, ClipPrediction, resolve_structure, style_variation_model
 from ..synthesis import RootSolver
 from ..variation import joint_variation
@@ -45,7 +45,7 @@ MIN_PAIRED_FOLDS = 5
 
 
 def least_squares_clips(
-    train: ClipSet, c: np.ndarray, rcond: float = 0.0, key_timing: str = Ma2010Settings.key_timing
+    train: ClipSet, c: np.ndarray, rcond: float = 0.0, key_timing: str = ModelSettings.key_timing
 ) -> ClipPrediction:
     """Whole clips at styles c (M, d) from a linear least-squares fit on style alone (the
     trend of universal Kriging without its residual interpolation): the reference that
@@ -100,7 +100,7 @@ def fold_predictions(
         rbf = rose98_rbf(settings).fit(train, train_walks if per_walk else None)
         preds[name] = rbf.predict(c)
         reached[name] = rbf.interpolator_.reaches(c)
-    preds["least_squares"] = least_squares_clips(train, c, settings.trend_rcond, settings.key_timing)
+    preds["least_squares"] = least_squares_clips(train, c, settings.model.trend_rcond, settings.model.key_timing)
     return xi, preds, reached
 
 
@@ -160,7 +160,7 @@ def leave_one_out(
     ablation_groups: Mapping[str, np.ndarray] | None = None,
     ablation_name: str = "ablation",
 ) -> pd.DataFrame:
-    """Fig. 6 protocol over the folds of :func:`.common.loo_folds` (``settings.loo_unit``):
+    """Fig. 6 protocol over the folds of :func:`.common.loo_folds` (``settings.fig6.unit``):
     every model is fitted to a fold's training cycles and asked for each held-out cycle's style.
 
     One row per held-out cycle: its walk (``source_clips``; without them each cycle is its
@@ -177,7 +177,7 @@ def leave_one_out(
     what the time warp alone does to its strides (a diagnostic; Fig. 6 compares "the stride
     length of the validation walking clips", their style, with the predicted clips'). Kriging
     uses ``settings`` variogram_model and variogram_scale; every trend hyperplane (ours, Kriging,
-    RBF, least squares) is the least-squares fit of Eq. 12-13 with ``settings.trend_rcond``. With
+    RBF, least squares) is the least-squares fit of Eq. 12-13 with ``settings.model.trend_rcond``. With
     ``ablation_groups`` the model is also fitted with those joint groups
     (``ours_own_xi_<ablation_name>``, ``ours_mean_xi_<ablation_name>``). ``held_out`` limits
     the predicted cycles (default: all). ``structure`` is used by every fold as given (resolve
@@ -190,7 +190,7 @@ def leave_one_out(
         raise ValueError(f"leave_one_out: {len(walks)} source clips for {n} cycles")
     position, closing = walk_positions(walks)
     rows = []
-    for k, (train_idx, test) in enumerate(loo_folds(walks, held, settings.loo_unit)):  # loop over folds
+    for k, (train_idx, test) in enumerate(loo_folds(walks, held, settings.fig6.unit)):  # loop over folds
         train = clips.subset(train_idx)
         truth, c = clips.rotations[test], clips.style[test]
         xi, preds, reached = fold_predictions(
@@ -339,12 +339,12 @@ def loo_measurements(
     folds: pd.DataFrame, summary: pd.DataFrame, settings: Ma2010Settings, root: str, alt: str | None
 ) -> dict:
     """What Fig. 6's claims are judged on (``motionvar.ma2010.claims``): the stride error of ours
-    with the xi of ``settings.loo_xi`` against the strides asked for, over every held-out cycle
+    with the xi of ``settings.fig6.xi`` against the strides asked for, over every held-out cycle
     (max, mean, count, count within 1.2 cm), the summary rows (:func:`summary_measurements`), the
     folds' setup (root group ``root``, the ablation's ``alt`` or None, fold unit, xi, number of
     walks, variogram), MK05's paired pose errors (``mk05``: :func:`paired_pose_errors`) and why
     the cycles above 1.2 cm are (``failure_causes``: :func:`failure_causes`)."""
-    method = f"ours_{settings.loo_xi}_xi"
+    method = f"ours_{settings.fig6.xi}_xi"
     err = folds[f"{method}_stride_error_cm"].to_numpy()
     return {
         "stride_error_cm": {
@@ -357,28 +357,28 @@ def loo_measurements(
         "summary": summary_measurements(summary),
         "root_group": root,
         "ablation_root_group": alt,
-        "loo_unit": settings.loo_unit,
-        "loo_xi": settings.loo_xi,
+        "loo_unit": settings.fig6.unit,
+        "loo_xi": settings.fig6.xi,
         "walks": int(folds["source_clip"].nunique()),
-        "variogram_model": settings.variogram_model,
+        "variogram_model": settings.model.variogram_model,
         "mk05": paired_pose_errors(folds),
     }
 
 
 def fig6_leave_one_out(walks: WalkCycles, settings: Ma2010Settings, ablation: bool = True) -> EvaluationResult:
-    """Fig. 6 over the walking cycles (at most ``settings.loo_max_clips`` held-out cycles, a
-    subset seeded by ``settings.seed``; 0: all), folds by ``settings.loo_unit`` ("walk": the
+    """Fig. 6 over the walking cycles (at most ``settings.fig6.max_clips`` held-out cycles, a
+    subset seeded by ``settings.seed``; 0: all), folds by ``settings.fig6.unit`` ("walk": the
     whole walk of the held-out cycle leaves training; "cycle": only the cycle), the
-    structure (``settings.structure``) resolved once on all cycles; :func:`leave_one_out`.
+    structure (``settings.model.structure``) resolved once on all cycles; :func:`leave_one_out`.
     With ``ablation`` the model is refitted with the root rotation in the other joint group
-    than ``walks.root_group``. Claims (on ``walks.root_group``, xi by ``settings.loo_xi``):
+    than ``walks.root_group``. Claims (on ``walks.root_group``, xi by ``settings.fig6.xi``):
     every stride error against the strides asked for within the published 1.2 cm; Kriging errs
     less than RBF over the folds (MK05, a paired test), judged on :func:`loo_measurements`.
     Table: summary rows (``kind`` "summary": method x all / steady / closing cycles) then one
     row per held-out cycle (``kind`` "fold"). Figure: ``published_max_stride_error_cm``,
     ``root_group``, ``ablation`` (the ablation's table prefix or None), ``loo_unit``, ``loo_xi``."""
     clips = walks.clips
-    held_out = held_out_cycles(clips.n_clips, settings.loo_max_clips, settings.seed)
+    held_out = held_out_cycles(clips.n_clips, settings.fig6.max_clips, settings.seed)
     root, alt = walks.root_group, alternative_root_group(walks.root_group)
     alt_name = f"root_{alt}"
     alt_groups = joint_groups(walks.joint_map, clips.skeleton, alt) if ablation else None
@@ -386,7 +386,7 @@ def fig6_leave_one_out(walks: WalkCycles, settings: Ma2010Settings, ablation: bo
         clips,
         walks.groups,
         walks.solver,
-        resolve_structure(settings.structure, clips, walks.groups),
+        resolve_structure(settings.model.structure, clips, walks.groups),
         settings,
         held_out=held_out,
         source_clips=walks.source_clips,
@@ -396,7 +396,7 @@ def fig6_leave_one_out(walks: WalkCycles, settings: Ma2010Settings, ablation: bo
     folds.insert(0, "kind", "fold")
     folds.insert(2, "subject", [walks.subjects[clips.clip_ids.index(c)] for c in folds["clip_id"]])
     summary = loo_summary(folds, loo_methods(root, alt, alt_name, ablation), PUBLISHED_MAX_STRIDE_ERROR_CM)
-    summary.insert(3, "loo_unit", settings.loo_unit)
+    summary.insert(3, "loo_unit", settings.fig6.unit)
     table = pd.concat([summary, folds], ignore_index=True)
     measurements = loo_measurements(folds, summary, settings, root, alt if ablation else None)
     figure = {
@@ -404,7 +404,7 @@ def fig6_leave_one_out(walks: WalkCycles, settings: Ma2010Settings, ablation: bo
         "root_group": root,
         "ablation": alt_name if ablation else None,
         "alt_root_group": alt,
-        "loo_unit": settings.loo_unit,
-        "loo_xi": settings.loo_xi,
+        "loo_unit": settings.fig6.unit,
+        "loo_xi": settings.fig6.xi,
     }
     return EvaluationResult(table, judge_claims(CLAIMS, "ma2010_fig6", measurements), figure, measurements)

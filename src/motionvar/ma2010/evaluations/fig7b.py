@@ -115,12 +115,12 @@ def reliability_correlation(table: pd.DataFrame) -> dict:
 
 def fig7b_reliability(walks: WalkCycles, model: StyleVariationModel, settings: Ma2010Settings) -> EvaluationResult:
     """Fig. 7b for ``model`` fitted to ``walks``: the reliability map on an ``n_grid`` x
-    ``n_grid`` grid (``settings.reliability_grid``; the examples' range widened by
-    ``settings.reliability_margin``) and the claim that the stride error grows strongly with the
+    ``n_grid`` grid (``settings.fig7b.grid``; the examples' range widened by
+    ``settings.fig7b.margin``) and the claim that the stride error grows strongly with the
     distance to the nearest example (:func:`reliability_correlation`, with ``margin``). Figure:
     ``n_grid``, ``example_style`` (N, 2), ``line`` (the examples' mean and direction), the
     correlations."""
-    n_grid, margin = settings.reliability_grid, settings.reliability_margin
+    n_grid, margin = settings.fig7b.grid, settings.fig7b.margin
     table = reliability_map(model, walks.clips, walks.solver, n_grid, margin)
     measurements = reliability_correlation(table) | {"margin": margin}
     mean, direction, _ = examples_line(walks.clips.style)

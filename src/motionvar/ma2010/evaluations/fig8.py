@@ -159,13 +159,13 @@ def fixed_style_measurements(
     data's 95 % bootstrap interval per group (``data_interval_cm``), the groups, the shown
     variants' largest stride error and how many exceed 1.2 cm, the ceiling's largest, the
     numbers of variants, of draws behind ours' spread, of nearest examples and of their subjects
-    (``near_subjects``: each nearest example's), ``settings.spread_ratio_bounds`` and the root
+    (``near_subjects``: each nearest example's), ``settings.fig8.spread_ratio_bounds`` and the root
     rotation's group."""
     spread = {SPREAD_KEYS.get(name, "data" if name == data_name else name): dict(s) for name, s in spreads.items()}
     return {
         "spread_cm": spread,
         "data_interval_cm": {g: list(v) for g, v in data_interval.items()},
-        "draws": settings.fig8_draws,
+        "draws": settings.fig8.draws,
         "groups": list(GROUPS),
         "max_stride_error_cm": float(errors.max()),
         "over_bound": int(np.sum(errors > PUBLISHED_MAX_STRIDE_ERROR_CM)),
@@ -173,37 +173,37 @@ def fixed_style_measurements(
         "ceiling_max_stride_error_cm": float(ceil_errors.max()),
         "examples": len(near_subjects),
         "subjects": len(set(near_subjects)),
-        "spread_ratio_bounds": list(settings.spread_ratio_bounds),
+        "spread_ratio_bounds": list(settings.fig8.spread_ratio_bounds),
         "root_group": root_group,
     }
 
 
 def fig8_fixed_style(walks: WalkCycles, model: StyleVariationModel, settings: Ma2010Settings) -> EvaluationResult:
-    """Fig. 8a for ``model`` fitted to ``walks``: ``settings.fig8_draws`` cycles at the median
-    stride (xi sampled, seeded by ``settings.seed``), the first ``settings.fig8_variants`` shown
+    """Fig. 8a for ``model`` fitted to ``walks``: ``settings.fig8.draws`` cycles at the median
+    stride (xi sampled, seeded by ``settings.seed``), the first ``settings.fig8.variants`` shown
     with their xi, strides and stride errors; the spread per joint group of ours (over every
     draw), of the ceiling (the same style from the
     nearest examples' own xi, :func:`ceiling_variants`), of the nearest examples (one per
     subject; also with each clip's mean posture removed, and their 95 % bootstrap interval over
-    ``settings.fig8_bootstrap`` resamples), of RBF and of style-only Kriging
+    ``settings.fig8.bootstrap`` resamples), of RBF and of style-only Kriging
     (:func:`fixed_style_spreads`). Claims, judged on :func:`fixed_style_measurements`: the
-    variants differ within ``settings.spread_ratio_bounds`` times the data's spread while
+    variants differ within ``settings.fig8.spread_ratio_bounds`` times the data's spread while
     keeping the stride (not testable with too few nearest examples or subjects); RBF and
     Kriging do not vary. Figure: ``motions`` and ``key_frames`` of the variants in real
     time, ``style``, ``errors``, ``spreads``, ``ceiling_errors``, ``data_name`` (the key of
     the data's spread), ``data_interval`` (group -> its 95 % bootstrap interval)."""
     clips, solver = walks.clips, walks.solver
-    n = settings.fig8_variants
+    n = settings.fig8.variants
     style = np.median(clips.style, axis=0)
     rng = np.random.default_rng(settings.seed)
-    draws, pred, xi, strides = fixed_style_variants(model, style, settings.fig8_draws, n, solver, rng)
+    draws, pred, xi, strides = fixed_style_variants(model, style, settings.fig8.draws, n, solver, rng)
     errors = np.max(np.abs(strides - style), axis=1)
     near = nearest_clips(clips, style, n, walks.subjects)
     data_name = f"data ({len(near)} nearest examples)"
     ceil_pred, ceil_xi, ceil_strides = ceiling_variants(model, clips.rotations[near], style, solver)
     ceil_errors = np.max(np.abs(ceil_strides - style), axis=1)
     spreads = fixed_style_spreads(walks, draws, ceil_pred, near, style, settings)
-    interval = bootstrap_spread(clips.rotations[near], walks.groups, solver, settings.fig8_bootstrap, rng)
+    interval = bootstrap_spread(clips.rotations[near], walks.groups, solver, settings.fig8.bootstrap, rng)
     rows = [_stride_row("variant", f"variant {k + 1}", xi, k, strides, errors) for k in range(n)]
     rows += [
         _stride_row("ceiling", f"own xi of {clips.clip_ids[i]}", ceil_xi, k, ceil_strides, ceil_errors)

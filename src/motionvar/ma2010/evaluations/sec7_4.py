@@ -134,21 +134,21 @@ def comparison_measurements(
         "examples": n_examples,
         "held_out_pose_cm": ref.held_out_pose_distance,
         "held_out_pose_spread": ref.held_out_pose_spread,
-        "xi_per": settings.comparison_xi,
-        "landing": settings.comparison_landing,
-        "perlin_amplitude_sweep_rad": list(settings.perlin_amplitude_sweep_rad),
-        "perlin_frequency_hz": settings.perlin_frequency_hz,
-        "dbn_max_parents_sweep": list(settings.dbn_max_parents_sweep),
+        "xi_per": settings.sec7_4.xi,
+        "landing": settings.sec7_4.landing,
+        "perlin_amplitude_sweep_rad": list(settings.sec7_4.perlin_amplitude_sweep_rad),
+        "perlin_frequency_hz": settings.sec7_4.perlin_frequency_hz,
+        "dbn_max_parents_sweep": list(settings.sec7_4.dbn_max_parents_sweep),
     }
 
 
 def sec7_4_comparison(walks: WalkCycles, settings: Ma2010Settings, threads: int = RIVAL_THREADS) -> EvaluationResult:
-    """Sec. 7.4 from the ``settings.comparison_examples`` cycles nearest the median stride
+    """Sec. 7.4 from the ``settings.sec7_4.examples`` cycles nearest the median stride
     (one per subject): every method's sequences (:func:`..comparison.method_sequences`,
     with ``settings``: Perlin noise and the DBN at every setting of their sweeps), their
     naturalness (:func:`..comparison.naturalness`: foot skating at detected contacts; the
-    height-threshold measure with ``settings.contact_height_cm`` beside it; a discontinuity
-    is an acceleration above ``settings.discontinuity_factor`` x the examples' peak) and
+    height-threshold measure with ``settings.sec7_4.contact_height_cm`` beside it; a discontinuity
+    is an acceleration above ``settings.sec7_4.discontinuity_factor`` x the examples' peak) and
     variation, one table row per sequence plus the examples as reference
     (:func:`sequence_rows`); a sequence that stops early (diverged) scores infinite. Claims, one
     per fault the paper names and one for ours (judged on :func:`comparison_measurements`, the
@@ -159,7 +159,7 @@ def sec7_4_comparison(walks: WalkCycles, settings: Ma2010Settings, threads: int 
     ``sweeps`` (text), ``sequences`` (method -> motions). The sequences are made on
     ``threads`` torch and BLAS threads (:data:`RIVAL_THREADS`)."""
     style = np.median(walks.clips.style, axis=0)
-    near = nearest_clips(walks.clips, style, settings.comparison_examples, walks.subjects)
+    near = nearest_clips(walks.clips, style, settings.sec7_4.examples, walks.subjects)
     if len(near) < 2:
         raise NotApplicable(
             f"{walks.source}: {len(set(walks.subjects))} subject(s) among the {walks.clips.n_clips} walking cycles; "
@@ -171,9 +171,9 @@ def sec7_4_comparison(walks: WalkCycles, settings: Ma2010Settings, threads: int 
         out = method_sequences(five, walks.groups, walks.solver, settings)
     examples = [walks.solver.motion(r, five.fps) for r in example_pose_sequences(five)]
     ref = NaturalnessReference.from_examples(
-        examples, walks.solver, settings.contact_height_cm, settings.discontinuity_factor
+        examples, walks.solver, settings.sec7_4.contact_height_cm, settings.sec7_4.discontinuity_factor
     )
-    seconds = settings.comparison_seconds
+    seconds = settings.sec7_4.seconds
     full = seconds - 1.0 / five.fps
     table = pd.DataFrame(sequence_rows(out, examples, ref, full))
     figure = {
@@ -181,7 +181,7 @@ def sec7_4_comparison(walks: WalkCycles, settings: Ma2010Settings, threads: int 
         "labels": method_variants(settings),
         "n_examples": len(near),
         "seconds": seconds,
-        "n_sequences": settings.comparison_sequences,
+        "n_sequences": settings.sec7_4.sequences,
         "sweeps": sweeps_text(settings),
         "sequences": out,
     }
@@ -191,6 +191,6 @@ def sec7_4_comparison(walks: WalkCycles, settings: Ma2010Settings, threads: int 
 
 def sweeps_text(settings: Ma2010Settings) -> str:
     """The rivals' swept settings, in words (figure title)."""
-    amplitudes = ", ".join(f"{a:g}" for a in settings.perlin_amplitude_sweep_rad)
-    parents = ", ".join(str(p) for p in settings.dbn_max_parents_sweep)
+    amplitudes = ", ".join(f"{a:g}" for a in settings.sec7_4.perlin_amplitude_sweep_rad)
+    parents = ", ".join(str(p) for p in settings.sec7_4.dbn_max_parents_sweep)
     return f"Perlin noise at {amplitudes} rad; DBN with at most {parents} parents"

@@ -69,16 +69,16 @@ def sec8_timing(
     settings: Ma2010Settings,
     clock: Callable[[], float] = time.perf_counter,
 ) -> EvaluationResult:
-    """Sec. 8 for ``model`` fitted to ``walks``: about ``settings.timing_seconds`` s of
+    """Sec. 8 for ``model`` fitted to ``walks``: about ``settings.sec8.seconds`` s of
     walking at the median stride (xi seeded by ``settings.seed``), the mean of
-    ``settings.timing_repeats`` timings (the paper: "on average"), against the published
+    ``settings.sec8.repeats`` timings (the paper: "on average"), against the published
     0.15 s per s (measurements ``seconds_per_second``, ``sd_seconds_per_second``,
     ``motion_seconds``, ``example_cycles``, ``repeats``, ``cpu``: :func:`cpu_model`,
     ``logical_cores``). Figure: ``seconds_per_second``, ``motion_seconds``, ``n_cycles``."""
     style = np.median(walks.clips.style, axis=0)
-    repeats = settings.timing_repeats
+    repeats = settings.sec8.repeats
     runs, length = synthesis_seconds_per_second(
-        model, style, walks.solver, settings.timing_seconds, repeats, settings.seed, clock
+        model, style, walks.solver, settings.sec8.seconds, repeats, settings.seed, clock
     )
     sps, sd = float(runs.mean()), float(runs.std(ddof=1)) if len(runs) > 1 else 0.0
     cpu, cores = cpu_model(), os.cpu_count() or 0

@@ -74,11 +74,11 @@ def variogram_fits(walks: WalkCycles, settings: Ma2010Settings) -> EvaluationRes
     per interpolator the variogram cloud (pair distance, semivariance; same-walk pairs
     marked) for :func:`motionvar.ma2010.figures.draw_variogram`."""
     clips = walks.clips
-    variogram_model, variogram_scale = settings.variogram_model, settings.variogram_scale
+    variogram_model, variogram_scale = settings.model.variogram_model, settings.model.variogram_scale
     model = walks.fit_model(settings)
     krigs: dict[str, UniversalKriging] = {g: model.interpolators_[g][1] for g in GROUP_ORDER}
     # MK05's clip vectors (:mod:`..baselines.mukai_kuriyama`: every joint and the key times) over style alone
-    codec = ClipCodec(np.arange(clips.skeleton.n_joints), timing=True, key_timing=settings.key_timing).fit(clips)
+    codec = ClipCodec(np.arange(clips.skeleton.n_joints), timing=True, key_timing=settings.model.key_timing).fit(clips)
     style_only = UniversalKriging(variogram_model, variogram_scale=variogram_scale)
     krigs[STYLE_ONLY] = style_only.fit(clips.style, codec.encode(clips))
     source = getattr(walks, "source_clips", None)  # each cycle's walk (capture)
