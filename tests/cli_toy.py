@@ -85,8 +85,8 @@ def _graph(models):
 
 
 def _style(tmp, models):
-    from test_style import TINY_HIDDEN, tiny_settings
-    from test_style import toy_walk as style_toy_walk
+    from style_toy import TINY_HIDDEN, tiny_settings
+    from style_toy import toy_walk as style_toy_walk
 
     from motionvar.du2022.style import fit_feature_space, fit_primitive_vae, fit_style_cvae, save_vae
     from motionvar.du2022.style.data import dataset_layout

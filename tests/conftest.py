@@ -1,7 +1,7 @@
 """Shared fixtures. ``ci_run``: the whole workflow on config/ci.yaml in a temporary working
 directory, run once per test session through the default profile (its default target ends
-with the dataset's report, reports/synthetic.html); used by tests/test_pipeline_e2e.py,
-tests/test_progress.py and, as the local reference run, by tests/test_cluster_generic.py. The
+with the dataset's report, reports/synthetic.html); used by tests/workflow/test_pipeline_e2e.py,
+tests/workflow/test_progress.py and, as the local reference run, by tests/workflow/test_cluster_generic.py. The
 test command runs the tests in parallel processes (pytest-xdist, pyproject.toml); the first
 process that asks for ``ci_run`` runs the pipeline and the others wait for it and read it back,
 so a session runs the CI pipeline locally once."""

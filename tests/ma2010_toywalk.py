@@ -5,9 +5,12 @@ swinging (amplitude is the per-subject "variation"), root from footskate cleanup
 from __future__ import annotations
 
 import numpy as np
+import pandas as pd
+from rule_scripts import FakeSnakemake, Named
 
 from motionvar.core import Motion, cmu_joint_map, cmu_skeleton  # noqa: F401
 from motionvar.core.quaternions import qmul, quat_about_axis
+from motionvar.io import save_dataset
 from motionvar.ma2010.examples import root_solver
 
 
@@ -47,3 +50,42 @@ def toy_walk(
     rot[:, ix("RightForeArm")] = quat_about_axis([0, 1, 0], np.full(n, -0.3 - 0.5 * arm_amp))
     rot[:, ix("Spine")] = quat_about_axis([0, 1, 0], twist * np.sin(phi))
     return root_solver(sk, cmu_joint_map()).motion(rot, fps)
+
+
+SETTINGS = {
+    "clips": {"walk_styles": ["neutral"], "walk_variants": ["forward"], "n_frames": 24}
+}  # config section ma2010
+
+
+def toy_dataset(tmp_path, styles, n_cycles=3):
+    """A packed dataset of toy walkers of growing stride, one per style in ``styles``."""
+    motions = [toy_walk(hip_amp=0.3 + 0.03 * i, arm_amp=0.2 + 0.1 * i, n_cycles=n_cycles) for i in range(len(styles))]
+    meta = pd.DataFrame(
+        {
+            "clip_id": [f"w{i}" for i in range(len(styles))],
+            "subject": [f"{i:02d}" for i in range(len(styles))],
+            "behaviour": "walk",
+            "style": styles,
+            "variant": "forward",
+        }
+    )
+    save_dataset(tmp_path / "data", motions, meta)
+    return tmp_path / "data"
+
+
+def clips_fake(tmp_path, data):
+    """(output folder, FakeSnakemake) of rule ma2010_clips on the packed dataset ``data``."""
+    out = tmp_path / "models"
+    fake = FakeSnakemake(
+        tmp_path,
+        "ma2010_clips",
+        input=Named(clips=str(data / "clips.npz"), metadata=str(data / "metadata.csv")),
+        output=Named(
+            clips=str(out / "walk_clips.npz"),
+            clips_settings=str(out / "walk_clips.json"),
+            table=str(out / "walk_cycles.csv"),
+        ),
+        params=Named(settings=SETTINGS, joint_map=None),
+    )
+    out.mkdir()
+    return out, fake

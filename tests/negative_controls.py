@@ -7,6 +7,7 @@ the verdict must be ``not reproduced``. Each ``tests/test_controls_<part>.py`` h
 from __future__ import annotations
 
 import importlib
+import sys
 from collections.abc import Callable, Mapping
 from pathlib import Path
 from typing import Any
@@ -31,7 +32,9 @@ def control_claim(claim_id: str):
 def all_controls() -> dict[str, list[str]]:
     """claim id -> the control modules (``test_controls_*``) that hold a control for it."""
     found: dict[str, list[str]] = {}
-    for path in sorted(Path(__file__).parent.glob("test_controls_*.py")):
+    for path in sorted(Path(__file__).parent.rglob("test_controls_*.py")):
+        if str(path.parent) not in sys.path:  # pytest puts a test's folder there when it collects it
+            sys.path.insert(0, str(path.parent))
         module = importlib.import_module(path.stem)
         for claim_id in module.CONTROLS:
             found.setdefault(claim_id, []).append(path.stem)

@@ -1,6 +1,6 @@
 """Write config/README.md, the catalog of the configuration: the shipped config files and every
 key of config/schema.yaml (the schema is the source: its descriptions and defaults, which
-tests/test_settings.py holds equal to the settings classes), each key that one evaluation owns
+tests/core/test_settings.py holds equal to the settings classes), each key that one evaluation owns
 marked with it (``Evaluation.own_keys``).
 
 python tools/config_doc.py

@@ -2,7 +2,7 @@
 
 Rule scripts build every section's settings through one door, ``_rule.config_settings(snakemake,
 section)``, which calls :func:`section_settings` with the section's merged config (passed whole as
-the rule's ``params.settings``, or as ``params.<section>`` for a section beside the rule's own); ``tests/test_settings.py`` holds every class to the schema in
+the rule's ``params.settings``, or as ``params.<section>`` for a section beside the rule's own); ``tests/core/test_settings.py`` holds every class to the schema in
 ``config/schema.yaml``. The classes are imported on first use, so that a rule loads only its
 own paper's package."""
 

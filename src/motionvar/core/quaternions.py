@@ -19,7 +19,7 @@ def qnormalize(q: np.ndarray) -> np.ndarray:
     """Scale quaternions (..., 4) to unit length.
 
     The squares summed as written, ((w² + x²) + y²) + z²: ``np.linalg.norm``'s value bit
-    for bit (tests/test_core.py) without its temporaries."""
+    for bit (tests/core/test_core.py) without its temporaries."""
     q = np.asarray(q)
     q = q.astype(np.result_type(q, 1.0), copy=False)
     w, x, y, z = np.moveaxis(q, -1, 0)
@@ -138,7 +138,7 @@ def euler_to_quat(angles_deg: np.ndarray, order: str) -> np.ndarray:
     scipy's ``Rotation.from_euler`` (its elementary-quaternion composition) with the terms
     that are zero for axis quaternions written out of the products; rows where a component
     comes out zero are composed in full, so that its sign is scipy's too. The same
-    quaternions bit for bit (tests/test_core.py), about 8x faster on a BVH file's rotations.
+    quaternions bit for bit (tests/core/test_core.py), about 8x faster on a BVH file's rotations.
     """
     axes = ["XYZ".index(c) for c in order.upper() if c in "XYZ"]
     if len(order) != 3 or len(set(axes)) != 3:

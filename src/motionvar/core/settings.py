@@ -3,7 +3,7 @@ place where the section's defaults are written (a paper's value where the paper 
 
 A rule script builds it from its config section (``Ma2010Settings.from_dict(config["ma2010"])``)
 and passes it whole to the library; ``config/schema.yaml`` repeats the defaults for the
-reader and ``tests/test_settings.py`` holds the two equal. Subsections are nested settings
+reader and ``tests/core/test_settings.py`` holds the two equal. Subsections are nested settings
 classes; list-valued keys are tuples (frozen) and come back as lists from :meth:`to_dict`.
 """
 

@@ -7,7 +7,7 @@ Every method outputs local rotations; the root of every sequence is then recover
 same footskate cleanup (Sec. 6.3), so that the methods differ only in their poses.
 
 The naturalness measures are checked on the generator's ground truth first
-(tests/test_metrics_motion.py): foot skating is the speed of a foot's contact point over
+(tests/metrics/test_metrics_motion.py): foot skating is the speed of a foot's contact point over
 the frames it is in contact (0 on the generator's walks; the earlier height-threshold
 measure, which scored them 13-47 cm/s, is reported beside it as ``low_joint_speed_cm_s``),
 and jerk is reported for the whole body and without the root's path (root-free).

@@ -8,7 +8,7 @@ contact point, the joint of the foot nearest its planted height (the ankle while
 is down, the toe while the foot rolls over it at toe-off). A planted foot rolls: its
 ankle rises and moves forward at heel-off while the toe stays put, and the heel lands
 before the toe; only the contact point must not move. The generator's walks, whose planted
-feet never slide, score 0 (tests/test_metrics_motion.py).
+feet never slide, score 0 (tests/metrics/test_metrics_motion.py).
 
 :func:`low_joint_speed` is the earlier measure: the horizontal speed of every foot joint
 while it is below a height threshold. It counts the heel and toe roll of a planted foot

@@ -11,7 +11,7 @@ Two ways to find where a foot stands at a boundary:
 - :func:`footfall_strides` (what the Ma 2010 evaluations use): the footprint of the foot's
   contact nearest to the boundary, from contact masks; a phase's stride is then the
   distance between two footfalls of the swing foot, as the generator defines it
-  (tests/test_synth_locomotion.py). With two joints per foot (ankle and toe) each footfall
+  (tests/synth/test_synth_locomotion.py). With two joints per foot (ankle and toe) each footfall
   is located by the joint that is down at both of the phase's ends: a walking cycle cut at
   its key frames (legs farthest apart) starts with the trailing foot rolling off its toe,
   its heel already up, and ends with the leading foot on its heel, its toe not yet down.

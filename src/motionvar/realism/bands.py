@@ -12,7 +12,7 @@ the numbers the band comes from are on record beside it:
 A band gates (``Band.gates``: the table's ``in_band`` is a verdict on the data) only where it
 rejects the generator's clean data (``SynthSpec(captured_variation=False)``: strides repeated
 within a walk, left equal to right, half the channels still, single-peaked reaches), in every
-seed at CI size (``tests/test_realism.py``); a band that clean data passes tells nothing about
+seed at CI size (``tests/realism/test_realism.py``); a band that clean data passes tells nothing about
 realism, and its statistic is descriptive (``gates=False``: shown beside its band, never failed).
 Each band says what it rests on (``basis``: sets, performers, walks, strides).
 
