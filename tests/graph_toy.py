@@ -8,6 +8,10 @@ import numpy as np
 from motionvar.core.motion import Motion
 from motionvar.core.quaternions import qidentity, quat_about_axis
 from motionvar.core.skeleton import cmu_skeleton
+from motionvar.du2022.graph import PrimitiveOptions
+
+#: the options of the tests' small primitives: 8 B-splines, 5 components, no SFPCA iterations
+OPT = PrimitiveOptions(n_basis=8, n_components=5, gmm_components=(1, 3), sfpca_max_iter=0)
 
 
 def toy_clips(n: int = 16, seed: int = 0) -> list[Motion]:

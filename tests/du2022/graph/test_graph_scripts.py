@@ -1,7 +1,7 @@
 """Morphable Graph rule scripts (Du 2022 ch. 4) outside Snakemake, as thin adapters: a
 fit through the script saves a loadable model; bad input gives one clear error line
 naming the file or config key, exit status 1, and no output file. The evaluations
-themselves are tested in test_graph.py."""
+themselves are tested in the other test_graph_*.py modules."""
 
 from __future__ import annotations
 
