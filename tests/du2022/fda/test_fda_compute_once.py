@@ -13,8 +13,8 @@ import pandas as pd
 import pytest
 import rule_scripts
 import torch
+from fda_toy import StandInDataset, make_clips
 from rule_scripts import FakeSnakemake, Named
-from test_fda import StandInDataset, make_clips
 
 from motionvar.core import cmu_skeleton
 from motionvar.core.kinematics import fk_torch
