@@ -10,27 +10,10 @@ import json
 import os
 import resource
 import subprocess
-import sys
 import time
-from pathlib import Path
 
 import pytest
-
-ROOT = Path(__file__).resolve().parents[1]
-SNAKEFILE = str(ROOT / "Snakefile")
-CI_CONFIG = str(ROOT / "config" / "ci.yaml")
-
-
-def run_snakemake(*args, cwd, timeout=900, env=None):
-    """``python -m snakemake -s Snakefile ARGS`` in ``cwd`` (output captured)."""
-    return subprocess.run(
-        [sys.executable, "-m", "snakemake", "-s", SNAKEFILE, *args],
-        cwd=cwd,
-        capture_output=True,
-        text=True,
-        timeout=timeout,
-        env=env,
-    )
+from pipeline_runs import CI_CONFIG, run_snakemake
 
 
 @pytest.fixture(scope="session")

@@ -57,7 +57,7 @@ SETTINGS = {
 }  # config section ma2010
 
 
-def toy_dataset(tmp_path, styles, n_cycles=3):
+def walks_folder(tmp_path, styles, n_cycles=3):
     """A packed dataset of toy walkers of growing stride, one per style in ``styles``."""
     motions = [toy_walk(hip_amp=0.3 + 0.03 * i, arm_amp=0.2 + 0.1 * i, n_cycles=n_cycles) for i in range(len(styles))]
     meta = pd.DataFrame(

@@ -382,8 +382,7 @@ def test_model_rule_scripts_save_what_the_command_loads(tmp_path):
     """Rules ma2010_model, du2022_graph_edges and du2022_style_rig as adapters: each writes a model
     file (npz + json) that the command's loaders read back."""
     import rule_scripts
-    from ma2010_toywalk import clips_fake
-    from ma2010_toywalk import toy_dataset as walk_toy_dataset
+    from ma2010_toywalk import clips_fake, walks_folder
     from rule_scripts import FakeSnakemake, Named, script
     from rule_scripts import run as run_rule
 
@@ -393,7 +392,7 @@ def test_model_rule_scripts_save_what_the_command_loads(tmp_path):
 
     for helper in ("_ma2010", "_graph", "_style"):
         rule_scripts.helper_module(helper)
-    out, fake = clips_fake(tmp_path, walk_toy_dataset(tmp_path, ["neutral"] * 3))
+    out, fake = clips_fake(tmp_path, walks_folder(tmp_path, ["neutral"] * 3))
     run_rule(fake, script("ma2010_clips").main)
     options = {"structure": "auto", "variogram_model": "linear", "root_group": "legs"}
     run_rule(

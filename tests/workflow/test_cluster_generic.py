@@ -20,7 +20,7 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 import pytest
-from conftest import CI_CONFIG, ROOT, run_snakemake
+from pipeline_runs import CI_CONFIG, ROOT, run_snakemake
 
 pytest.importorskip("snakemake_executor_plugin_cluster_generic")
 
