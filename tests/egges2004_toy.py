@@ -81,3 +81,8 @@ def toy_dataset(folder: Path, subjects: int = 3, clips: int = 3) -> Path:
             )
     save_dataset(folder, motions, pd.DataFrame(rows))
     return folder
+
+
+#: the toy recordings' sequence of stances and their rest lengths (s)
+SEQ = ["left", "both", "right", "both", "left", "right", "left"]
+RESTS = [4, 3, 5, 3, 6, 4, 3]

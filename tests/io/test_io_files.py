@@ -16,14 +16,7 @@ import pytest
 from motionvar.core import Motion, cmu_skeleton
 from motionvar.core.quaternions import qidentity
 from motionvar.io import DatasetError, load_dataset, save_dataset, write_bvh
-from motionvar.io.atomic import (
-    TMP_SUFFIX,
-    AtomicFiles,
-    TargetError,
-    TargetExistsError,
-    atomic_write,
-    stale_temp_files,
-)
+from motionvar.io.atomic import TMP_SUFFIX, AtomicFiles, TargetError, TargetExistsError, atomic_write, stale_temp_files
 from motionvar.io.model_file import load_model, load_torch_model, save_model, save_torch_model
 
 

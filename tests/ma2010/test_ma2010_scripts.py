@@ -1,5 +1,5 @@
 """Ma 2010 rule scripts as adapters (the measurements are tested at library level in
-test_ma2010_evaluations.py): the clips script writes a model file (npz + json) and the
+the test_ma2010_*.py modules of evaluations): the clips script writes a model file (npz + json) and the
 cycle table; bad input is one error line naming the config key or file, with no output
 left behind."""
 

@@ -324,7 +324,7 @@ def _frame_values(body: str | bytes) -> np.ndarray | None:
     """(T, C) values of the whitespace-separated frame lines (blank lines skipped), or None
     where a value does not parse or a line has more or fewer values than the first (the caller
     then finds the line; it also rejects non-finite values, which may parse). pandas' C reader:
-    the values ``np.loadtxt`` gives, bit for bit (tests/io/test_bvh.py), about 1.7x faster."""
+    the values ``np.loadtxt`` gives, bit for bit (tests/io/test_bvh_read_write.py), about 1.7x faster."""
     import csv
     import io
 

@@ -155,7 +155,7 @@ def normalized_strides(rotations: np.ndarray, key_frames: np.ndarray, solver: Ro
     skeleton is within 0.25 % of the true stride of each phase whose two footfalls of the swing
     foot it holds, within 1 % where the foot leaves the standing start, lands a frame after the
     cycle's last key frame or lifts off one frame into the cycle (the held first pose plants it
-    on its toe, ahead of its footprint: up to 0.83 %; tests/ma2010/test_ma2010.py)."""
+    on its toe, ahead of its footprint: up to 0.83 %; tests/ma2010/test_ma2010_postprocess.py)."""
     n = int(round(EDGE_HOLD_S * fps))
     held = np.pad(rotations, ((n, n), (0, 0), (0, 0)), mode="edge")
     motion = Motion(skeleton=solver.skeleton, root_pos=stride_root(held, solver, fps), rotations=held, fps=fps)

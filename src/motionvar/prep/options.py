@@ -43,7 +43,7 @@ class PrepOptions:
             starts while the primary still moves (at 70-90 % of its duration, Novak, Miller
             & Houk 2002; a minimum-jerk primary still moves at 13 % of its peak speed at
             90 %). On generated reaches 0.15 finds the stop of corrected reaches and keeps
-            a place's release apart (tests/prep/test_prep.py).
+            a place's release apart (tests/prep/test_prep_synthetic.py).
     Alignment (Ma 2010 Sec. 4.2, space warping):
         heading: "hips" (the facing direction from the left-hip -> right-hip vector) or
             "movement" (Ma's overall movement direction, first to last root position).
@@ -57,7 +57,7 @@ class PrepOptions:
             0.5-0.6 s, a running step 0.33-0.4 s at 150-180 steps/min (docs/gait.md), a
             sprint step 0.2 s at 5 steps/s. A walk's end primitive (the last heel strike to
             the clip's end) holds the closing weight transfer and the standing that follows:
-            0.225 s with the generator's minimum of 0.1 s standing (tests/prep/test_prep.py). The
+            0.225 s with the generator's minimum of 0.1 s standing (tests/prep/test_prep_synthetic.py). The
             workflow's synthetic data have no primitive under 0.33 s. Whatever the value, a
             primitive needs at least 2 frames.
         skip_unsegmentable: drop clips in which no primitive is found or left (counted)
