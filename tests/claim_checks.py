@@ -1,9 +1,10 @@
-"""A check shared by the evaluation tests: the number a claim's verdict is computed from
-(``value`` against ``bound`` in ``direction``, motionvar.claims) agrees with its verdict."""
+"""Checks shared by the claim tests: the number a claim's verdict is computed from (``value``
+against ``bound`` in ``direction``, motionvar.claims) agrees with its verdict; a note's length."""
 
 from __future__ import annotations
 
 import operator
+import re
 
 from motionvar.claims import CHECKED_VERDICTS, Claim
 
@@ -36,3 +37,12 @@ def check_value_bound(claim: Claim) -> None:
         assert meets(claim), claim
     elif claim.claim_id not in GATED:
         assert not meets(claim), claim
+
+
+#: a note says what was measured and how it differs from the paper's setup: at most three sentences
+NOTE_SENTENCES, NOTE_CHARS = 3, 600
+
+
+def sentences(text: str) -> int:
+    """Sentences of a note: ends of sentence are '.', '!' or '?' before a capital letter or the end."""
+    return len(re.findall(r"[.!?](?=\s+[A-Z]|\s*$)", text.strip()))

@@ -7,6 +7,7 @@ import re
 from pathlib import Path
 
 import pytest
+from claim_checks import NOTE_CHARS, NOTE_SENTENCES, sentences
 from negative_controls import all_controls
 
 from motionvar.claim_catalog import CLAIMS, catalog_markdown, spec, specs_of
@@ -88,15 +89,6 @@ def test_library_code_tells_no_run_history(path):
 def test_docs_claims_md_lists_the_declarations_as_they_are():
     doc = Path(__file__).resolve().parents[1] / "docs" / "claims.md"
     assert doc.read_text(encoding="utf-8") == catalog_markdown(), "run python tools/claims_doc.py"
-
-
-#: a note says what was measured and how it differs from the paper's setup: at most three sentences
-NOTE_SENTENCES, NOTE_CHARS = 3, 600
-
-
-def sentences(text: str) -> int:
-    """Sentences of a note: ends of sentence are '.', '!' or '?' before a capital letter or the end."""
-    return len(re.findall(r"[.!?](?=\s+[A-Z]|\s*$)", text.strip()))
 
 
 @pytest.mark.parametrize("claim_id", sorted(all_controls()))

@@ -12,6 +12,7 @@ from pathlib import Path
 
 import pandas as pd
 import pytest
+from claim_checks import NOTE_CHARS, NOTE_SENTENCES, sentences
 
 from motionvar.claims import CLAIM_COLUMNS
 
@@ -69,6 +70,18 @@ def test_report_holds_the_data_figures_and_the_claims(ci_run):
     claims = pd.read_csv(work / "results" / "synthetic" / "claims.csv")
     assert list(claims.columns) == list(CLAIM_COLUMNS)
     assert (work / "results" / "synthetic" / "figures" / "dataset_animation.gif").stat().st_size < 3_000_000
+
+
+@pytest.mark.e2e
+def test_every_note_of_the_ci_run_is_at_most_three_sentences(ci_run):
+    """Every claim's note in the CI run's claims table, not only those with a negative control."""
+    claims = pd.read_csv(ci_run[0] / "results" / "synthetic" / "claims.csv", keep_default_na=False)
+    long = [
+        (c, len(n))
+        for c, n in zip(claims["claim_id"], claims["note"])
+        if sentences(n) > NOTE_SENTENCES or len(n) > NOTE_CHARS
+    ]
+    assert not long, long
 
 
 @pytest.mark.e2e

@@ -35,7 +35,7 @@ from __future__ import annotations
 import copy
 import logging
 import time
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -526,3 +526,13 @@ def last_epoch_drop(history: pd.DataFrame, column: str = "style") -> float | Non
     before (0.05: 5 % lower; None with fewer than two epochs)."""
     values = history[column].to_numpy(dtype=float)
     return None if len(values) < 2 else float(1.0 - values[-1] / values[-2])
+
+
+def last_epoch_drops(
+    infos: Sequence[Mapping[str, object]],
+    histories: Sequence[pd.DataFrame],
+    name: Callable[[Mapping[str, object]], str],
+) -> dict[str, float]:
+    """``{name(info): last_epoch_drop(history)}`` of trained networks and their histories, in the
+    same order; histories of fewer than two epochs are left out."""
+    return {name(info): d for info, h in zip(infos, histories, strict=True) if (d := last_epoch_drop(h)) is not None}

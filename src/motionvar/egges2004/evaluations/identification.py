@@ -35,6 +35,11 @@ FEATURE_SETS = ("all", "posture", "dynamics")
 SWAY_BANDS_HZ = ((0.05, 0.3), (0.3, 1.0), (1.0, 3.0))
 
 
+def window_frames(window_s: float, fps: float) -> int:
+    """Frames of a window of ``window_s`` seconds at ``fps``."""
+    return int(round(window_s * fps))
+
+
 def _windows(x: np.ndarray, length: int) -> np.ndarray:
     """(n, length, ...) non-overlapping windows of ``x`` (T, ...); the tail is dropped."""
     n = len(x) // length
@@ -64,7 +69,7 @@ def window_features(
     """
     if feature_set not in FEATURE_SETS:
         raise ValueError(f"feature_set must be one of {FEATURE_SETS}, got {feature_set!r}")
-    length = int(round(window_s * fps))
+    length = window_frames(window_s, fps)
     if length < 2 or len(pcs) < length:
         raise ValueError(
             f"window_features: a window of {window_s} s needs {length} frames; the sequence has {len(pcs)}"
@@ -143,7 +148,7 @@ def identification_table(
     features, ``labels`` and ``confusion`` (empty without a generated source)."""
     params = settings.identification
 
-    length = int(round(params.window_s * fps))
+    length = window_frames(params.window_s, fps)
 
     def features(items):
         short = [s for s, p, _ in items if len(p) < length]

@@ -22,7 +22,7 @@ from ..model import FeatureSpace, SavedVAE, sample_maps
 from ..networks import MotionVAE
 from ..published import table5_1
 from ..settings import StyleSettings
-from ..training import last_epoch_drop
+from ..training import last_epoch_drops
 
 log = logging.getLogger(__name__)
 
@@ -168,9 +168,5 @@ def table5_1_measurements(
         else {str(r): m for r in table.index if (m := _row_minimum(own_clips, r)) is not None},
         "style_last_drop": {}
         if histories is None
-        else {
-            str(info["style"]): d
-            for info, h in zip(cvaes, histories, strict=True)
-            if (d := last_epoch_drop(h)) is not None
-        },
+        else last_epoch_drops(cvaes, histories, lambda info: str(info["style"])),
     }

@@ -39,7 +39,7 @@ from ..model import FeatureSpace, SavedVAE, active_units, sample_features
 from ..networks import MotionVAE
 from ..published import diversity_tables
 from ..settings import StyleSettings
-from ..training import last_epoch_drop
+from ..training import last_epoch_drops
 
 log = logging.getLogger(__name__)
 
@@ -144,11 +144,9 @@ def evaluate_table5_2(
     measurements = table5_2_measurements(table, settings, training_regimes(models), models[0][0].latent)
     if histories is not None:
         cvaes = [info for *_, info in models if info.get("style") != "neutral"]
-        measurements["style_last_drop"] = {
-            f"{info['primitive']} {info['style']}": d
-            for info, h in zip(cvaes, histories, strict=True)
-            if (d := last_epoch_drop(h)) is not None
-        }
+        measurements["style_last_drop"] = last_epoch_drops(
+            cvaes, histories, lambda info: f"{info['primitive']} {info['style']}"
+        )
     claims = judge_claims(CLAIMS, "du2022_table5_2", measurements)
     return EvaluationResult(table.round(5), claims, {"table": table}, measurements)
 
