@@ -212,13 +212,9 @@ def _style_pose_sd_lower_than_neutral(m: Measurements) -> Judgement:
     lower_raw = [(p, s) for p in prims for s in styles if model(p, s)["pose_sd"] < model(p, "neutral")["pose_sd"]]
     lower_own = [(p, s) for p in prims for s in styles if ratio[(p, s)] < ratio[(p, "neutral")]]
     n_style = len(prims) * len(styles)
-    raw = "; ".join(
-        f"{p}: " + ", ".join(f"{s} {model(p, s)['pose_sd']:.2f}" for s in ["neutral", *styles]) for p in prims
-    )
-    ratios = "; ".join(f"{p}: " + ", ".join(f"{s} {ratio[(p, s)]:.3f}" for s in ["neutral", *styles]) for p in prims)
     measured = (
-        f"{len(lower_raw)} of {n_style} CVAEs below the neutral VAE's pose_SD ({raw}); diagnostic, relative to "
-        f"each style's own clips (pose_SD / own clips'): {len(lower_own)} of {n_style} below the neutral's ({ratios})"
+        f"{len(lower_raw)} of {n_style} CVAEs below the neutral VAE's pose_SD; diagnostic, relative to each "
+        f"style's own clips: {len(lower_own)} of {n_style} (per model: the table's pose_sd, pose_sd_own_ratio)"
     )
     if (collapsed := _collapsed_models(m, ["neutral", *styles])) is not None:
         return Judgement(collapsed.verdict, measured, note=collapsed.note)
