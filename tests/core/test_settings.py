@@ -115,3 +115,13 @@ def test_replace_reaches_into_a_subsection_by_double_underscore():
     assert after.fig6.unit == before.fig6.unit and before.fig6.max_clips == 0
     with pytest.raises(TypeError):
         before.replace(fig6__no_such_key=1)
+
+
+def test_renamed_keys_of_a_section_and_its_subsections():
+    """A section's former keys as dotted config keys, its subsections' included (the workflow
+    stops a config that uses one, naming the key now)."""
+    from motionvar.ma2010.settings import Ma2010Settings
+
+    renamed = Ma2010Settings.renamed_keys()
+    assert renamed["ma2010.loo_max_clips"] == "ma2010.fig6.max_clips"
+    assert renamed["ma2010.sec7_4.dbn_max_parents"] == "ma2010.sec7_4.dbn_max_parents_sweep"

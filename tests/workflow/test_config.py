@@ -248,6 +248,8 @@ def run_dry(tmp_path, config_text):
         ("idle: {seed: 1}\n", "config key idle is now egges2004"),
         ("style: {gif_panel_px: 150}\n", "config key style is now du2022_style"),
         ("graph: {seed: 1}\n", "config key graph is now du2022_graph"),
+        ("ma2010: {loo_max_clips: 3}\n", "config key ma2010.loo_max_clips is now ma2010.fig6.max_clips"),
+        ("ma2010: {sec7_4: {dbn_max_parents: 8}}\n", "config key ma2010.sec7_4.dbn_max_parents is now"),
         ('datasets:\n  "ab\\n": {source: synthetic}\n', "config key datasets: 'ab\\n' does not match"),
         ("stability: {folder: results/..}\n", "config key stability.folder: 'results/..' does not match"),
     ],

@@ -61,6 +61,7 @@ PRIORITY = {
 # few evaluations that write or bring more than their table, figure and claims, those outputs
 # (EVALUATION_ADDITIONS).
 from motionvar.claim_catalog import EVALUATIONS as _DECLARED
+from motionvar.ma2010.settings import Ma2010Settings
 
 # name -> the library's declaration (motionvar.claims.Evaluation)
 EVALUATIONS = {e.name: e for e in _DECLARED}
@@ -77,6 +78,8 @@ RENAMED_CONFIG_KEYS = {
     "fda": "du2022_fda",
     "graph": "du2022_graph",
     "style": "du2022_style",
+    # Ma 2010's former keys: its flat section's and older names (Ma2010Settings.RENAMED, nested)
+    **Ma2010Settings.renamed_keys(),
 }
 
 

@@ -52,6 +52,18 @@ class Settings:
         except (TypeError, ValueError) as exc:
             raise ValueError(f"config section {where}: {exc}") from None
 
+    @classmethod
+    def renamed_keys(cls, prefix: str = "") -> dict[str, str]:
+        """Every former key of this section and its subsections (``RENAMED``) -> its name now, both
+        as dotted config keys under ``prefix`` (the section's own key by default)."""
+        prefix = prefix or cls.SECTION
+        out = {f"{prefix}.{old}": f"{prefix}.{new}" for old, new in cls.RENAMED.items()}
+        for name, hint in typing.get_type_hints(cls).items():
+            sub = _settings_class(hint)
+            if sub is not None:
+                out.update(sub.renamed_keys(f"{prefix}.{name}"))
+        return out
+
     def to_dict(self) -> dict[str, Any]:
         """The settings as a config mapping (nested dicts, lists for tuples)."""
         return {f.name: _plain(getattr(self, f.name)) for f in dataclasses.fields(self)}
