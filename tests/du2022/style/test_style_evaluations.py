@@ -165,7 +165,9 @@ def test_evaluate_table5_2(style_run, layout):
     n_own = int((ratio[["proud", "old"]] < ratio["neutral"]).sum())
     n_raw = int((tt.loc[["proud", "old"], "pose_sd"] < tt.loc["neutral", "pose_sd"]).sum())
     assert result.claims[2].measured.startswith(f"{n_raw} of 2 CVAEs below the neutral VAE's pose_SD")
-    assert f"relative to each style's own clips: {n_own} of 2 (per model: the table's pose_sd" in result.claims[2].measured
+    assert (
+        f"relative to each style's own clips: {n_own} of 2 (per model: the table's pose_sd" in result.claims[2].measured
+    )
     if judged[2]:
         assert result.claims[2].verdict == {2: "reproduced", 1: "partial", 0: "not reproduced"}[n_raw]
         assert result.claims[2].value == n_raw / 2
