@@ -57,9 +57,14 @@ SETTINGS = {
 }  # config section ma2010
 
 
-def walks_folder(tmp_path, styles, n_cycles=3):
-    """A packed dataset of toy walkers of growing stride, one per style in ``styles``."""
-    motions = [toy_walk(hip_amp=0.3 + 0.03 * i, arm_amp=0.2 + 0.1 * i, n_cycles=n_cycles) for i in range(len(styles))]
+def walks_folder(folder, styles, n_cycles=3, hip_growth=0.0):
+    """``folder`` holding a packed dataset of toy walkers of growing stride, one per style in
+    ``styles``; with ``hip_growth``, walkers 1 and 2 of every three lengthen their strides as they
+    walk by that much and twice that (a steady walker's two support strides are equal)."""
+    motions = [
+        toy_walk(hip_amp=0.3 + 0.03 * i, arm_amp=0.2 + 0.1 * i, n_cycles=n_cycles, hip_growth=hip_growth * (i % 3))
+        for i in range(len(styles))
+    ]
     meta = pd.DataFrame(
         {
             "clip_id": [f"w{i}" for i in range(len(styles))],
@@ -69,8 +74,8 @@ def walks_folder(tmp_path, styles, n_cycles=3):
             "variant": "forward",
         }
     )
-    save_dataset(tmp_path / "data", motions, meta)
-    return tmp_path / "data"
+    save_dataset(folder, motions, meta)
+    return folder
 
 
 def clips_fake(tmp_path, data):

@@ -95,7 +95,7 @@ def test_model_rule_scripts_save_what_the_command_loads(tmp_path):
 
     for helper in ("_ma2010", "_graph", "_style"):
         rule_scripts.helper_module(helper)
-    out, fake = clips_fake(tmp_path, walks_folder(tmp_path, ["neutral"] * 3))
+    out, fake = clips_fake(tmp_path, walks_folder(tmp_path / "data", ["neutral"] * 3))
     run_rule(fake, script("ma2010_clips").main)
     options = {"structure": "auto", "variogram_model": "linear", "root_group": "legs"}
     run_rule(

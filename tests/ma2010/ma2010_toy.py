@@ -6,14 +6,13 @@ import json
 
 import matplotlib
 import matplotlib.pyplot as plt
-import pandas as pd
 from claim_checks import check_value_bound
-from ma2010_toywalk import toy_walk
+from ma2010_toywalk import walks_folder
 
 from motionvar.claim_catalog import spec
 from motionvar.claims import VERDICTS
 from motionvar.core import cmu_joint_map
-from motionvar.io import load_dataset, save_dataset
+from motionvar.io import load_dataset
 from motionvar.ma2010.evaluations.common import PAPER
 from motionvar.ma2010.settings import Ma2010Settings
 
@@ -32,21 +31,7 @@ LINEAR = TOY.replace(model__variogram_model="linear")
 def toy_dataset(path, styles, n_cycles=3):
     """Toy walkers of growing stride, some lengthening their strides as they walk (a steady
     walker's two support strides are equal: the style space would be a line)."""
-    motions = [
-        toy_walk(hip_amp=0.3 + 0.03 * i, arm_amp=0.2 + 0.1 * i, n_cycles=n_cycles, hip_growth=0.03 * (i % 3))
-        for i in range(len(styles))
-    ]
-    meta = pd.DataFrame(
-        {
-            "clip_id": [f"w{i}" for i in range(len(styles))],
-            "subject": [f"{i:02d}" for i in range(len(styles))],
-            "behaviour": "walk",
-            "style": styles,
-            "variant": "forward",
-        }
-    )
-    save_dataset(path, motions, meta)
-    return load_dataset(path)
+    return load_dataset(walks_folder(path, styles, n_cycles, hip_growth=0.03))
 
 
 def check(result, draw, claim_prefix):

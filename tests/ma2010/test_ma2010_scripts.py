@@ -17,7 +17,7 @@ rule_scripts.helper_module("_ma2010")
 
 
 def test_clips_script_writes_the_cycles_as_a_model_file(tmp_path):
-    out, fake = clips_fake(tmp_path, walks_folder(tmp_path, ["neutral"] * 3))
+    out, fake = clips_fake(tmp_path, walks_folder(tmp_path / "data", ["neutral"] * 3))
     run(fake, script("ma2010_clips").main)
     table = pd.read_csv(out / "walk_cycles.csv")
     with np.load(out / "walk_clips.npz", allow_pickle=False) as z:
@@ -32,7 +32,7 @@ def test_clips_script_writes_the_cycles_as_a_model_file(tmp_path):
     [(["proud", "proud"], 3, "config ma2010.clips.walk_styles"), (["neutral"], 1.2, "need at least 3")],
 )
 def test_clips_script_names_the_problem(tmp_path, capsys, styles, n_cycles, expected):
-    out, fake = clips_fake(tmp_path, walks_folder(tmp_path, styles, n_cycles))
+    out, fake = clips_fake(tmp_path, walks_folder(tmp_path / "data", styles, n_cycles))
     with pytest.raises(SystemExit):
         run(fake, script("ma2010_clips").main)
     err = capsys.readouterr().err
@@ -41,7 +41,7 @@ def test_clips_script_names_the_problem(tmp_path, capsys, styles, n_cycles, expe
 
 
 def test_evaluation_scripts_reject_a_stale_cycle_table(tmp_path, capsys):
-    out, fake = clips_fake(tmp_path, walks_folder(tmp_path, ["neutral"] * 3))
+    out, fake = clips_fake(tmp_path, walks_folder(tmp_path / "data", ["neutral"] * 3))
     run(fake, script("ma2010_clips").main)
     table = pd.read_csv(out / "walk_cycles.csv")
     table.iloc[:-1].to_csv(out / "walk_cycles.csv", index=False)

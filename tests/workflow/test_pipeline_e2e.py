@@ -8,17 +8,14 @@ import re
 import shutil
 import subprocess
 import sys
-from pathlib import Path
 
 import pandas as pd
 import pytest
 from claim_checks import NOTE_CHARS, NOTE_SENTENCES, sentences
+from pipeline_runs import CI_CONFIG, ROOT, run_snakemake
 
 from motionvar.claims import CLAIM_COLUMNS
 
-ROOT = Path(__file__).resolve().parents[2]
-SNAKEFILE = str(ROOT / "Snakefile")
-CI_CONFIG = str(ROOT / "config" / "ci.yaml")
 # The CI run, all papers' rules included, must stay under 5 minutes on 2 cores. Wall time
 # on a shared machine says more about the neighbours than about the pipeline, so the test
 # bounds the CPU time of the whole process tree (contention does not inflate it): at most
@@ -26,16 +23,6 @@ CI_CONFIG = str(ROOT / "config" / "ci.yaml")
 CI_BUDGET_S = 300
 CI_CPU_BUDGET_S = 2 * CI_BUDGET_S * 0.8
 WALL_GUARD_S = 3 * CI_BUDGET_S
-
-
-def snakemake(*args, cwd, timeout=900):
-    return subprocess.run(
-        [sys.executable, "-m", "snakemake", "-s", SNAKEFILE, *args],
-        cwd=cwd,
-        capture_output=True,
-        text=True,
-        timeout=timeout,
-    )
 
 
 # ci_run (tests/conftest.py): the run of config/ci.yaml, once per session (shared with
@@ -127,7 +114,7 @@ def test_a_key_one_rule_reads_reruns_that_rule_only(ci_run, tmp_path, edit):
     follows from its outputs, and nothing it does not feed (dry run)."""
     work, edited = ci_run[0], tmp_path / "edited.yaml"
     edited.write_text(edit)
-    result = snakemake("-d", str(work), "--configfile", CI_CONFIG, str(edited), "-n", cwd=work, timeout=300)
+    result = run_snakemake("-d", str(work), "--configfile", CI_CONFIG, str(edited), "-n", cwd=work, timeout=300)
     assert result.returncode == 0, result.stdout[-2000:] + result.stderr[-4000:]
     planned = set(re.findall(r"^(?:local)?rule (\w+):", result.stdout + result.stderr, flags=re.M))
     reruns, spared = NARROW_EDITS[edit]
@@ -139,7 +126,7 @@ def test_dry_run_through_the_default_profile_writes_no_report(ci_run):
     work = ci_run[0]
     report = work / "reports" / "synthetic.html"
     before = report.stat().st_mtime_ns
-    result = snakemake("-d", str(work), "--configfile", CI_CONFIG, "-n", cwd=work, timeout=300)
+    result = run_snakemake("-d", str(work), "--configfile", CI_CONFIG, "-n", cwd=work, timeout=300)
     assert result.returncode == 0, result.stdout[-2000:] + result.stderr[-4000:]
     assert report.stat().st_mtime_ns == before and len(list((work / "reports").iterdir())) == 1
 
@@ -167,7 +154,7 @@ def test_a_single_target_or_another_dataset_leaves_the_first_report(ci_run, tmp_
     before = first.stat().st_mtime_ns
 
     def ran(*args):
-        result = snakemake("-d", str(second), "--rerun-triggers", "mtime", "--cores", "1", *args, cwd=second)
+        result = run_snakemake("-d", str(second), "--rerun-triggers", "mtime", "--cores", "1", *args, cwd=second)
         assert result.returncode == 0, result.stdout[-2000:] + result.stderr[-4000:]
         return set(re.findall(r"^(?:local)?rule (\w+):", result.stdout + result.stderr, flags=re.M))
 
@@ -250,5 +237,5 @@ def test_motionvar_command_generates_from_the_ci_models(ci_run, tmp_path):
 
 @pytest.mark.e2e
 def test_lint_is_clean(tmp_path):
-    result = snakemake("--lint", cwd=ROOT, timeout=120)
+    result = run_snakemake("--lint", cwd=ROOT, timeout=120)
     assert result.returncode == 0, result.stdout + result.stderr

@@ -6,7 +6,7 @@ applicable, and those that need the hands or toes this rig lacks say so."""
 
 import pandas as pd
 import pytest
-from test_pipeline_e2e import ROOT
+from pipeline_runs import ROOT
 from test_real_data_e2e import run_real_config
 
 from motionvar.claims import CHECKED_VERDICTS

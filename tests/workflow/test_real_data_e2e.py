@@ -7,7 +7,7 @@ import shutil
 
 import pandas as pd
 import pytest
-from test_pipeline_e2e import CI_CONFIG, ROOT, snakemake
+from pipeline_runs import CI_CONFIG, ROOT, run_snakemake
 
 from motionvar.claims import CHECKED_VERDICTS
 
@@ -23,7 +23,7 @@ pytestmark = [
 def run_real_config(work, dataset: str, *more: str) -> None:
     """Run config/real/<dataset>.yaml, reduced by config/ci.yaml, in ``work`` (which has a
     reports/ folder), with ``more`` arguments; assert it ends clean."""
-    result = snakemake(
+    result = run_snakemake(
         "-d",
         str(work),
         "--configfile",
