@@ -33,6 +33,20 @@ CASES = {
     ),
     # rules gif_page_*: an HTML page around a GIF
     "gif page": ("from motionvar.plots import gif_page", ["matplotlib", "pandas", "scipy", "torch"]),
+    # reading and writing BVH (scipy's Rotation only where a motion is converted with it)
+    "bvh io": ("import motionvar.io", ["scipy.spatial", "sklearn", "matplotlib", "torch"]),
+    # a fitted Ma 2010 model: its users never find key frames (scipy.signal, scikit-learn's PCA)
+    "ma2010 model": (
+        "from motionvar.ma2010.storage import load_style_variation_model",
+        ["scipy.signal", "sklearn", "matplotlib", "torch"],
+    ),
+    # Du 2022 Fig. 3.10's error curves: the FPCA variants need neither torch nor sklearn.metrics
+    "du2022 fda curves": (
+        f"import sys, types; sys.path.insert(0, {str(SCRIPTS)!r}); import _du2022_fda; "
+        "_du2022_fda.setup_threads(types.SimpleNamespace(threads=1)); "
+        "from motionvar.du2022.fda.evaluations import reconstruction_curves",
+        ["sklearn.metrics", "torch"],
+    ),
     # the Egges 2004 evaluations of a fitted model (fitting it needs scikit-learn; they do not)
     "egges2004 evaluations": (
         "from motionvar.egges2004.storage import load_idle_model; "

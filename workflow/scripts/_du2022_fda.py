@@ -8,9 +8,15 @@ from pathlib import Path
 
 
 def setup_threads(snakemake) -> None:
-    import torch
+    """torch's intra-op threads = the job's, without importing torch: only the methods that
+    need it import it (SFPCA, the GPLVM), and torch reads ``OMP_NUM_THREADS`` when it starts."""
+    import os
+    import sys
 
-    torch.set_num_threads(max(int(snakemake.threads), 1))
+    n = max(int(snakemake.threads), 1)
+    os.environ["OMP_NUM_THREADS"] = str(n)
+    if "torch" in sys.modules:
+        sys.modules["torch"].set_num_threads(n)
 
 
 def canonical(snakemake):

@@ -9,8 +9,12 @@ hemisphere continuity and the sinusoidal rotational distance of Ma et al. 2010, 
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 import numpy as np
-from scipy.spatial.transform import Rotation
+
+if TYPE_CHECKING:
+    from scipy.spatial.transform import Rotation
 
 _EPS = 1e-12
 
@@ -127,6 +131,8 @@ def qangle(q1: np.ndarray, q2: np.ndarray) -> np.ndarray:
 
 def quat_to_scipy(q: np.ndarray) -> Rotation:
     """Flat scipy Rotation from scalar-first quaternions (..., 4)."""
+    from scipy.spatial.transform import Rotation  # lazily: most callers never convert
+
     return Rotation.from_quat(q.reshape(-1, 4), scalar_first=True)
 
 

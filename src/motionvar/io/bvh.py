@@ -32,10 +32,9 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
-from scipy.spatial.transform import Rotation
 
 from ..core.motion import Motion
-from ..core.quaternions import euler_to_quat, qfix, quat_to_euler
+from ..core.quaternions import euler_to_quat, qfix, quat_to_euler, quat_to_scipy
 from ..core.skeleton import Skeleton
 from .atomic import atomic_write
 
@@ -545,9 +544,7 @@ def write_bvh(path: str | Path, motion: Motion, scale: float = 1.0, fmt: str = "
     _check_writable(motion, path)
     motion = motion.copy()
     motion.rotations = (
-        Rotation.from_quat(motion.rotations.reshape(-1, 4), scalar_first=True)
-        .as_quat(scalar_first=True)
-        .reshape(motion.rotations.shape)
+        quat_to_scipy(motion.rotations).as_quat(scalar_first=True).reshape(motion.rotations.shape)
     )  # normalised; raises on zero quaternions
     data = _channel_data(motion, scale)
     lines = _hierarchy_text(motion.skeleton, scale, fmt)

@@ -19,8 +19,6 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.signal import find_peaks
-from sklearn.decomposition import PCA
 
 
 @dataclass(frozen=True)
@@ -46,6 +44,8 @@ def part_scores(positions: np.ndarray, joints: np.ndarray, n_components: int | N
         n_components: principal components kept (None: all, then ||P*(t)|| is the
             distance from the mean pose).
     """
+    from sklearn.decomposition import PCA  # here: the model's users never find key frames
+
     rel = positions[:, joints] - positions[:, :1]
     flat = rel.reshape(len(positions), -1)
     k = min(flat.shape) if n_components is None else min(n_components, *flat.shape)
@@ -86,6 +86,8 @@ def find_extrema(signal: np.ndarray, min_prominence: float, min_distance: int = 
         (frames, kinds): increasing frame indices and +1 (maximum) / -1 (minimum); two
         neighbours of the same kind are merged into the more extreme one.
     """
+    from scipy.signal import find_peaks  # here: the model's users never find key frames
+
     s = np.asarray(signal, dtype=float)
     span = float(np.ptp(s)) if len(s) else 0.0
     if span <= 0:

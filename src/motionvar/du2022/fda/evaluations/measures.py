@@ -6,7 +6,6 @@ apart in a latent space (Fig. 3.11).
 from __future__ import annotations
 
 import numpy as np
-from sklearn.metrics import silhouette_score
 
 from ..functions import FunctionalMotions
 
@@ -60,6 +59,8 @@ def knn_accuracy(latent: np.ndarray, labels: np.ndarray, k: int = 5) -> float:
 
 def latent_separation(latent: np.ndarray, labels: np.ndarray, k: int = 5) -> dict[str, float]:
     """Silhouette score and leave-one-out k-NN accuracy of the labels in a latent space."""
+    from sklearn.metrics import silhouette_score  # here: the error curves need no scikit-learn
+
     labels = np.asarray(labels)
     if len(np.unique(labels)) < 2:
         raise ValueError("latent_separation: need at least two distinct labels")
