@@ -20,3 +20,34 @@ def run_snakemake(*args, cwd, timeout=900, env=None):
         timeout=timeout,
         env=env,
     )
+
+
+# A reference job: what a typical rule job does, in a fresh interpreter on one thread (the
+# imports of the rules' stack, then some dense linear algebra in numpy and torch). The CI
+# pipeline's cost is bounded in reference jobs measured in the same session, not in CPU
+# seconds: this machine's speed varies by tens of percent from day to day and with its
+# neighbours, and a reference job measured beside the pipeline varies with it.
+REFERENCE_JOB = (
+    "import numpy, scipy.linalg, pandas, sklearn.decomposition, torch, matplotlib\n"
+    "matplotlib.use('Agg')\n"
+    "import matplotlib.pyplot\n"
+    "a = numpy.random.default_rng(0).standard_normal((300, 300))\n"
+    "for _ in range(30): scipy.linalg.eigh(a @ a.T)\n"
+    "t = torch.from_numpy(a)\n"
+    "for _ in range(30): torch.linalg.eigh(t @ t.T)\n"
+)
+ONE_THREAD = {k: "1" for k in ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS")}
+
+
+def reference_job_cpu(repeats: int = 2) -> list[float]:
+    """CPU seconds (user + system) of ``repeats`` runs of :data:`REFERENCE_JOB`."""
+    import os
+    import resource
+
+    out = []
+    for _ in range(repeats):
+        before = resource.getrusage(resource.RUSAGE_CHILDREN)
+        subprocess.run([sys.executable, "-c", REFERENCE_JOB], check=True, env={**os.environ, **ONE_THREAD})
+        after = resource.getrusage(resource.RUSAGE_CHILDREN)
+        out.append((after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime))
+    return out

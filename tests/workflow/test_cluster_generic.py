@@ -118,7 +118,7 @@ def test_every_job_went_through_the_scheduler(cluster_run):
 @pytest.mark.e2e
 def test_cluster_outputs_equal_the_local_ones(cluster_run, ci_run):
     work, _, _ = cluster_run
-    local = ci_run[0]
+    local = ci_run.work
     cols = ["claim_id", "verdict", "value"]
     for name in CLAIMS:
         ours = pd.read_json(work / name)[cols]

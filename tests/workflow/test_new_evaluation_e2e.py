@@ -93,7 +93,7 @@ def _project_with_toy(folder: Path) -> Path:
 def test_a_new_evaluation_is_one_declaration_and_its_caption(ci_run, tmp_path):
     project = _project_with_toy(tmp_path / "project")
     work = tmp_path / "work"
-    shutil.copytree(ci_run[0], work, symlinks=True, ignore=shutil.ignore_patterns(".snakemake"))
+    shutil.copytree(ci_run.work, work, symlinks=True, ignore=shutil.ignore_patterns(".snakemake"))
     env = {**os.environ, "PYTHONPATH": str(project / "src")}
     result = subprocess.run(
         [sys.executable, "-m", "snakemake", "-s", str(project / "Snakefile"), "-d", str(work)]

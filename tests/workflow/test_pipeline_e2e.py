@@ -16,12 +16,16 @@ from pipeline_runs import CI_CONFIG, ROOT, run_snakemake
 
 from motionvar.claims import CLAIM_COLUMNS
 
-# The CI run, all papers' rules included, must stay under 5 minutes on 2 cores. Wall time
-# on a shared machine says more about the neighbours than about the pipeline, so the test
-# bounds the CPU time of the whole process tree (contention does not inflate it): at most
-# 2 cores x 300 s at 80 % parallel efficiency. The wall time is printed and loosely bounded.
+# The CI run, all papers' rules included, must stay under 5 minutes on 2 cores: 2 cores x 300 s
+# at 80 % parallel efficiency, 480 CPU-s of the whole process tree (wall time says more about
+# the neighbours than about the pipeline). In CPU seconds that bound would move with the
+# machine's speed, so it is kept in reference jobs (tests/pipeline_runs.py) measured in the same
+# session: on the 2-core machine where the bound was converted (2026-12-05, quiet) a reference
+# job took 6.9 CPU-s, so 480 CPU-s are 70 of them. The wall time is printed and loosely bounded.
 CI_BUDGET_S = 300
 CI_CPU_BUDGET_S = 2 * CI_BUDGET_S * 0.8
+REFERENCE_JOB_CPU_S = 6.9
+CI_BUDGET_REFERENCE_JOBS = round(CI_CPU_BUDGET_S / REFERENCE_JOB_CPU_S)
 WALL_GUARD_S = 3 * CI_BUDGET_S
 
 
@@ -31,16 +35,17 @@ WALL_GUARD_S = 3 * CI_BUDGET_S
 
 @pytest.mark.e2e
 def test_ci_pipeline_fits_the_budget(ci_run):
-    _, wall, cpu, _ = ci_run
-    assert cpu < CI_CPU_BUDGET_S, (
-        f"CI pipeline used {cpu:.0f} CPU-s, budget {CI_CPU_BUDGET_S:.0f} (5 min on 2 cores): reduce sizes in config/ci.yaml"
+    jobs = ci_run.cpu_s / ci_run.reference_cpu_s
+    assert jobs < CI_BUDGET_REFERENCE_JOBS, (
+        f"CI pipeline used {ci_run.cpu_s:.0f} CPU-s = {jobs:.1f} reference jobs of {ci_run.reference_cpu_s:.2f} "
+        f"CPU-s, budget {CI_BUDGET_REFERENCE_JOBS} (5 min on 2 cores): reduce sizes in config/ci.yaml"
     )
-    assert wall < WALL_GUARD_S, f"CI pipeline took {wall:.0f} s wall (CPU {cpu:.0f} s)"
+    assert ci_run.wall_s < WALL_GUARD_S, f"CI pipeline took {ci_run.wall_s:.0f} s wall (CPU {ci_run.cpu_s:.0f} s)"
 
 
 @pytest.mark.e2e
 def test_report_holds_the_data_figures_and_the_claims(ci_run):
-    work, _, _, _ = ci_run
+    work = ci_run.work
     report = work / "reports" / "synthetic.html"
     assert report.is_file() and sorted(p.name for p in (work / "reports").iterdir()) == ["synthetic.html"]
     html = report.read_text(encoding="utf-8", errors="replace")
@@ -62,7 +67,7 @@ def test_report_holds_the_data_figures_and_the_claims(ci_run):
 @pytest.mark.e2e
 def test_every_note_of_the_ci_run_is_at_most_three_sentences(ci_run):
     """Every claim's note in the CI run's claims table, not only those with a negative control."""
-    claims = pd.read_csv(ci_run[0] / "results" / "synthetic" / "claims.csv", keep_default_na=False)
+    claims = pd.read_csv(ci_run.work / "results" / "synthetic" / "claims.csv", keep_default_na=False)
     long = [
         (c, len(n))
         for c, n in zip(claims["claim_id"], claims["note"])
@@ -79,7 +84,7 @@ def test_ci_synthetic_data_lies_in_the_captured_bands(ci_run):
     (test_realism_seeds.IDLE_OUTSIDE)."""
     from realism_known import IDLE_OUTSIDE
 
-    table = pd.read_csv(ci_run[0] / "results" / "synthetic" / "tables" / "dataset_realism.csv")
+    table = pd.read_csv(ci_run.work / "results" / "synthetic" / "tables" / "dataset_realism.csv")
     gating = table[table["gates"].astype(bool)].set_index(["statistic", "behaviour"])
     for stat, behaviour in (("stride_within_between", "walk"), ("reach_multi_peak_share", "pick")):
         row = gating.loc[(stat, behaviour)]
@@ -112,7 +117,7 @@ NARROW_EDITS = {
 def test_a_key_one_rule_reads_reruns_that_rule_only(ci_run, tmp_path, edit):
     """Rules read what they use: an edit of a key that one rule reads reruns that rule and what
     follows from its outputs, and nothing it does not feed (dry run)."""
-    work, edited = ci_run[0], tmp_path / "edited.yaml"
+    work, edited = ci_run.work, tmp_path / "edited.yaml"
     edited.write_text(edit)
     result = run_snakemake("-d", str(work), "--configfile", CI_CONFIG, str(edited), "-n", cwd=work, timeout=300)
     assert result.returncode == 0, result.stdout[-2000:] + result.stderr[-4000:]
@@ -123,7 +128,7 @@ def test_a_key_one_rule_reads_reruns_that_rule_only(ci_run, tmp_path, edit):
 
 @pytest.mark.e2e
 def test_dry_run_through_the_default_profile_writes_no_report(ci_run):
-    work = ci_run[0]
+    work = ci_run.work
     report = work / "reports" / "synthetic.html"
     before = report.stat().st_mtime_ns
     result = run_snakemake("-d", str(work), "--configfile", CI_CONFIG, "-n", cwd=work, timeout=300)
@@ -139,7 +144,7 @@ def test_a_single_target_or_another_dataset_leaves_the_first_report(ci_run, tmp_
     it was. The second dataset's results are the CI run's files (hard links; a job's
     outputs, log and benchmark are written anew, never through a link), so the run has
     only its report to build."""
-    work = ci_run[0]
+    work = ci_run.work
     second = tmp_path / "work"
     for name in ("synthetic", "synthetic_b"):
         shutil.copytree(work / "results" / "synthetic", second / "results" / name, copy_function=os.link)
@@ -176,7 +181,7 @@ def test_a_single_target_or_another_dataset_leaves_the_first_report(ci_run, tmp_
 
 @pytest.mark.e2e
 def test_every_rule_has_a_benchmark_and_a_log(ci_run):
-    work, _, _, result = ci_run
+    work, result = ci_run.work, ci_run.result
     ran = set(re.findall(r"^(?:local)?rule (\w+):", result.stdout + result.stderr, flags=re.M)) - {"all"}
     assert {"data", "preprocess", "dataset_overview", "dataset_animation", "claims", "claims_summary"} <= ran
     results = work / "results" / "synthetic"
@@ -196,7 +201,7 @@ def test_motionvar_command_generates_from_the_ci_models(ci_run, tmp_path):
     from motionvar.io.bvh import read_bvh
     from motionvar.ma2010.storage import load_style_variation_model
 
-    work = ci_run[0]
+    work = ci_run.work
     models = work / "results" / "synthetic" / "models"
 
     def cli(*args):

@@ -116,7 +116,7 @@ def test_autoencoder_rule_log_shows_epochs_at_the_interval(tmp_path, monkeypatch
 def test_ci_run_logs_show_progress_at_the_interval(ci_run):
     """Every progress line in the CI run's logs follows the format and, within its loop,
     the interval; the SFPCA, GPLVM and style training rules log theirs."""
-    logs = ci_run[0] / "results" / "synthetic" / "logs"
+    logs = ci_run.work / "results" / "synthetic" / "logs"
     labels = set()
     for path in sorted(logs.rglob("*.log")):
         for loop in progress_runs(path.read_text(errors="replace")):
