@@ -127,6 +127,29 @@ def test_a_key_one_rule_reads_reruns_that_rule_only(ci_run, tmp_path, edit):
 
 
 @pytest.mark.e2e
+@pytest.mark.parametrize(
+    "edit, planned_rules",
+    [
+        ("model: {trend_rcond: 1.0e-12}", {"ma2010_model"}),
+        ("seed: 7", set()),
+        ("clips: {n_frames: 30}", {"ma2010_clips", "ma2010_model"}),
+    ],
+    ids=["model", "seed", "clips"],
+)
+def test_ma2010s_stages_rerun_for_their_own_subsection(ci_run, tmp_path, edit, planned_rules):
+    """Rules ma2010_clips and ma2010_model are given only ma2010.clips and ma2010.model: the
+    model's file rebuilds the cycles for an edit of clips alone (dry run of that target; the
+    default target would stop at the applicability checkpoint, which reads the whole section)."""
+    work, edited = ci_run.work, tmp_path / "edited.yaml"
+    edited.write_text(f"ma2010:\n  {edit}\n")
+    target = "results/synthetic/models/ma2010/style_variation.npz"
+    result = run_snakemake("-d", str(work), "--configfile", CI_CONFIG, str(edited), "-n", target, cwd=work, timeout=300)
+    assert result.returncode == 0, result.stdout[-2000:] + result.stderr[-4000:]
+    planned = set(re.findall(r"^(?:local)?rule (\w+):", result.stdout + result.stderr, flags=re.M))
+    assert planned == planned_rules, planned
+
+
+@pytest.mark.e2e
 def test_dry_run_through_the_default_profile_writes_no_report(ci_run):
     work = ci_run.work
     report = work / "reports" / "synthetic.html"

@@ -36,17 +36,41 @@ def param_names(rule):
     return list(getattr(rule.params, "_names", {}))
 
 
+# stages given only the subsections they read (section_for's ``only``): rule -> (section, the
+# subsections, the functions that get its settings object: file, qualified name)
+STAGES = {
+    "ma2010_clips": (
+        "ma2010",
+        ("clips",),
+        [("workflow/scripts/ma2010_clips.py", "main"), ("src/motionvar/ma2010/examples.py", "walk_cycles")],
+    ),
+    "ma2010_model": (
+        "ma2010",
+        ("model",),
+        [
+            ("workflow/scripts/ma2010_model.py", "main"),
+            ("workflow/scripts/_ma2010.py", "load_walks"),
+            ("src/motionvar/ma2010/examples.py", "WalkCycles.fit_model"),
+            ("src/motionvar/ma2010/svi.py", "style_variation_model"),
+        ],
+    ),
+}
+
+
 def _given(section, rule, config):
-    """Config section ``section`` less the keys evaluations other than ``rule`` own."""
+    """Config section ``section`` as rule ``rule`` gets it: less the keys evaluations other than
+    ``rule`` own, or only the subsections a stage reads (STAGES)."""
     from motionvar.claim_catalog import EVALUATIONS
 
+    if rule in STAGES and STAGES[rule][0] == section:
+        return {k: v for k, v in config[section].items() if k in STAGES[rule][1]}
     owned = {k for e in EVALUATIONS if e.section == section and e.name != rule for k in e.own_keys}
     return {k: v for k, v in config[section].items() if k not in owned}
 
 
 def test_every_settings_param_is_its_section_less_what_others_own(workflow):
     """``params.settings`` is one config section less the keys that other evaluations own
-    (``Evaluation.own_keys``); a param named after a further section is that section's keys the
+    (``Evaluation.own_keys``), or a stage's subsections (STAGES); a param named after a further section is that section's keys the
     rule reads, as the config sets them."""
     config = workflow.config
     checked = []
@@ -60,11 +84,12 @@ def test_every_settings_param_is_its_section_less_what_others_own(workflow):
             if name != "settings" and not (isinstance(value, dict) and name in SECTIONS):
                 continue
             sections = [s for s in SECTIONS if s in config and _given(s, rule.name, config) == value]
-            assert sections, f"rule {rule.name}: params.{name} is not one config section less what others own"
+            assert sections, f"rule {rule.name}: params.{name} is not one config section as _given says"
             built = settings_class(sections[0]).from_dict(value).to_dict()
             assert {k: built[k] for k in value} == value, f"rule {rule.name}: {sections[0]} does not round-trip"
             checked.append(rule.name)
     assert "dataset_overview" in checked and "ma2010_sec7_4" in checked and "du2022_style_cvae" in checked
+    assert set(STAGES) <= set(checked)
     cvae = next(r for r in workflow.rules if r.name == "du2022_style_cvae")
     assert "gif_panel_px" not in cvae.params.settings and "cvae" in cvae.params.settings
 
@@ -151,3 +176,43 @@ def test_an_evaluations_own_keys_are_read_by_its_code_alone():
                 and re.search(rf"\bimport\b.*\b{stem}\b|\b{stem}\b import", f.read_text())
             ]
             assert not users, f"{helper} runs for {d.name} only, but {users} import it"
+
+
+def _function(path: Path, qualname: str):
+    import ast
+
+    node = ast.parse(path.read_text())
+    for part in qualname.split("."):
+        node = next(n for n in ast.walk(node) if getattr(n, "name", None) == part)
+    return node
+
+
+def test_a_stage_reads_only_the_subsections_it_is_given():
+    """The functions that get a stage's settings object (STAGES) read no other field of it, and
+    pass it on to none but each other; so an edit the stage is not given cannot change it."""
+    import ast
+
+    for rule, (section, keep, functions) in STAGES.items():
+        fields = set(settings_class(section).__dataclass_fields__)
+        names = {q.rpartition(".")[2] for _, q in functions}
+        for path, qualname in functions:
+            fn = _function(ROOT / path, qualname)
+            bound = {a.arg for a in fn.args.args if a.arg in ("settings", "s")}
+            bound |= {
+                t.id
+                for n in ast.walk(fn)
+                if isinstance(n, ast.Assign)
+                for t in n.targets
+                if isinstance(t, ast.Name) and t.id in ("settings", "s")
+            }
+            assert bound, f"{path}: {qualname} binds no settings object"
+            read = {
+                n.attr
+                for n in ast.walk(fn)
+                if isinstance(n, ast.Attribute) and isinstance(n.value, ast.Name) and n.value.id in bound
+            }
+            assert read & fields <= set(keep), f"{rule}: {qualname} reads {sorted(read & fields - set(keep))}"
+            for call in (n for n in ast.walk(fn) if isinstance(n, ast.Call)):
+                if any(isinstance(a, ast.Name) and a.id in bound for a in call.args):
+                    callee = getattr(call.func, "attr", getattr(call.func, "id", ""))
+                    assert callee in names | {"settings"}, f"{rule}: {qualname} passes its settings to {callee}"

@@ -256,11 +256,14 @@ def gif_pages(dataset):
     ]
 
 
-def section_for(section, rule=""):
+def section_for(section, rule="", only=()):
     """Config section ``section`` as it is given to the rule named ``rule`` (``params.settings``),
     without the keys that other evaluations own (``Evaluation.own_keys``), so that an edit of such
-    a key reruns its evaluation alone; the rule's settings class fills them with their defaults,
-    which it never reads."""
+    a key reruns its evaluation alone; with ``only``, just those keys (a stage that reads one
+    subsection). The rule's settings class fills what is left out with its defaults, which the
+    rule never reads."""
+    if only:
+        return {k: v for k, v in config[section].items() if k in only}
     owned = {k for e in EVALUATIONS.values() if e.section == section and e.name != rule for k in e.own_keys}
     return {k: v for k, v in config[section].items() if k not in owned}
 

@@ -3,7 +3,8 @@
 # (Fig. 3, 6, 7b, 8, Sec. 7.4, Sec. 8; one rule each, made by evaluations.smk from the
 # declarations of motionvar.ma2010.catalog; their input sets in ma2010_helpers.smk).
 # Options: config.ma2010 (motionvar.ma2010.settings.Ma2010Settings; config/schema.yaml); every
-# rule passes the section as params.settings (section_for: less the keys one evaluation owns).
+# rule passes the section as params.settings (section_for: less the keys one evaluation owns;
+# the two stages before the evaluations only the subsection each reads: clips, model).
 
 include: "ma2010_helpers.smk"
 
@@ -17,7 +18,7 @@ rule ma2010_clips:
         clips_settings=f"{MA2010}/walk_clips.json",
         table=f"{MA2010}/walk_cycles.csv",
     params:
-        settings=section_for("ma2010"),
+        settings=section_for("ma2010", only=("clips",)),
         joint_map=lambda wc: joint_map_path(wc.dataset),
     log:
         ev_log("ma2010_clips"),
@@ -42,7 +43,7 @@ rule ma2010_model:
         model=MA2010_MODEL[0],
         settings=MA2010_MODEL[1],
     params:
-        settings=section_for("ma2010"),
+        settings=section_for("ma2010", only=("model",)),
         joint_map=lambda wc: joint_map_path(wc.dataset),
     log:
         ev_log("ma2010_model"),
