@@ -1,6 +1,8 @@
-"""The workflow as the tests start it: the repository's Snakefile and CI config, and a Snakemake
-subprocess in a working directory."""
+"""The workflow as the tests start it: the repository's Snakefile and CI config, a Snakemake
+subprocess in a working directory, and the reference job its cost is counted in."""
 
+import os
+import resource
 import subprocess
 import sys
 from pathlib import Path
@@ -41,9 +43,6 @@ ONE_THREAD = {k: "1" for k in ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_N
 
 def reference_job_cpu(repeats: int = 2) -> list[float]:
     """CPU seconds (user + system) of ``repeats`` runs of :data:`REFERENCE_JOB`."""
-    import os
-    import resource
-
     out = []
     for _ in range(repeats):
         before = resource.getrusage(resource.RUSAGE_CHILDREN)
