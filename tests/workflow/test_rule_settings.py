@@ -1,6 +1,6 @@
-"""What each rule passes is its config section whole: every rule with a ``settings`` param gets
-exactly one merged, validated config section, which its settings class rebuilds without
-dropping or renaming a key; every evaluation the library declares (motionvar.<paper>.catalog)
+"""What each rule passes is its config section: every rule with a ``settings`` param gets
+exactly one merged, validated config section (less what other evaluations own, or a stage's
+subsections alone), which its settings class rebuilds without dropping or renaming a key; every evaluation the library declares (motionvar.<paper>.catalog)
 is one rule, made from the declaration, that passes its declared section and runs the generic
 script (or its own, where it writes more) with its input set's files and loader."""
 
@@ -213,6 +213,7 @@ def test_a_stage_reads_only_the_subsections_it_is_given():
             }
             assert read & fields <= set(keep), f"{rule}: {qualname} reads {sorted(read & fields - set(keep))}"
             for call in (n for n in ast.walk(fn) if isinstance(n, ast.Call)):
-                if any(isinstance(a, ast.Name) and a.id in bound for a in call.args):
+                passed = [*call.args, *(k.value for k in call.keywords)]
+                if any(isinstance(a, ast.Name) and a.id in bound for a in passed):
                     callee = getattr(call.func, "attr", getattr(call.func, "id", ""))
                     assert callee in names | {"settings"}, f"{rule}: {qualname} passes its settings to {callee}"
