@@ -9,7 +9,6 @@ so a session runs the CI pipeline locally once. Two reference jobs run before it
 
 import json
 import os
-import resource
 import statistics
 import subprocess
 import time
@@ -17,7 +16,7 @@ from pathlib import Path
 from typing import NamedTuple
 
 import pytest
-from pipeline_runs import CI_CONFIG, reference_job_cpu, run_snakemake
+from pipeline_runs import CI_CONFIG, children_cpu_s, reference_job_cpu, run_snakemake
 
 
 class CiRun(NamedTuple):
@@ -42,12 +41,11 @@ def ci_run(tmp_path_factory) -> CiRun:
         if not record.is_file():
             work.mkdir()
             references = reference_job_cpu()
-            before = resource.getrusage(resource.RUSAGE_CHILDREN)
+            before = children_cpu_s()
             start = time.perf_counter()
             result = run_snakemake("-d", str(work), "--configfile", CI_CONFIG, "--cores", "2", cwd=work)
             wall = time.perf_counter() - start
-            after = resource.getrusage(resource.RUSAGE_CHILDREN)
-            cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+            cpu = children_cpu_s() - before
             references += reference_job_cpu()
             run = {"wall": wall, "cpu": cpu, "references": references, "returncode": result.returncode}
             record.write_text(json.dumps({**run, "stdout": result.stdout, "stderr": result.stderr}))

@@ -41,12 +41,19 @@ REFERENCE_JOB = (
 ONE_THREAD = {k: "1" for k in ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS")}
 
 
+def children_cpu_s() -> float:
+    """CPU seconds (user + system) of this process's finished and waited-for subprocesses so far,
+    their own children included: the difference of two calls is what a subprocess run between
+    them cost."""
+    usage = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return usage.ru_utime + usage.ru_stime
+
+
 def reference_job_cpu(repeats: int = 2) -> list[float]:
     """CPU seconds (user + system) of ``repeats`` runs of :data:`REFERENCE_JOB`."""
     out = []
     for _ in range(repeats):
-        before = resource.getrusage(resource.RUSAGE_CHILDREN)
+        before = children_cpu_s()
         subprocess.run([sys.executable, "-c", REFERENCE_JOB], check=True, env={**os.environ, **ONE_THREAD})
-        after = resource.getrusage(resource.RUSAGE_CHILDREN)
-        out.append((after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime))
+        out.append(children_cpu_s() - before)
     return out

@@ -12,7 +12,6 @@ from __future__ import annotations
 
 import os
 import re
-import resource
 import signal
 import time
 from pathlib import Path
@@ -20,7 +19,7 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 import pytest
-from pipeline_runs import CI_CONFIG, ROOT, run_snakemake
+from pipeline_runs import CI_CONFIG, ROOT, children_cpu_s, run_snakemake
 
 pytest.importorskip("snakemake_executor_plugin_cluster_generic")
 
@@ -58,7 +57,7 @@ def cluster_run(tmp_path_factory):
     work = tmp_path_factory.mktemp("cluster_run")
     cluster = work / "cluster"
     env = {**os.environ, "MOTIONVAR_CLUSTER_DIR": str(cluster)}
-    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    before = children_cpu_s()
     start = time.perf_counter()
     try:
         result = run_snakemake(
@@ -91,8 +90,7 @@ def cluster_run(tmp_path_factory):
     finally:
         _stop_leftovers(cluster)
     wall = time.perf_counter() - start
-    after = resource.getrusage(resource.RUSAGE_CHILDREN)
-    main_cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+    main_cpu = children_cpu_s() - before
     jobs_cpu = sum(_job_cpu(p) for p in cluster.glob("*.times"))
     print(
         f"cluster-generic run: wall {wall:.1f} s, CPU {main_cpu + jobs_cpu:.1f} s "
